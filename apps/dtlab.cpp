@@ -1,0 +1,32 @@
+// The `dtlab` command: one binary, one subcommand per capability as it lands.
+#include <exception>
+#include <iostream>
+
+#include "apps/subcommands.hpp"
+#include "dtlab/build_info.hpp"
+#include "kernel/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"dtlab: robust Delaunay triangulation and meshing on exact predicates"};
+  app.require_subcommand(0, 1);
+  app.set_version_flag("--version",
+                       std::string("dtlab ") + dtlab::build_info::kVersion + " (commit " +
+                           dtlab::build_info::kCommit + ", " + dtlab::build_info::kCompiler + ", " +
+                           dtlab::build_info::kBuildType + ")");
+  dtlab::cli::add_selfcheck(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const dtlab::Error& e) {
+    std::cerr << "dtlab: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "dtlab: " << e.what() << "\n";
+    return 2;
+  }
+  if (app.get_subcommands().empty()) {
+    std::cout << app.help();
+  }
+  return 0;
+}

@@ -1,0 +1,108 @@
+// The filtered exact predicates of dtlab (book §1): orient2d, incircle, orient3d, insphere.
+//
+// Each predicate runs three stages, and each stage is callable on its own (namespace stage):
+//   1. semi-static filter (semistatic.hpp): doubles, error bound from the operands' maxima;
+//   2. dynamic filter (adaptive.cpp): the determinant of the rounded differences evaluated
+//      exactly in floating-point expansions, certified against the differences' rounding;
+//   3. exact fallback (exact.cpp): GMP integers, doubles converted exactly.
+// Stage counts go to this thread's PredicateStats (stats.hpp).
+//
+// Sign conventions:
+//   orient2d(a,b,c)      > 0  iff a, b, c turn counter-clockwise;
+//   incircle(a,b,c,d)    > 0  iff d is inside circle(a,b,c), for a, b, c counter-clockwise;
+//   orient3d(a,b,c,d)    > 0  iff det(b-a, c-a, d-a) > 0 (Medit's positive tetrahedron);
+//   insphere(a,b,c,d,e)  > 0  iff e is inside sphere(a,b,c,d), for orient3d(a,b,c,d) > 0.
+// The *_perturbed variants (perturbation.hpp) never return zero for distinct points in general
+// position of the lower dimension (see there).
+//
+// Precondition: every coordinate is finite and in the supported range (coordinate_range.hpp);
+// the entry points of dtlab check it once per input, the predicates do not.
+#pragma once
+
+#include "kernel/predicates/semistatic.hpp"
+#include "kernel/sign.hpp"
+#include "kernel/stats.hpp"
+#include "kernel/vec.hpp"
+
+namespace dtlab {
+
+namespace stage {
+// Stage 2: decides unless the rounding of the coordinate differences could change the sign.
+FilteredSign orient2d_adaptive(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
+FilteredSign incircle_adaptive(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
+FilteredSign orient3d_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
+FilteredSign insphere_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                               const Vec3& e) noexcept;
+
+// Stage 3: always decides, with GMP.
+Sign orient2d_exact(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
+Sign incircle_exact(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
+Sign orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
+Sign insphere_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept;
+}  // namespace stage
+
+namespace detail {
+// Stages 2 and 3 with counting, out of line: the filtered predicates' slow path.
+Sign orient2d_slow(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
+Sign incircle_slow(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
+Sign orient3d_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
+Sign insphere_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept;
+
+inline void count_semistatic(Predicate p) noexcept { ++tls_predicate_stats[p].semistatic; }
+}  // namespace detail
+
+inline Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
+  if (const FilteredSign s = stage::orient2d_semistatic(a, b, c)) {
+    detail::count_semistatic(Predicate::Orient2d);
+    return *s;
+  }
+  return detail::orient2d_slow(a, b, c);
+}
+
+inline Sign incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
+  if (const FilteredSign s = stage::incircle_semistatic(a, b, c, d)) {
+    detail::count_semistatic(Predicate::Incircle);
+    return *s;
+  }
+  return detail::incircle_slow(a, b, c, d);
+}
+
+inline Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  if (const FilteredSign s = stage::orient3d_semistatic(a, b, c, d)) {
+    detail::count_semistatic(Predicate::Orient3d);
+    return *s;
+  }
+  return detail::orient3d_slow(a, b, c, d);
+}
+
+inline Sign insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept {
+  if (const FilteredSign s = stage::insphere_semistatic(a, b, c, d, e)) {
+    detail::count_semistatic(Predicate::Insphere);
+    return *s;
+  }
+  return detail::insphere_slow(a, b, c, d, e);
+}
+
+// The same predicates without the counters, for measuring what counting costs.
+namespace uncounted {
+inline Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
+  if (const FilteredSign s = stage::orient2d_semistatic(a, b, c)) return *s;
+  return detail::orient2d_slow(a, b, c);
+}
+inline Sign incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
+  if (const FilteredSign s = stage::incircle_semistatic(a, b, c, d)) return *s;
+  return detail::incircle_slow(a, b, c, d);
+}
+inline Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  if (const FilteredSign s = stage::orient3d_semistatic(a, b, c, d)) return *s;
+  return detail::orient3d_slow(a, b, c, d);
+}
+inline Sign insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept {
+  if (const FilteredSign s = stage::insphere_semistatic(a, b, c, d, e)) return *s;
+  return detail::insphere_slow(a, b, c, d, e);
+}
+}  // namespace uncounted
+
+}  // namespace dtlab
+
+#include "kernel/predicates/perturbation.hpp"

@@ -1,0 +1,49 @@
+// Symbolic perturbation of the in-circle and in-sphere tests: one tie-break for every algorithm.
+//
+// Scheme (a lexicographic lifting perturbation, in the spirit of Devillers and Teillaud,
+// "Perturbations for Delaunay and weighted Delaunay 3D triangulations", CGTA 2011): each point p
+// is lifted to |p|^2 + eps^r(p), where r(p) is the rank of p in decreasing lexicographic order
+// of its coordinates (x, then y, then z) among the points of the call, and eps is infinitely
+// small. The lifted determinant becomes det + sum_p eps^r(p) * C_p, where C_p is the cofactor
+// of p's lifted entry, an orientation of the other points:
+//   incircle(a,b,c,d):   C_a = +orient2d(b,c,d)   C_b = -orient2d(a,c,d)
+//                        C_c = +orient2d(a,b,d)   C_d = -orient2d(a,b,c)
+//   insphere(a,b,c,d,e): C_a = -orient3d(b,c,d,e) C_b = +orient3d(a,c,d,e)
+//                        C_c = -orient3d(a,b,d,e) C_d = +orient3d(a,b,c,e)
+//                        C_e = -orient3d(a,b,c,d)
+// When det is zero, the sign is that of the first non-zero cofactor, taking the points from the
+// lexicographically largest down. Because the rank depends only on coordinates, the result is
+// a pure function of the points, the same for every algorithm and every input order; it is the
+// sign of a genuine perturbation, so it induces one triangulation (the lower hull of the
+// perturbed lifting) even on cocircular or cospherical sets.
+//
+// Zero is returned only when every cofactor vanishes: all points collinear (coplanar in 3D),
+// which no Delaunay algorithm asks about a non-degenerate simplex (C_d or C_e is then non-zero).
+#pragma once
+
+#include "kernel/sign.hpp"
+#include "kernel/vec.hpp"
+
+namespace dtlab {
+
+namespace detail {
+Sign incircle_perturbation(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
+Sign insphere_perturbation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                           const Vec3& e) noexcept;
+}  // namespace detail
+
+Sign incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
+Sign insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept;
+
+inline Sign incircle_perturbed(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
+  const Sign s = incircle(a, b, c, d);
+  return s != Sign::Zero ? s : detail::incircle_perturbation(a, b, c, d);
+}
+
+inline Sign insphere_perturbed(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                               const Vec3& e) noexcept {
+  const Sign s = insphere(a, b, c, d, e);
+  return s != Sign::Zero ? s : detail::insphere_perturbation(a, b, c, d, e);
+}
+
+}  // namespace dtlab

@@ -1,0 +1,104 @@
+// Stage 1 of every predicate: the semi-static filter.
+//
+// The determinant is evaluated in doubles on the computed coordinate differences; its error is
+// bounded by C * prod(m), where m are the maxima of those differences' magnitudes (one per
+// coordinate column for the orientations, one for all in the in-circle/in-sphere tests) and C
+// comes from a forward error analysis of exactly these evaluation trees:
+// derive_bounds.py prints the constants below. Valid on the supported coordinate range
+// (coordinate_range.hpp), where nothing overflows or underflows.
+//
+// Each function returns the certified sign, or std::nullopt when |det| <= bound.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernel/sign.hpp"
+#include "kernel/vec.hpp"
+
+namespace dtlab::stage {
+
+namespace semistatic_bound {
+inline constexpr double kOrient2d = 8.881784197001256e-16;
+inline constexpr double kOrient3d = 5.107025913275724e-15;
+inline constexpr double kIncircle = 1.421085471520202e-14;
+inline constexpr double kInsphere = 1.2456702336294277e-13;
+}  // namespace semistatic_bound
+
+inline FilteredSign certify(double det, double bound) noexcept {
+  if (det > bound) return Sign::Positive;
+  if (-det > bound) return Sign::Negative;
+  return std::nullopt;
+}
+
+// orient2d(a, b, c) = det(b - a, c - a): positive iff a, b, c turn counter-clockwise.
+inline FilteredSign orient2d_semistatic(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
+  const double d1x = b.x - a.x, d1y = b.y - a.y;
+  const double d2x = c.x - a.x, d2y = c.y - a.y;
+  const double det = d1x * d2y - d1y * d2x;
+  const double mx = std::max(std::fabs(d1x), std::fabs(d2x));
+  const double my = std::max(std::fabs(d1y), std::fabs(d2y));
+  return certify(det, semistatic_bound::kOrient2d * mx * my);
+}
+
+// orient3d(a, b, c, d) = det(b - a, c - a, d - a): positive iff d lies on the side of plane
+// abc from which a, b, c turn counter-clockwise (Medit's positive tetrahedron).
+inline FilteredSign orient3d_semistatic(const Vec3& a, const Vec3& b, const Vec3& c,
+                                        const Vec3& d) noexcept {
+  const double r0x = b.x - a.x, r0y = b.y - a.y, r0z = b.z - a.z;
+  const double r1x = c.x - a.x, r1y = c.y - a.y, r1z = c.z - a.z;
+  const double r2x = d.x - a.x, r2y = d.y - a.y, r2z = d.z - a.z;
+  const double det = (r0x * (r1y * r2z - r1z * r2y) - r1x * (r0y * r2z - r0z * r2y)) +
+                     r2x * (r0y * r1z - r0z * r1y);
+  const double mx = std::max({std::fabs(r0x), std::fabs(r1x), std::fabs(r2x)});
+  const double my = std::max({std::fabs(r0y), std::fabs(r1y), std::fabs(r2y)});
+  const double mz = std::max({std::fabs(r0z), std::fabs(r1z), std::fabs(r2z)});
+  return certify(det, semistatic_bound::kOrient3d * mx * my * mz);
+}
+
+// incircle(a, b, c, d): positive iff d lies inside the circle through a, b, c when these turn
+// counter-clockwise (the sign flips with their orientation). Rows (p - d, |p - d|^2).
+inline FilteredSign incircle_semistatic(const Vec2& a, const Vec2& b, const Vec2& c,
+                                        const Vec2& d) noexcept {
+  const double ax = a.x - d.x, ay = a.y - d.y;
+  const double bx = b.x - d.x, by = b.y - d.y;
+  const double cx = c.x - d.x, cy = c.y - d.y;
+  const double la = ax * ax + ay * ay;
+  const double lb = bx * bx + by * by;
+  const double lc = cx * cx + cy * cy;
+  const double det =
+      (la * (bx * cy - by * cx) - lb * (ax * cy - ay * cx)) + lc * (ax * by - ay * bx);
+  double m = std::max({std::fabs(ax), std::fabs(ay), std::fabs(bx), std::fabs(by), std::fabs(cx),
+                       std::fabs(cy)});
+  const double m2 = m * m;
+  return certify(det, semistatic_bound::kIncircle * m2 * m2);
+}
+
+// insphere(a, b, c, d, e): positive iff e lies inside the sphere through a, b, c, d when
+// orient3d(a, b, c, d) > 0 (the sign flips with their orientation).
+inline FilteredSign insphere_semistatic(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                                        const Vec3& e) noexcept {
+  const double ax = a.x - e.x, ay = a.y - e.y, az = a.z - e.z;
+  const double bx = b.x - e.x, by = b.y - e.y, bz = b.z - e.z;
+  const double cx = c.x - e.x, cy = c.y - e.y, cz = c.z - e.z;
+  const double dx = d.x - e.x, dy = d.y - e.y, dz = d.z - e.z;
+  // 2x2 minors of the (y, z) columns, shared by the four 3x3 minors.
+  const double ab = ay * bz - az * by, ac = ay * cz - az * cy, ad = ay * dz - az * dy;
+  const double bc = by * cz - bz * cy, bd = by * dz - bz * dy, cd = cy * dz - cz * dy;
+  const double mbcd = (bx * cd - cx * bd) + dx * bc;
+  const double macd = (ax * cd - cx * ad) + dx * ac;
+  const double mabd = (ax * bd - bx * ad) + dx * ab;
+  const double mabc = (ax * bc - bx * ac) + cx * ab;
+  const double la = (ax * ax + ay * ay) + az * az;
+  const double lb = (bx * bx + by * by) + bz * bz;
+  const double lc = (cx * cx + cy * cy) + cz * cz;
+  const double ld = (dx * dx + dy * dy) + dz * dz;
+  const double det = ((la * mbcd - lb * macd) + lc * mabd) - ld * mabc;
+  const double m = std::max({std::fabs(ax), std::fabs(ay), std::fabs(az), std::fabs(bx),
+                             std::fabs(by), std::fabs(bz), std::fabs(cx), std::fabs(cy),
+                             std::fabs(cz), std::fabs(dx), std::fabs(dy), std::fabs(dz)});
+  const double m2 = m * m;
+  return certify(det, semistatic_bound::kInsphere * m2 * m2 * m);
+}
+
+}  // namespace dtlab::stage
