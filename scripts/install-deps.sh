@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs dtlab's build and test dependencies from Debian's packages (run as root on a fresh
+# Debian 12 machine). Does nothing when every package is already there.
+set -euo pipefail
+packages=(
+  build-essential cmake git ccache python3 python3-matplotlib
+  clang-14 libclang-rt-14-dev          # libFuzzer targets and their sanitizer runtimes
+  libgmp-dev libmpfr-dev               # exact fallback and correctly rounded constructions
+  libcgal-dev                          # reference implementation, verify/ and bench/ only
+  libbenchmark-dev libgtest-dev libgmock-dev librapidcheck-dev
+  libtbb-dev libeigen3-dev libcli11-dev
+  tetgen                               # peer in bench/ (Debian binary)
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# The whole test suite, from a fresh clone: installs the dependencies, builds, then runs
+#   1. the sanitizer suite (AddressSanitizer + UndefinedBehaviorSanitizer build of every test),
+#   2. every libFuzzer target for a bounded time (DTLAB_FUZZ_SECONDS each, default 60),
+#   3. the Release suite (CGAL comparisons, consumer package, CLI), whose ctest summary closes
+#      the output.
+# Any failure stops the run with a non-zero status. .ci/run calls exactly this.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+
+jobs=$(nproc)
+fuzz_seconds=${DTLAB_FUZZ_SECONDS:-60}
+export CCACHE_DIR=${CCACHE_DIR:-$HOME/.cache/dtlab-ccache}
+step() { printf '\n==== %s (%s)\n' "$1" "$(date +%T)"; }
+
+step "Release build"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$jobs"
+
+step "sanitizer build (ASan + UBSan)"
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDTLAB_SANITIZE=ON \
+      -DDTLAB_WITH_CGAL=OFF -DDTLAB_BUILD_BENCH=OFF >/dev/null
+cmake --build build-asan -j"$jobs"
+step "sanitizer suite"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --test-dir build-asan -j"$jobs" --output-on-failure -E '^consumer_package$'
+
+step "fuzz build (clang-14, libFuzzer)"
+cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DDTLAB_BUILD_FUZZ=ON -DDTLAB_BUILD_TESTS=OFF -DDTLAB_BUILD_BENCH=OFF -DDTLAB_WITH_CGAL=OFF >/dev/null
+cmake --build build-fuzz -j"$jobs"
+step "fuzz runs (${fuzz_seconds} s each)"
+for target in build-fuzz/fuzz/*_fuzz; do
+  [ -x "$target" ] || continue
+  name=$(basename "$target")
+  corpus="fuzz/corpus/${name%_fuzz}"
+  work=$(mktemp -d)
+  [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
+  echo "-- $name"
+  rc=0
+  "$target" -max_total_time="$fuzz_seconds" -print_final_stats=1 "$work" >"$work.log" 2>&1 || rc=$?
+  grep -E "^(stat::number_of_executed_units|stat::average_exec_per_sec|Done)" "$work.log" || true
+  if [ "$rc" -ne 0 ]; then tail -n 60 "$work.log"; echo "fuzz target $name failed"; exit 1; fi
+  rm -rf "$work" "$work.log"
+done
+
+step "Release suite"
+ctest --test-dir build -j"$jobs" --output-on-failure
