@@ -1,0 +1,48 @@
+// The filtered predicates' slow path (predicates.hpp): stage 2, then stage 3 when stage 2 cannot
+// certify, each counted in this thread's PredicateStats. Out of line so that the inline stage 1
+// stays small at every call site.
+#include "kernel/predicates.hpp"
+
+namespace dtlab::detail {
+
+Sign orient2d_slow(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
+  StageCounts& counts = tls_predicate_stats[Predicate::Orient2d];
+  if (const FilteredSign s = stage::orient2d_adaptive(a, b, c)) {
+    ++counts.adaptive;
+    return *s;
+  }
+  ++counts.exact;
+  return stage::orient2d_exact(a, b, c);
+}
+
+Sign incircle_slow(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
+  StageCounts& counts = tls_predicate_stats[Predicate::Incircle];
+  if (const FilteredSign s = stage::incircle_adaptive(a, b, c, d)) {
+    ++counts.adaptive;
+    return *s;
+  }
+  ++counts.exact;
+  return stage::incircle_exact(a, b, c, d);
+}
+
+Sign orient3d_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  StageCounts& counts = tls_predicate_stats[Predicate::Orient3d];
+  if (const FilteredSign s = stage::orient3d_adaptive(a, b, c, d)) {
+    ++counts.adaptive;
+    return *s;
+  }
+  ++counts.exact;
+  return stage::orient3d_exact(a, b, c, d);
+}
+
+Sign insphere_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept {
+  StageCounts& counts = tls_predicate_stats[Predicate::Insphere];
+  if (const FilteredSign s = stage::insphere_adaptive(a, b, c, d, e)) {
+    ++counts.adaptive;
+    return *s;
+  }
+  ++counts.exact;
+  return stage::insphere_exact(a, b, c, d, e);
+}
+
+}  // namespace dtlab::detail

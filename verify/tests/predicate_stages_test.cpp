@@ -1,0 +1,558 @@
+// Each stage of the predicates on its own (semi-static, expansion, GMP), the counted slow path,
+// and the expansion arithmetic underneath, checked against a reference that shares no code with
+// them: the determinant of the lifted matrix by Gaussian elimination over GMP rationals.
+#include <gmp.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "kernel/predicates.hpp"
+#include "kernel/predicates/expansion.hpp"
+
+namespace dtlab {
+namespace {
+
+// ---------------------------------------------------------------- rational reference
+
+class Rat {
+ public:
+  Rat() { mpq_init(v_); }
+  explicit Rat(double d) {
+    mpq_init(v_);
+    mpq_set_d(v_, d);
+  }
+  Rat(const Rat& o) {
+    mpq_init(v_);
+    mpq_set(v_, o.v_);
+  }
+  Rat& operator=(const Rat& o) {
+    mpq_set(v_, o.v_);
+    return *this;
+  }
+  ~Rat() { mpq_clear(v_); }
+  friend Rat operator+(const Rat& a, const Rat& b) {
+    Rat r;
+    mpq_add(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Rat operator-(const Rat& a, const Rat& b) {
+    Rat r;
+    mpq_sub(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Rat operator*(const Rat& a, const Rat& b) {
+    Rat r;
+    mpq_mul(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Rat operator/(const Rat& a, const Rat& b) {
+    Rat r;
+    mpq_div(r.v_, a.v_, b.v_);
+    return r;
+  }
+  int sign() const { return mpq_sgn(v_); }
+
+ private:
+  mpq_t v_;
+};
+
+// Sign of det(m), m square, by Gaussian elimination with row swaps.
+Sign determinant_sign(std::vector<std::vector<Rat>> m) {
+  const std::size_t n = m.size();
+  int sign = 1;
+  for (std::size_t col = 0; col < n; ++col) {
+    std::size_t pivot = col;
+    while (pivot < n && m[pivot][col].sign() == 0) ++pivot;
+    if (pivot == n) return Sign::Zero;
+    if (pivot != col) {
+      std::swap(m[pivot], m[col]);
+      sign = -sign;
+    }
+    if (m[col][col].sign() < 0) sign = -sign;
+    for (std::size_t r = col + 1; r < n; ++r) {
+      if (m[r][col].sign() == 0) continue;
+      const Rat f = m[r][col] / m[col][col];
+      for (std::size_t k = col; k < n; ++k) m[r][k] = m[r][k] - f * m[col][k];
+    }
+  }
+  return static_cast<Sign>(sign);
+}
+
+// Rows (p, |p|^2, 1) for the in-tests, (p, 1) for the orientations: the textbook matrices.
+Sign ref_orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
+  std::vector<std::vector<Rat>> m;
+  for (const Vec2* p : {&a, &b, &c}) m.push_back({Rat(p->x), Rat(p->y), Rat(1.0)});
+  return determinant_sign(m);
+}
+
+Sign ref_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  // det(b - a, c - a, d - a) = -det[(p, 1)] over the rows a, b, c, d.
+  std::vector<std::vector<Rat>> m;
+  for (const Vec3* p : {&a, &b, &c, &d}) m.push_back({Rat(p->x), Rat(p->y), Rat(p->z), Rat(1.0)});
+  return -determinant_sign(m);
+}
+
+Rat lift(const Vec2& p) { return Rat(p.x) * Rat(p.x) + Rat(p.y) * Rat(p.y); }
+Rat lift(const Vec3& p) { return Rat(p.x) * Rat(p.x) + Rat(p.y) * Rat(p.y) + Rat(p.z) * Rat(p.z); }
+
+Sign ref_incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  std::vector<std::vector<Rat>> m;
+  for (const Vec2* p : {&a, &b, &c, &d}) m.push_back({Rat(p->x), Rat(p->y), lift(*p), Rat(1.0)});
+  return determinant_sign(m);
+}
+
+Sign ref_insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) {
+  std::vector<std::vector<Rat>> m;
+  for (const Vec3* p : {&a, &b, &c, &d, &e}) {
+    m.push_back({Rat(p->x), Rat(p->y), Rat(p->z), lift(*p), Rat(1.0)});
+  }
+  return -determinant_sign(m);
+}
+
+// The reference's conventions are those of predicates.hpp.
+TEST(Reference, SignConventions) {
+  EXPECT_EQ(ref_orient2d({0, 0}, {1, 0}, {0, 1}), Sign::Positive);
+  EXPECT_EQ(ref_incircle({0, 0}, {1, 0}, {0, 1}, {0.25, 0.25}), Sign::Positive);
+  EXPECT_EQ(ref_incircle({0, 0}, {1, 0}, {0, 1}, {2, 2}), Sign::Negative);
+  EXPECT_EQ(ref_orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}), Sign::Positive);
+  EXPECT_EQ(ref_insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.25, 0.25, 0.25}), Sign::Positive);
+  EXPECT_EQ(ref_insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 2, 2}), Sign::Negative);
+}
+
+// ---------------------------------------------------------------- all stages on one input
+
+// What each stage said about one input; nullopt where a stage did not decide.
+struct Verdicts {
+  FilteredSign semistatic, adaptive;
+  Sign exact, filtered, reference;
+};
+
+Verdicts judge(const Vec2& a, const Vec2& b, const Vec2& c) {
+  return {stage::orient2d_semistatic(a, b, c), stage::orient2d_adaptive(a, b, c),
+          stage::orient2d_exact(a, b, c), orient2d(a, b, c), ref_orient2d(a, b, c)};
+}
+Verdicts judge(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  return {stage::incircle_semistatic(a, b, c, d), stage::incircle_adaptive(a, b, c, d),
+          stage::incircle_exact(a, b, c, d), incircle(a, b, c, d), ref_incircle(a, b, c, d)};
+}
+Verdicts judge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return {stage::orient3d_semistatic(a, b, c, d), stage::orient3d_adaptive(a, b, c, d),
+          stage::orient3d_exact(a, b, c, d), orient3d(a, b, c, d), ref_orient3d(a, b, c, d)};
+}
+Verdicts judge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) {
+  return {stage::insphere_semistatic(a, b, c, d, e), stage::insphere_adaptive(a, b, c, d, e),
+          stage::insphere_exact(a, b, c, d, e), insphere(a, b, c, d, e), ref_insphere(a, b, c, d, e)};
+}
+
+// How often each stage was the first to decide, over a family of inputs.
+struct Tally {
+  int semistatic = 0, adaptive = 0, exact = 0;
+  int zeros = 0;
+
+  void add(const Verdicts& v, const std::string& what) {
+    EXPECT_EQ(v.exact, v.reference) << what;
+    EXPECT_EQ(v.filtered, v.reference) << what;
+    if (v.semistatic) {
+      EXPECT_EQ(*v.semistatic, v.reference) << what;
+    }
+    if (v.adaptive) {
+      EXPECT_EQ(*v.adaptive, v.reference) << what;
+    }
+    if (v.semistatic) {
+      ++semistatic;
+    } else if (v.adaptive) {
+      ++adaptive;
+    } else {
+      ++exact;
+    }
+    if (v.reference == Sign::Zero) ++zeros;
+  }
+};
+
+std::string describe(std::initializer_list<Vec2> points) {
+  std::string s;
+  char buf[64];
+  for (const Vec2& p : points) {
+    std::snprintf(buf, sizeof buf, "(%a, %a) ", p.x, p.y);
+    s += buf;
+  }
+  return s;
+}
+std::string describe(std::initializer_list<Vec3> points) {
+  std::string s;
+  char buf[96];
+  for (const Vec3& p : points) {
+    std::snprintf(buf, sizeof buf, "(%a, %a, %a) ", p.x, p.y, p.z);
+    s += buf;
+  }
+  return s;
+}
+
+// ---------------------------------------------------------------- hand-made cases
+
+// Exact zeros on grid points: stage 1 cannot tell 0 from a tiny value, stage 2 can, since
+// the differences are exact.
+TEST(Stage2, DecidesExactZeroOnGridPoints) {
+  const Vec2 a{0, 0}, b{1, 1}, c{2, 2};
+  EXPECT_FALSE(stage::orient2d_semistatic(a, b, c));
+  EXPECT_EQ(stage::orient2d_adaptive(a, b, c), Sign::Zero);
+
+  const Vec2 p{0, 0}, q{1, 0}, r{1, 1}, s{0, 1};
+  EXPECT_FALSE(stage::incircle_semistatic(p, q, r, s));
+  EXPECT_EQ(stage::incircle_adaptive(p, q, r, s), Sign::Zero);
+
+  const Vec3 o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0}, xy{1, 1, 0}, z{0, 0, 1}, xyz{1, 1, 1};
+  EXPECT_FALSE(stage::orient3d_semistatic(o, x, y, xy));
+  EXPECT_EQ(stage::orient3d_adaptive(o, x, y, xy), Sign::Zero);
+  EXPECT_FALSE(stage::insphere_semistatic(o, x, y, z, xyz));
+  EXPECT_EQ(stage::insphere_adaptive(o, x, y, z, xyz), Sign::Zero);
+}
+
+// Nonzero but tiny determinants with exact differences: stage 2 returns the exact sign.
+TEST(Stage2, DecidesNearlyDegenerateWithExactDifferences) {
+  const double big = 0x1p30;
+  // det = 2^30 * 2^30 - (2^30 + 1)(2^30 - 1) = 1, against a stage-1 bound near 2^10.
+  const Vec2 a{0, 0}, b{big, big + 1}, c{big - 1, big};
+  EXPECT_FALSE(stage::orient2d_semistatic(a, b, c));
+  EXPECT_EQ(stage::orient2d_adaptive(a, b, c), Sign::Positive);
+  EXPECT_EQ(stage::orient2d_adaptive(a, c, b), Sign::Negative);
+
+  // A point 2^-40 off the circle of radius 2^20 through (±2^20, 0), (0, 2^20).
+  const double r = 0x1p20;
+  const Vec2 p{r, 0}, q{0, r}, s{-r, 0};
+  const Vec2 in{0, -r + 0x1p-30}, out{0, -r - 0x1p-30};
+  EXPECT_FALSE(stage::incircle_semistatic(p, q, s, in));
+  EXPECT_EQ(stage::incircle_adaptive(p, q, s, in), Sign::Positive);
+  EXPECT_EQ(stage::incircle_adaptive(p, q, s, out), Sign::Negative);
+
+  // det = big^2 * 2^-20 = 2^40 against a stage-1 bound near 2^42.
+  const Vec3 o{0, 0, 0}, x{big, 0, 0}, y{0, big, big}, lifted{big, big, big + 0x1p-20};
+  EXPECT_FALSE(stage::orient3d_semistatic(o, x, y, lifted));
+  EXPECT_EQ(stage::orient3d_adaptive(o, x, y, lifted), Sign::Positive);
+  EXPECT_EQ(stage::orient3d_adaptive(o, y, x, lifted), Sign::Negative);
+
+  const Vec3 e{r, 0, 0}, f{0, r, 0}, g{0, 0, r}, h{-r, 0, 0};
+  const Vec3 inside{0, 0, -r + 0x1p-30}, outside{0, 0, -r - 0x1p-30};
+  ASSERT_EQ(orient3d(e, f, g, h), Sign::Negative);  // so inside gives a negative insphere
+  EXPECT_FALSE(stage::insphere_semistatic(e, f, g, h, inside));
+  EXPECT_EQ(stage::insphere_adaptive(e, f, g, h, inside), Sign::Negative);
+  EXPECT_EQ(stage::insphere_adaptive(e, f, g, h, outside), Sign::Positive);
+}
+
+// Rounded differences, but far enough from zero for the rounding bound: stage 2 certifies
+// where stage 1's cruder bound (column maxima from different rows) cannot.
+TEST(Stage2, CertifiesDespiteRoundedDifferences) {
+  // d1 = (1 - 2^-80 -> 1, 2^-10), d2 = (2^-10 - 2^-80 -> 2^-10, 2^-20 + 2^-65): E = 2^-65,
+  // rounding bound ~2^-71, stage-1 bound ~2^-60.
+  const Vec2 a{0x1p-80, 0}, b{1, 0x1p-10}, c{0x1p-10, 0x1p-20 + 0x1p-65};
+  const Verdicts v = judge(a, b, c);
+  EXPECT_FALSE(v.semistatic);
+  EXPECT_EQ(v.adaptive, Sign::Positive);
+  EXPECT_EQ(v.reference, Sign::Positive);
+}
+
+// Differences that round and a determinant of the rounded differences that is exactly zero:
+// only GMP can tell.
+TEST(Stage2, DefersToExactWhenRoundingMatters) {
+  const double r = 0x1p50, delta = 0x1p-10;  // r - delta rounds to r
+  {  // collinear along y = x, mixed magnitudes: D = 0 = E with rounded differences
+    const Vec2 a{3 * 0x1p-60, 3 * 0x1p-60}, b{1e15, 1e15}, c{2e15, 2e15};
+    const Verdicts v = judge(a, b, c);
+    EXPECT_FALSE(v.semistatic);
+    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.exact, Sign::Zero);
+    EXPECT_EQ(v.reference, Sign::Zero);
+  }
+  {  // rounded differences (2r,0), (r,r), (r,-r) are cocircular with d; d itself is inside
+    const Vec2 a{2 * r, 0}, b{r, r}, c{r, -r}, d{delta, 0};
+    const Verdicts v = judge(a, b, c, d);
+    EXPECT_FALSE(v.semistatic);
+    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.exact, Sign::Positive);
+    EXPECT_EQ(v.reference, Sign::Positive);
+  }
+  {  // rounded differences lie in the plane x = y; the exact ones give det = delta r^2
+    const Vec3 a{delta, 0, 0}, b{r, r, 0}, c{r, r, r}, d{2 * r, 2 * r, r};
+    const Verdicts v = judge(a, b, c, d);
+    EXPECT_FALSE(v.semistatic);
+    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.exact, Sign::Positive);
+    EXPECT_EQ(v.reference, Sign::Positive);
+  }
+  {  // rounded differences on the sphere of center (r,0,0) through the origin; e is inside
+    const Vec3 a{2 * r, 0, 0}, b{r, r, 0}, c{r, -r, 0}, d{r, 0, r}, e{delta, 0, 0};
+    const Sign inside = orient3d(a, b, c, d);  // insphere > 0 inside a positive tetrahedron
+    ASSERT_NE(inside, Sign::Zero);
+    const Verdicts v = judge(a, b, c, d, e);
+    EXPECT_FALSE(v.semistatic);
+    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.exact, inside);
+    EXPECT_EQ(v.reference, inside);
+  }
+}
+
+// ---------------------------------------------------------------- counters
+
+TEST(SlowPath, CountsTheStageThatDecided) {
+  auto delta_of = [](const std::function<void()>& call) {
+    const PredicateStats before = predicate_stats();
+    call();
+    return predicate_stats() - before;
+  };
+  const double r = 0x1p50, delta = 0x1p-10;
+  struct Case {
+    const char* name;
+    Predicate predicate;
+    std::function<Sign()> call;
+    Sign expected;
+    int stage;  // 0 semistatic, 1 adaptive, 2 exact
+  };
+  const std::vector<Case> cases = {
+      {"orient2d easy", Predicate::Orient2d, [] { return orient2d({0, 0}, {1, 0}, {0, 1}); }, Sign::Positive, 0},
+      {"orient2d grid", Predicate::Orient2d, [] { return orient2d({0, 0}, {1, 1}, {2, 2}); }, Sign::Zero, 1},
+      {"orient2d rounded", Predicate::Orient2d,
+       [] { return orient2d({3 * 0x1p-60, 3 * 0x1p-60}, {1e15, 1e15}, {2e15, 2e15}); }, Sign::Zero, 2},
+      {"incircle easy", Predicate::Incircle, [] { return incircle({0, 0}, {1, 0}, {0, 1}, {5, 5}); }, Sign::Negative, 0},
+      {"incircle grid", Predicate::Incircle, [] { return incircle({0, 0}, {1, 0}, {1, 1}, {0, 1}); }, Sign::Zero, 1},
+      {"incircle rounded", Predicate::Incircle,
+       [=] { return incircle({2 * r, 0}, {r, r}, {r, -r}, {delta, 0}); }, Sign::Positive, 2},
+      {"orient3d easy", Predicate::Orient3d,
+       [] { return orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}); }, Sign::Positive, 0},
+      {"orient3d grid", Predicate::Orient3d,
+       [] { return orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}); }, Sign::Zero, 1},
+      {"orient3d rounded", Predicate::Orient3d,
+       [=] { return orient3d({delta, 0, 0}, {r, r, 0}, {r, r, r}, {2 * r, 2 * r, r}); }, Sign::Positive, 2},
+      {"insphere easy", Predicate::Insphere,
+       [] { return insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {9, 9, 9}); }, Sign::Negative, 0},
+      {"insphere grid", Predicate::Insphere,
+       [] { return insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}); }, Sign::Zero, 1},
+  };
+  for (const Case& c : cases) {
+    Sign got = Sign::Zero;
+    const PredicateStats d = delta_of([&] { got = c.call(); });
+    EXPECT_EQ(got, c.expected) << c.name;
+    const StageCounts& s = d[c.predicate];
+    EXPECT_EQ(s.semistatic, c.stage == 0 ? 1u : 0u) << c.name;
+    EXPECT_EQ(s.adaptive, c.stage == 1 ? 1u : 0u) << c.name;
+    EXPECT_EQ(s.exact, c.stage == 2 ? 1u : 0u) << c.name;
+    EXPECT_EQ(d.total().calls(), 1u) << c.name << ": no other predicate counted";
+  }
+}
+
+// ---------------------------------------------------------------- random and near-degenerate
+
+class Inputs {
+ public:
+  explicit Inputs(std::uint64_t seed) : rng_(seed) {}
+
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  // A scale 2^k and an offset, so that differences are sometimes exact, sometimes rounded.
+  double scale() { return std::ldexp(1.0, kScales[integer(0, 6)]); }
+  double offset() { return kOffsets[integer(0, 4)]; }
+
+ private:
+  static constexpr int kScales[7] = {-120, -40, -1, 0, 10, 40, 120};
+  static constexpr double kOffsets[5] = {0.0, 0.0, 1.0, 1e15, -3.0e30};
+  std::mt19937_64 rng_;
+};
+
+// Points on a line, circle, plane or sphere computed in doubles (hence a few ulps off), at
+// many scales and offsets; plus small-integer grids (exact degeneracies) and mixed magnitudes.
+TEST(AllStages, AgreeWithExactSignOnNearDegenerate2d) {
+  Inputs in(20240611);
+  Tally orient, circle;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int family = trial % 4;
+    const double s = in.scale(), o = in.offset();
+    auto pt = [&](double x, double y) { return Vec2{o + s * x, o + s * y}; };
+    if (family == 0) {  // nearly collinear / cocircular
+      const Vec2 a = pt(in.uniform(-1, 1), in.uniform(-1, 1)), b = pt(in.uniform(-1, 1), in.uniform(-1, 1));
+      const double t = in.uniform(-2, 2);
+      const Vec2 c{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+      orient.add(judge(a, b, c), describe({a, b, c}));
+      Vec2 q[4];
+      const double cx = in.uniform(-1, 1), cy = in.uniform(-1, 1), r = in.uniform(0.1, 1);
+      for (Vec2& p : q) {
+        const double th = in.uniform(0, 6.283185307179586);
+        p = pt(cx + r * std::cos(th), cy + r * std::sin(th));
+      }
+      circle.add(judge(q[0], q[1], q[2], q[3]), describe({q[0], q[1], q[2], q[3]}));
+    } else if (family == 1) {  // integer grid: exact zeros
+      Vec2 q[4];
+      for (Vec2& p : q) p = pt(in.integer(-3, 3), in.integer(-3, 3));
+      orient.add(judge(q[0], q[1], q[2]), describe({q[0], q[1], q[2]}));
+      circle.add(judge(q[0], q[1], q[2], q[3]), describe({q[0], q[1], q[2], q[3]}));
+    } else if (family == 2) {  // mixed magnitudes: a tiny point with large ones nearly on a line
+      const Vec2 a{in.uniform(-1, 1) * 0x1p-30, in.uniform(-1, 1) * 0x1p-30};
+      const double m = in.integer(1, 5) / 3.0, big = 1e15 * in.integer(1, 4);
+      const Vec2 b{big, big * m}, c{2 * big, 2 * big * m};
+      orient.add(judge(a, b, c), describe({a, b, c}));
+      // rounded differences cocircular through the tiny point, as in the hand-made case
+      const double rr = std::ldexp(1.0, in.integer(40, 60));
+      const Vec2 p{2 * rr, 0}, q{rr, rr}, w{rr, -rr}, d{in.uniform(-1, 1) * 0x1p-12, 0};
+      circle.add(judge(p, q, w, d), describe({p, q, w, d}));
+    } else {  // uniform random points
+      Vec2 q[4];
+      for (Vec2& p : q) p = pt(in.uniform(-1, 1), in.uniform(-1, 1));
+      orient.add(judge(q[0], q[1], q[2]), describe({q[0], q[1], q[2]}));
+      circle.add(judge(q[0], q[1], q[2], q[3]), describe({q[0], q[1], q[2], q[3]}));
+    }
+  }
+  for (const Tally* t : {&orient, &circle}) {
+    EXPECT_GT(t->semistatic, 0);
+    EXPECT_GT(t->adaptive, 0);
+    EXPECT_GT(t->exact, 0);
+    EXPECT_GT(t->zeros, 0);
+  }
+}
+
+TEST(AllStages, AgreeWithExactSignOnNearDegenerate3d) {
+  Inputs in(977);
+  Tally orient, sphere;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const int family = trial % 4;
+    const double s = in.scale(), o = in.offset();
+    auto pt = [&](double x, double y, double z) { return Vec3{o + s * x, o + s * y, o + s * z}; };
+    auto random_point = [&] { return pt(in.uniform(-1, 1), in.uniform(-1, 1), in.uniform(-1, 1)); };
+    if (family == 0) {  // nearly coplanar / cospherical
+      const Vec3 a = random_point(), b = random_point(), c = random_point();
+      const double u = in.uniform(-2, 2), v = in.uniform(-2, 2);
+      const Vec3 d = a + u * (b - a) + v * (c - a);
+      orient.add(judge(a, b, c, d), describe({a, b, c, d}));
+      Vec3 q[5];
+      const double cx = in.uniform(-1, 1), cy = in.uniform(-1, 1), cz = in.uniform(-1, 1);
+      const double r = in.uniform(0.1, 1);
+      for (Vec3& p : q) {
+        const double th = in.uniform(0, 6.283185307179586), z = in.uniform(-1, 1);
+        const double rho = std::sqrt(1 - z * z);
+        p = pt(cx + r * rho * std::cos(th), cy + r * rho * std::sin(th), cz + r * z);
+      }
+      sphere.add(judge(q[0], q[1], q[2], q[3], q[4]), describe({q[0], q[1], q[2], q[3], q[4]}));
+    } else if (family == 1) {  // integer grid
+      Vec3 q[5];
+      for (Vec3& p : q) p = pt(in.integer(-2, 2), in.integer(-2, 2), in.integer(-2, 2));
+      orient.add(judge(q[0], q[1], q[2], q[3]), describe({q[0], q[1], q[2], q[3]}));
+      sphere.add(judge(q[0], q[1], q[2], q[3], q[4]), describe({q[0], q[1], q[2], q[3], q[4]}));
+    } else if (family == 2) {  // mixed magnitudes, rounded differences nearly degenerate
+      const double rr = std::ldexp(1.0, in.integer(40, 60)), delta = in.uniform(-1, 1) * 0x1p-12;
+      const Vec3 a{delta, 0, 0}, b{rr, rr, 0}, c{rr, rr, rr}, d{2 * rr, 2 * rr, rr};
+      orient.add(judge(a, b, c, d), describe({a, b, c, d}));
+      const Vec3 p{2 * rr, 0, 0}, q{rr, rr, 0}, w{rr, -rr, 0}, x{rr, 0, rr};
+      sphere.add(judge(p, q, w, x, a), describe({p, q, w, x, a}));
+    } else {
+      Vec3 q[5];
+      for (Vec3& p : q) p = random_point();
+      orient.add(judge(q[0], q[1], q[2], q[3]), describe({q[0], q[1], q[2], q[3]}));
+      sphere.add(judge(q[0], q[1], q[2], q[3], q[4]), describe({q[0], q[1], q[2], q[3], q[4]}));
+    }
+  }
+  for (const Tally* t : {&orient, &sphere}) {
+    EXPECT_GT(t->semistatic, 0);
+    EXPECT_GT(t->adaptive, 0);
+    EXPECT_GT(t->exact, 0);
+    EXPECT_GT(t->zeros, 0);
+  }
+}
+
+// ---------------------------------------------------------------- extreme magnitudes
+
+// The ends of the supported range: differences down to 2^-194 (products of five near 2^-970)
+// and up to 2^143 (products near 2^715). Every stage must still agree with the reference.
+TEST(AllStages, ExtremeMagnitudes) {
+  const double lo = 0x1p-142, step = 0x1p-194, hi = 0x1p138;
+  // Integer points k mapped to lo + k * step (exact: the ulp of lo is step) and to k * hi.
+  auto tiny = [&](int x, int y, int z) { return Vec3{lo + x * step, lo + y * step, lo + z * step}; };
+  auto huge = [&](int x, int y, int z) { return Vec3{x * hi, y * hi, z * hi}; };
+  for (auto map : {std::function<Vec3(int, int, int)>(tiny), std::function<Vec3(int, int, int)>(huge)}) {
+    // Octahedron around (2,2,2) of radius 1, and points inside / outside its sphere.
+    const Vec3 a = map(1, 2, 2), b = map(3, 2, 2), c = map(2, 1, 2), d = map(2, 2, 1);
+    const Vec3 on = map(2, 2, 3), inside = map(2, 2, 2), outside = map(3, 3, 3);
+    const Sign orientation = ref_orient3d(a, b, c, d);
+    ASSERT_NE(orientation, Sign::Zero);
+    Tally t;
+    t.add(judge(a, b, c, d, on), "on");
+    t.add(judge(a, b, c, d, inside), "inside");
+    t.add(judge(a, b, c, d, outside), "outside");
+    EXPECT_EQ(insphere(a, b, c, d, on), Sign::Zero);
+    EXPECT_EQ(insphere(a, b, c, d, inside), orientation);
+    EXPECT_EQ(insphere(a, b, c, d, outside), -orientation);
+    t.add(judge(a, b, c, d), "orient3d");
+    t.add(judge(map(0, 0, 0), map(1, 1, 1), map(3, 3, 3), map(1, 2, 3)), "collinear");
+    const Vec2 p{a.x, a.y}, q{b.x, b.y}, r{c.x, c.y}, s{map(2, 3, 0).x, map(2, 3, 0).y};
+    t.add(judge(p, q, r, s), "incircle on");
+    t.add(judge(p, q, r, Vec2{inside.x, inside.y}), "incircle inside");
+    t.add(judge(p, q, r), "orient2d");
+    EXPECT_EQ(incircle(p, q, r, s), Sign::Zero);
+  }
+  // Both ends in one call: the differences round, only the exact stage may decide.
+  const double top = 0x1p142;
+  Tally mixed;
+  mixed.add(judge(Vec2{lo, lo}, Vec2{top, top}, Vec2{-top, -top}), "mixed orient2d");
+  mixed.add(judge(Vec2{lo, 0}, Vec2{top, 0}, Vec2{0, top}, Vec2{-top, 0}), "mixed incircle");
+  mixed.add(judge(Vec3{lo, lo, lo}, Vec3{top, 0, 0}, Vec3{0, top, 0}, Vec3{0, 0, top}), "mixed orient3d");
+  mixed.add(judge(Vec3{top, 0, 0}, Vec3{0, top, 0}, Vec3{0, 0, top}, Vec3{-top, 0, 0}, Vec3{0, 0, lo}),
+            "mixed insphere");
+  mixed.add(judge(Vec3{top, 0, 0}, Vec3{0, top, 0}, Vec3{0, 0, top}, Vec3{-top, 0, 0}, Vec3{0, -top, lo}),
+            "mixed insphere near");
+}
+
+// ---------------------------------------------------------------- expansion arithmetic
+
+Rat value(const double* c, int n) {
+  Rat v(0.0);
+  for (int i = 0; i < n; ++i) v = v + Rat(c[i]);
+  return v;
+}
+
+// Nonoverlapping: each component's magnitude is below the lowest set bit of the next.
+bool nonoverlapping(const double* c, int n) {
+  for (int i = 0; i + 1 < n; ++i) {
+    if (c[i] == 0.0 || c[i + 1] == 0.0) return false;  // zeros are eliminated
+    int e = 0;
+    const double m = std::frexp(c[i + 1], &e);  // c = m 2^e, m has 53 bits
+    long long mantissa = std::llabs(static_cast<long long>(std::ldexp(m, 53)));
+    int low = e - 53;
+    while ((mantissa & 1) == 0) {
+      mantissa >>= 1;
+      ++low;
+    }
+    if (!(std::fabs(c[i]) < std::ldexp(1.0, low))) return false;
+  }
+  return true;
+}
+
+TEST(Expansion, ProductsAndSumsAreExactAndNonoverlapping) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::uniform_int_distribution<int> expo(-60, 60);
+  for (int trial = 0; trial < 2000; ++trial) {
+    double v[6];
+    for (double& x : v) x = std::ldexp(unit(rng), expo(rng));
+    const auto p = expansion::product(v[0], v[1]);
+    EXPECT_EQ((value(p.c, p.size) - Rat(v[0]) * Rat(v[1])).sign(), 0);
+    const auto m = expansion::cross_difference(v[0], v[1], v[2], v[3]);
+    ASSERT_TRUE(nonoverlapping(m.c, m.size));
+    EXPECT_EQ((value(m.c, m.size) - (Rat(v[0]) * Rat(v[1]) - Rat(v[2]) * Rat(v[3]))).sign(), 0);
+    const auto l = expansion::sum(expansion::square(v[4]), expansion::square(v[5]));
+    const auto lm = expansion::product(l, m);
+    ASSERT_TRUE(nonoverlapping(lm.c, lm.size));
+    EXPECT_EQ((value(lm.c, lm.size) - value(l.c, l.size) * value(m.c, m.size)).sign(), 0);
+    const auto s = expansion::scale(lm, v[2]);
+    ASSERT_TRUE(nonoverlapping(s.c, s.size));
+    EXPECT_EQ((value(s.c, s.size) - value(lm.c, lm.size) * Rat(v[2])).sign(), 0);
+    const auto z = expansion::difference(lm, lm);
+    EXPECT_EQ(z.size, 0);
+    EXPECT_EQ(z.sign(), Sign::Zero);
+    EXPECT_EQ(s.sign(), static_cast<Sign>(value(s.c, s.size).sign()));
+  }
+}
+
+}  // namespace
+}  // namespace dtlab
