@@ -10,19 +10,23 @@
 
 namespace dtlab {
 
-// Signed area of triangle abc: positive iff counter-clockwise.
+// Signed area of triangle abc: positive iff counter-clockwise. Measures in doubles: on a nearly
+// flat element the sign may differ from orient2d / orient3d, which alone decide orientation.
 double signed_area(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 // Signed volume of tetrahedron abcd: det(b-a, c-a, d-a) / 6, positive iff orient3d > 0.
 double signed_volume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
 
 // Circumcentre and circumradius; for a degenerate (flat) element the centre has infinite or
-// NaN coordinates and the radius is +infinity.
+// NaN coordinates and the radius is +infinity. Flat means the exact orient2d / orient3d is zero
+// (then the centre is NaN); a non-flat element whose computed centre overflows also gets an
+// infinite radius.
 Vec2 circumcenter(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 Vec3 circumcenter(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
 double circumradius(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 double circumradius(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
 
-// Inradius: 2 * area / perimeter in 2D, 3 * volume / total face area in 3D; 0 when flat.
+// Inradius: 2 * area / perimeter in 2D, 3 * volume / total face area in 3D; 0 when flat (exact
+// orient2d / orient3d zero).
 double inradius(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 double inradius(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
 

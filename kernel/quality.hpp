@@ -1,6 +1,8 @@
 // Shape quality of book §8.2: Q_K = alpha * h_max / rho_K, h_max the longest edge, rho_K the
 // inradius, alpha chosen so that the equilateral triangle (regular tetrahedron) has Q = 1:
-// alpha = sqrt(3)/6 in 2D, sqrt(6)/12 in 3D. Q >= 1; a flat element has Q = +infinity.
+// alpha = sqrt(3)/6 in 2D, sqrt(6)/12 in 3D. Q >= 1 (up to rounding: a few ulps below 1 for a
+// rounded equilateral element); a flat element (exact orient2d / orient3d zero) has
+// Q = +infinity, and so has a non-flat one whose area or volume computes to zero.
 #pragma once
 
 #include "kernel/vec.hpp"
