@@ -1,0 +1,37 @@
+#include "algorithms/delaunay2d/delaunay2d.hpp"
+
+#include <chrono>
+
+#include "algorithms/delaunay2d/prepare.hpp"
+#include "algorithms/delaunay2d/registry.hpp"
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+Delaunay2dResult delaunay2d(std::span<const Vec2> points, const Delaunay2dOptions& options) {
+  const Delaunay2dVariant* variant = find_delaunay2d_variant(options.algorithm);
+  if (variant == nullptr) {
+    std::string known;
+    for (const Delaunay2dVariant& v : delaunay2d_variants()) {
+      if (!known.empty()) known += ", ";
+      known += v.name;
+    }
+    throw InputError("unknown 2D Delaunay algorithm '" + options.algorithm + "' (known: " + known + ")");
+  }
+  const PredicateStats before = predicate_stats();
+  const auto start = std::chrono::steady_clock::now();
+
+  PreparedPoints2 prepared = prepare_points2(points, options.seed);
+  Delaunay2dResult result;
+  result.triangulation = Triangulation2(std::vector<Vec2>(points.begin(), points.end()));
+  if (prepared.degenerate_message.empty()) variant->run(prepared, result.triangulation);
+  result.duplicates = std::move(prepared.duplicates);
+  result.duplicate_of = std::move(prepared.duplicate_of);
+  result.degenerate_message = std::move(prepared.degenerate_message);
+
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.predicate_stats = predicate_stats() - before;
+  return result;
+}
+
+}  // namespace dtlab

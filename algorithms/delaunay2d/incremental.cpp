@@ -1,0 +1,264 @@
+// Variant "incremental": the reduced incremental method, George & Borouchaki §2.4 and §2.6.2.
+// Each point P goes in by the Delaunay kernel T_{i+1} = T_i - C_P + B_P: a visibility walk from
+// the last insertion finds a base (a triangle in conflict with P), the cavity C_P grows from it by
+// adjacency, and the ball B_P joins P to the cavity's boundary. Insertion order: BRIO rounds, each
+// in Hilbert order (Amenta, Choi, Rote, SoCG 2003). The walk cannot cycle on a Delaunay
+// triangulation (Edelsbrunner 1990: the in-front relation is acyclic); a step bound backs that up.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "algorithms/delaunay2d/prepare.hpp"
+#include "algorithms/spatial_sort.hpp"
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+#include "mesh/triangulation2.hpp"
+
+namespace dtlab {
+
+namespace {
+
+constexpr std::uint32_t kInf = Triangulation2::kInfinite;
+constexpr std::uint32_t kNext[3] = {1, 2, 0};
+constexpr std::uint32_t kPrev[3] = {2, 0, 1};
+
+enum Mark : std::uint8_t { kUnmarked = 0, kInCavity = 1, kOutside = 2 };
+
+// The insertion engine, working on raw views of the triangulation's arrays (sized once for the
+// final 2m - 2 triangles, so nothing reallocates) and on the points in insertion order: vertex
+// ids are insertion ranks while it runs, which keeps consecutive insertions close in memory.
+class Inserter {
+ public:
+  Inserter(const Vec2* points, std::uint32_t* vertices, std::uint32_t* neighbours, std::size_t capacity)
+      : p_(points), v_(vertices), n_(neighbours), mark_(capacity, kUnmarked), capacity_(capacity) {
+    cavity_.reserve(64);
+    outside_.reserve(64);
+    boundary_.reserve(64);
+  }
+
+  // The first triangle (a, b, c), counter-clockwise, and its three ghosts.
+  void start(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    const std::uint32_t v[3] = {a, b, c};
+    set_triangle(0, a, b, c);
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      // Ghost 1 + i lies across edge i (v[i+1] -> v[i+2]) of triangle 0.
+      set_triangle(1 + i, kInf, v[kPrev[i]], v[kNext[i]]);
+      link(i, 3 * (1 + i));
+    }
+    // Edge 1 of ghost 1+i runs v[i+1] -> inf; edge 2 of ghost 1+j runs inf -> v[j+2].
+    for (std::uint32_t i = 0; i < 3; ++i) link(3 * (1 + i) + 1, 3 * (1 + kPrev[i]) + 2);
+    count_ = 4;
+    last_ = 0;
+  }
+
+  void insert(std::uint32_t p) {
+    const std::uint32_t base = locate(p);
+    grow_cavity(base, p);
+    trace_boundary();
+    fill_ball(p);
+  }
+
+  std::size_t triangle_count() const noexcept { return count_; }
+
+ private:
+  void set_triangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) noexcept {
+    v_[3 * t] = a, v_[3 * t + 1] = b, v_[3 * t + 2] = c;
+  }
+  void link(std::uint32_t g, std::uint32_t h) noexcept { n_[g] = h, n_[h] = g; }
+
+  // p on the line through a and b: is it strictly between them?
+  static bool strictly_between(const Vec2& a, const Vec2& b, const Vec2& p) noexcept {
+    if (a.x != b.x) return (a.x < p.x && p.x < b.x) || (b.x < p.x && p.x < a.x);
+    return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
+  }
+
+  // Ghost (inf, a, b): p is beyond hull edge b -> a, or on it.
+  bool ghost_conflicts(const std::uint32_t* v, const Vec2& p) const noexcept {
+    const Vec2& a = p_[v[1]];
+    const Vec2& b = p_[v[2]];
+    const Sign s = orient2d(a, b, p);
+    return s == Sign::Positive || (s == Sign::Zero && strictly_between(a, b, p));
+  }
+
+  bool conflicts(std::uint32_t t, const Vec2& p) const noexcept {
+    const std::uint32_t* v = v_ + 3 * t;
+    if (v[0] == kInf) return ghost_conflicts(v, p);
+    return incircle_perturbed(p_[v[0]], p_[v[1]], p_[v[2]], p) == Sign::Positive;
+  }
+
+  // Visibility walk from the last insertion's triangle to a triangle in conflict with p: a
+  // finite triangle whose closed region holds p, or a ghost whose hull edge p is beyond.
+  std::uint32_t locate(std::uint32_t pid) const {
+    const Vec2& p = p_[pid];
+    std::uint32_t t = last_;
+    std::uint32_t entered = 3;  // the edge of t the walk came in through (3: none)
+    for (std::size_t steps = 0; steps <= count_; ++steps) {
+      const std::uint32_t* v = v_ + 3 * t;
+      if (v[0] == kInf) {
+        if (ghost_conflicts(v, p)) return t;
+        const std::uint32_t h = n_[3 * t];  // p is on the inner side: step inside the hull
+        t = h / 3, entered = h % 3;
+        continue;
+      }
+      std::uint32_t i = entered == 3 ? 0 : kNext[entered];
+      bool moved = false;
+      for (int k = 0; k < 3; ++k, i = kNext[i]) {
+        if (i == entered) continue;
+        if (orient2d(p_[v[kNext[i]]], p_[v[kPrev[i]]], p) == Sign::Negative) {
+          const std::uint32_t h = n_[3 * t + i];
+          t = h / 3, entered = h % 3;
+          if (v_[3 * t] == kInf) return t;  // p strictly beyond this hull edge
+          moved = true;
+          break;
+        }
+      }
+      if (!moved) return t;
+    }
+    throw InternalError("incremental Delaunay: the walk to point (rank " + std::to_string(pid) +
+                        ") exceeded its bound of " + std::to_string(count_) + " steps");
+  }
+
+  // C_P by breadth-first search from the base over adjacency (the cavity is connected).
+  void grow_cavity(std::uint32_t base, std::uint32_t pid) {
+    const Vec2& p = p_[pid];
+    cavity_.clear();
+    outside_.clear();
+    mark_[base] = kInCavity;
+    cavity_.push_back(base);
+    for (std::size_t k = 0; k < cavity_.size(); ++k) {
+      const std::uint32_t t = cavity_[k];
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t u = n_[3 * t + i] / 3;
+        if (mark_[u] != kUnmarked) continue;
+        if (conflicts(u, p)) {
+          mark_[u] = kInCavity;
+          cavity_.push_back(u);
+        } else {
+          mark_[u] = kOutside;
+          outside_.push_back(u);
+        }
+      }
+    }
+  }
+
+  // The cavity's boundary as a cycle of half-edges (cavity on their left), in order: from a
+  // boundary edge u -> v, turn around v through cavity triangles to the next one.
+  void trace_boundary() {
+    boundary_.clear();
+    std::uint32_t h0 = Triangulation2::kNone;
+    for (const std::uint32_t t : cavity_) {
+      for (std::uint32_t i = 0; i < 3 && h0 == Triangulation2::kNone; ++i)
+        if (mark_[n_[3 * t + i] / 3] != kInCavity) h0 = 3 * t + i;
+      if (h0 != Triangulation2::kNone) break;
+    }
+    DTLAB_ASSERT(h0 != Triangulation2::kNone);
+    const std::size_t bound = 3 * cavity_.size() + 3;
+    std::size_t steps = 0;
+    std::uint32_t h = h0;
+    do {
+      const std::uint32_t t = h / 3, i = h % 3;
+      boundary_.push_back({v_[3 * t + kNext[i]], v_[3 * t + kPrev[i]], n_[h]});
+      std::uint32_t g = 3 * t + kNext[i];  // starts where h ends
+      while (mark_[n_[g] / 3] == kInCavity) {
+        const std::uint32_t twin = n_[g];
+        g = twin - twin % 3 + kNext[twin % 3];
+        DTLAB_ASSERT(++steps <= bound);
+      }
+      h = g;
+      DTLAB_ASSERT(++steps <= bound);
+    } while (h != h0);
+    // A cavity is a triangulated polygon without interior vertex: k edges, k - 2 triangles.
+    DTLAB_ASSERT(boundary_.size() == cavity_.size() + 2);
+  }
+
+  // B_P: one triangle (p, u, v) per boundary edge u -> v, in the cavity's slots and two new ones.
+  void fill_ball(std::uint32_t p) {
+    const std::size_t k = boundary_.size();
+    DTLAB_ASSERT(count_ + 2 <= capacity_);
+    cavity_.push_back(static_cast<std::uint32_t>(count_));
+    cavity_.push_back(static_cast<std::uint32_t>(count_ + 1));
+    count_ += 2;
+    // For triangle j: the half-edge v -> p (to link with j + 1) and p -> u (with j - 1).
+    std::uint32_t first_in = 0, prev_out = 0;
+    for (std::size_t j = 0; j < k; ++j) {
+      const std::uint32_t t = cavity_[j];
+      const auto [u, v, outer] = boundary_[j];
+      // Positions of p, u, v in t: ghosts keep kInfinite at index 0.
+      std::uint32_t ip, iu, iv;
+      if (u == kInf) {
+        set_triangle(t, kInf, v, p), ip = 2, iu = 0, iv = 1;
+      } else if (v == kInf) {
+        set_triangle(t, kInf, p, u), ip = 1, iu = 2, iv = 0;
+      } else {
+        set_triangle(t, p, u, v), ip = 0, iu = 1, iv = 2;
+      }
+      link(3 * t + ip, outer);
+      if (j == 0) {
+        first_in = 3 * t + iv;
+      } else {
+        link(prev_out, 3 * t + iv);
+      }
+      prev_out = 3 * t + iu;
+      mark_[t] = kUnmarked;
+    }
+    link(prev_out, first_in);
+    for (const std::uint32_t t : outside_) mark_[t] = kUnmarked;
+    last_ = cavity_[0];
+  }
+
+  struct BoundaryEdge {
+    std::uint32_t u, v, outer;  // u -> v, and the twin outside the cavity
+  };
+
+  const Vec2* p_;
+  std::uint32_t* v_;
+  std::uint32_t* n_;
+  std::vector<std::uint8_t> mark_;
+  std::size_t capacity_;
+  std::size_t count_ = 0;
+  std::uint32_t last_ = 0;
+  std::vector<std::uint32_t> cavity_, outside_;
+  std::vector<BoundaryEdge> boundary_;
+};
+
+}  // namespace
+
+void delaunay2d_incremental(const PreparedPoints2& input, Triangulation2& triangulation) {
+  std::vector<Vec2>& points = triangulation.mutable_points();
+  DTLAB_ASSERT(points.size() == input.points.size());
+  DTLAB_ASSERT(input.distinct.size() >= 3);
+  std::vector<std::uint32_t> order = brio_order_of_sorted(input.distinct, input.seed);
+  const std::size_t m = order.size();
+  for (std::size_t r = 0; r < m; ++r) points[r] = input.points[order[r]];
+
+  // The first triangle: the first two points and the first one off their line.
+  std::size_t third = 2;
+  Sign turn = Sign::Zero;
+  for (; third < m; ++third)
+    if ((turn = orient2d(points[0], points[1], points[third])) != Sign::Zero) break;
+  DTLAB_ASSERT(turn != Sign::Zero);
+  std::swap(order[2], order[third]);
+  std::swap(points[2], points[third]);
+
+  const std::size_t capacity = 2 * m - 2;  // triangles of the final triangulation, ghosts included
+  std::vector<std::uint32_t>& vertices = triangulation.mutable_vertices();
+  std::vector<std::uint32_t>& neighbours = triangulation.mutable_neighbours();
+  vertices.assign(3 * capacity, Triangulation2::kNone);
+  neighbours.assign(3 * capacity, Triangulation2::kNone);
+
+  Inserter inserter(points.data(), vertices.data(), neighbours.data(), capacity);
+  if (turn == Sign::Positive) {
+    inserter.start(0, 1, 2);
+  } else {
+    inserter.start(0, 2, 1);
+  }
+  for (std::size_t r = 3; r < m; ++r) inserter.insert(static_cast<std::uint32_t>(r));
+  DTLAB_ASSERT(inserter.triangle_count() == capacity);
+
+  // Back to input ids and input order.
+  for (std::uint32_t& v : vertices)
+    if (v != kInf) v = order[v];
+  std::copy(input.points.begin(), input.points.end(), points.begin());
+}
+
+}  // namespace dtlab

@@ -1,0 +1,61 @@
+#include "algorithms/delaunay2d/prepare.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
+
+#include "algorithms/spatial_sort.hpp"
+#include "kernel/coordinate_range.hpp"
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+#include "mesh/triangulation2.hpp"
+
+namespace dtlab {
+
+PreparedPoints2 prepare_points2(std::span<const Vec2> points, std::uint64_t seed) {
+  if (points.size() > Triangulation2::kMaxPoints)
+    throw InputError(std::to_string(points.size()) + " points: more than the " +
+                     std::to_string(Triangulation2::kMaxPoints) + " a 2D triangulation can index");
+  check_coordinates(points, "point");
+
+  PreparedPoints2 out;
+  out.points = points;
+  out.seed = seed;
+  std::vector<std::uint32_t>& ids = out.distinct;
+  ids.resize(points.size());
+  std::iota(ids.begin(), ids.end(), 0u);
+  hilbert_sort(points, ids);
+
+  // Equal points are adjacent, smallest id first: keep it, drop the rest (in place).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> dropped;  // (duplicate, kept)
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    if (kept > 0 && points[ids[k]] == points[ids[kept - 1]]) {
+      dropped.emplace_back(ids[k], ids[kept - 1]);
+    } else {
+      ids[kept++] = ids[k];
+    }
+  }
+  ids.resize(kept);
+  std::sort(dropped.begin(), dropped.end());
+  for (const auto& [duplicate, original] : dropped) {
+    out.duplicates.push_back(duplicate);
+    out.duplicate_of.push_back(original);
+  }
+
+  if (ids.size() < 3) {
+    out.degenerate_message = "fewer than 3 distinct points (" + std::to_string(ids.size()) + " distinct among " +
+                             std::to_string(points.size()) + "): no triangles";
+    return out;
+  }
+  const Vec2& a = points[ids[0]];
+  const Vec2& b = points[ids[1]];
+  const bool collinear = std::all_of(ids.begin() + 2, ids.end(),
+                                     [&](std::uint32_t c) { return orient2d(a, b, points[c]) == Sign::Zero; });
+  if (collinear)
+    out.degenerate_message =
+        "all points collinear (" + std::to_string(ids.size()) + " distinct points on one line): no triangles";
+  return out;
+}
+
+}  // namespace dtlab

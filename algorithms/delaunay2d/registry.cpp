@@ -1,0 +1,29 @@
+#include "algorithms/delaunay2d/registry.hpp"
+
+#include <array>
+
+namespace dtlab {
+
+// Each variant's run function lives in its own file.
+void delaunay2d_incremental(const PreparedPoints2& input, Triangulation2& triangulation);
+
+namespace {
+
+constexpr std::array kVariants = {
+    Delaunay2dVariant{"incremental",
+                      "reduced incremental method (Delaunay kernel, book §2.4-2.6): BRIO/Hilbert order, "
+                      "visibility walk from the last insertion, cavity grown by adjacency",
+                      &delaunay2d_incremental},
+};
+
+}  // namespace
+
+std::span<const Delaunay2dVariant> delaunay2d_variants() noexcept { return kVariants; }
+
+const Delaunay2dVariant* find_delaunay2d_variant(std::string_view name) noexcept {
+  for (const Delaunay2dVariant& v : kVariants)
+    if (v.name == name) return &v;
+  return nullptr;
+}
+
+}  // namespace dtlab

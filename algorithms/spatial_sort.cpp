@@ -1,0 +1,199 @@
+// Hilbert sort by quantised keys and a recursive radix sort; BRIO rounds by a stable partition
+// (Amenta, Choi, Rote, SoCG 2003). See spatial_sort.hpp.
+#include "algorithms/spatial_sort.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <utility>
+
+namespace dtlab {
+
+namespace {
+
+// The Hilbert curve as a four-state automaton read one grid level at a time, most significant
+// first. A state is the transform (complement both coordinates: f; swap them: s) that maps the
+// current sub-square onto the canonical one, whose quadrants are visited in the order
+// (0,0) (0,1) (1,1) (1,0). Entering quadrant (rx, ry) of the canonical square composes the
+// transform with a swap when ry = 0, and with a complement too when rx = 1 as well.
+// The table reads four levels at once: entry = (8 bits of index << 2) | next state.
+struct HilbertTable2 {
+  std::array<std::uint16_t, 4 * 256> entry{};
+};
+
+constexpr HilbertTable2 make_hilbert_table2() {
+  HilbertTable2 table;
+  for (unsigned state = 0; state < 4; ++state) {
+    for (unsigned x4 = 0; x4 < 16; ++x4) {
+      for (unsigned y4 = 0; y4 < 16; ++y4) {
+        unsigned f = state & 1u, s = state >> 1;
+        unsigned digits = 0;
+        for (int level = 3; level >= 0; --level) {
+          const unsigned tx = ((x4 >> level) & 1u) ^ f;
+          const unsigned ty = ((y4 >> level) & 1u) ^ f;
+          const unsigned rx = s ? ty : tx;
+          const unsigned ry = s ? tx : ty;
+          digits = (digits << 2) | ((3u * rx) ^ ry);
+          if (ry == 0) {
+            f ^= rx;
+            s ^= 1u;
+          }
+        }
+        table.entry[state * 256 + (x4 << 4 | y4)] = static_cast<std::uint16_t>(digits << 2 | (s << 1 | f));
+      }
+    }
+  }
+  return table;
+}
+
+constexpr HilbertTable2 kHilbertTable2 = make_hilbert_table2();
+
+constexpr int kGridBits = 16;
+constexpr std::size_t kLeaf = 8;            // below this, a lexicographic sort is as good
+constexpr std::size_t kRadixThreshold = 2048;  // below this, std::sort on the packed keys
+
+// Stable LSD radix sort of (key << 32 | position) words by their upper 32 bits, 11 bits a pass.
+void radix_sort_upper32(std::vector<std::uint64_t>& a, std::vector<std::uint64_t>& scratch) {
+  constexpr int kDigitBits = 11;
+  constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
+  const std::size_t n = a.size();
+  std::vector<std::uint32_t> count(3 * kBuckets, 0);
+  for (const std::uint64_t w : a) {
+    const auto key = static_cast<std::uint32_t>(w >> 32);
+    ++count[key & (kBuckets - 1)];
+    ++count[kBuckets + ((key >> kDigitBits) & (kBuckets - 1))];
+    ++count[2 * kBuckets + (key >> (2 * kDigitBits))];
+  }
+  scratch.resize(n);
+  for (int pass = 0; pass < 3; ++pass) {
+    std::uint32_t* c = count.data() + pass * kBuckets;
+    const int shift = 32 + pass * kDigitBits;
+    if (c[(a[0] >> shift) & (kBuckets - 1)] == n) continue;  // one bucket: nothing moves
+    std::uint32_t sum = 0;
+    for (std::size_t b = 0; b < kBuckets; ++b) sum += std::exchange(c[b], sum);
+    for (const std::uint64_t w : a) scratch[c[(w >> shift) & (kBuckets - 1)]++] = w;
+    a.swap(scratch);
+  }
+}
+
+class HilbertSorter2 {
+ public:
+  explicit HilbertSorter2(std::span<const Vec2> points) : points_(points) {}
+
+  void sort(std::span<std::uint32_t> ids) {
+    const std::size_t n = ids.size();
+    if (n <= 1) return;
+    if (n <= kLeaf) {
+      std::sort(ids.begin(), ids.end(), [this](std::uint32_t i, std::uint32_t j) {
+        const Vec2& p = points_[i];
+        const Vec2& q = points_[j];
+        if (p.x != q.x) return p.x < q.x;
+        if (p.y != q.y) return p.y < q.y;
+        return i < j;
+      });
+      return;
+    }
+    double xmin = points_[ids[0]].x, xmax = xmin, ymin = points_[ids[0]].y, ymax = ymin;
+    for (const std::uint32_t i : ids) {
+      xmin = std::min(xmin, points_[i].x), xmax = std::max(xmax, points_[i].x);
+      ymin = std::min(ymin, points_[i].y), ymax = std::max(ymax, points_[i].y);
+    }
+    if (xmin == xmax && ymin == ymax) {  // all duplicates of one point
+      std::sort(ids.begin(), ids.end());
+      return;
+    }
+    // Each axis scaled on its own, so that the points fill the grid. The quantisation is a
+    // heuristic (no decision depends on it) but a function of the coordinates: equal points
+    // get equal keys at every level of the recursion.
+    constexpr double kCells = 1 << kGridBits;
+    const double sx = xmax > xmin ? kCells / (xmax - xmin) : 0.0;
+    const double sy = ymax > ymin ? kCells / (ymax - ymin) : 0.0;
+    constexpr double kLast = kCells - 1;
+    keys_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec2& p = points_[ids[k]];
+      const auto qx = static_cast<std::uint32_t>(std::min((p.x - xmin) * sx, kLast));
+      const auto qy = static_cast<std::uint32_t>(std::min((p.y - ymin) * sy, kLast));
+      keys_[k] = std::uint64_t{hilbert_index2(qx, qy)} << 32 | k;
+    }
+    if (n < kRadixThreshold) {
+      std::sort(keys_.begin(), keys_.end());  // positions are unique: stable by construction
+    } else {
+      radix_sort_upper32(keys_, scratch_);
+    }
+    copy_.assign(ids.begin(), ids.end());
+    // Runs of equal keys share one cell: sort them again on their own bounding box. Collect the
+    // runs first, since the recursion reuses the buffers.
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    std::size_t run_start = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      ids[k] = copy_[keys_[k] & 0xFFFFFFFFu];
+      if (k > 0 && (keys_[k] >> 32) != (keys_[k - 1] >> 32)) {
+        if (k - run_start > 1) runs.emplace_back(run_start, k - run_start);
+        run_start = k;
+      }
+    }
+    if (n - run_start > 1) runs.emplace_back(run_start, n - run_start);
+    for (const auto& [start, length] : runs) sort(ids.subspan(start, length));
+  }
+
+ private:
+  std::span<const Vec2> points_;
+  std::vector<std::uint64_t> keys_, scratch_;
+  std::vector<std::uint32_t> copy_;
+};
+
+// SplitMix64 finaliser (Steele, Lea, Flood, OOPSLA 2014): a well-mixed 64-bit hash of (seed, id).
+constexpr std::uint64_t mix64(std::uint64_t z) noexcept {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
+std::uint32_t hilbert_index2(std::uint32_t x, std::uint32_t y) noexcept {
+  std::uint32_t index = 0;
+  unsigned state = 0;
+  for (int shift = kGridBits - 4; shift >= 0; shift -= 4) {
+    const unsigned cell = ((x >> shift) & 15u) << 4 | ((y >> shift) & 15u);
+    const std::uint16_t e = kHilbertTable2.entry[state * 256 + cell];
+    index = index << 8 | (e >> 2);
+    state = e & 3u;
+  }
+  return index;
+}
+
+void hilbert_sort(std::span<const Vec2> points, std::span<std::uint32_t> ids) {
+  HilbertSorter2 sorter(points);
+  sorter.sort(ids);
+}
+
+std::vector<std::uint32_t> brio_order_of_sorted(std::span<const std::uint32_t> ids, std::uint64_t seed,
+                                                std::size_t first_round) {
+  const std::size_t n = ids.size();
+  first_round = std::max<std::size_t>(first_round, 1);
+  if (n <= first_round) return {ids.begin(), ids.end()};
+  // Round sizes about n/2, n/4, ...: the deepest level keeps at least `first_round` points.
+  const int last_level = std::bit_width(n / first_round) - 1;
+  auto level_of = [&](std::uint32_t id) {
+    const std::uint64_t r = mix64(seed + 0x9E3779B97F4A7C15ull * (std::uint64_t{id} + 1));
+    return std::min(std::countr_zero(r), last_level);
+  };
+  // Stable counting sort: deepest level (smallest round) first.
+  std::vector<std::size_t> start(static_cast<std::size_t>(last_level) + 2, 0);
+  for (const std::uint32_t id : ids) ++start[static_cast<std::size_t>(last_level - level_of(id)) + 1];
+  for (std::size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
+  std::vector<std::uint32_t> order(n);
+  for (const std::uint32_t id : ids) order[start[static_cast<std::size_t>(last_level - level_of(id))]++] = id;
+  return order;
+}
+
+std::vector<std::uint32_t> brio_order(std::span<const Vec2> points, std::span<const std::uint32_t> ids,
+                                      std::uint64_t seed, std::size_t first_round) {
+  std::vector<std::uint32_t> sorted(ids.begin(), ids.end());
+  hilbert_sort(points, sorted);
+  return brio_order_of_sorted(sorted, seed, first_round);
+}
+
+}  // namespace dtlab

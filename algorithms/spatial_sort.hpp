@@ -1,0 +1,44 @@
+// Spatial sorting for incremental insertion: Hilbert curve order and BRIO.
+//
+// Hilbert order (Hilbert 1891; as an insertion order for Delaunay: Amenta, Choi, Rote,
+// "Incremental constructions con BRIO", SoCG 2003): points are quantised on a 2^16 x 2^16 grid
+// over their bounding box and sorted by the index of their cell along the Hilbert curve (radix
+// sort); a cell holding many points is sorted again on its own bounding box, so clustered input
+// keeps its locality. BRIO (Biased Randomized Insertion Order, same paper): each point joins
+// round r with probability 2^-(r+1) (the last round holds about half the points, each earlier
+// round half the next); rounds are inserted from the smallest up, each in Hilbert order.
+//
+// Everything is deterministic (a seed drives BRIO), O(n log n) at worst, O(n) for bounded
+// clustering, and allocates per call, never per point. 3D: a key function for Vec3 (3 x 21 bits
+// in a 64-bit key) plugs into the same recursive radix sort (spatial_sort.cpp); add overloads
+// taking std::span<const Vec3> beside these.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "kernel/vec.hpp"
+
+namespace dtlab {
+
+// Index of cell (x, y) of the 2^16 x 2^16 grid along the Hilbert curve that starts at cell (0, 0)
+// and ends at cell (2^16 - 1, 0).
+std::uint32_t hilbert_index2(std::uint32_t x, std::uint32_t y) noexcept;
+
+// Sorts `ids` (indices into `points`) into Hilbert order. Points with equal coordinates end up
+// next to each other, in increasing id order: a duplicate scan after this sort is one linear
+// pass comparing neighbours.
+void hilbert_sort(std::span<const Vec2> points, std::span<std::uint32_t> ids);
+
+// BRIO order of ids that are already in Hilbert order (hilbert_sort): a stable partition into
+// rounds keeps each round in Hilbert order. Rounds smaller than `first_round` are merged into
+// the first one.
+std::vector<std::uint32_t> brio_order_of_sorted(std::span<const std::uint32_t> hilbert_sorted_ids,
+                                                std::uint64_t seed, std::size_t first_round = 64);
+
+// hilbert_sort, then brio_order_of_sorted.
+std::vector<std::uint32_t> brio_order(std::span<const Vec2> points, std::span<const std::uint32_t> ids,
+                                      std::uint64_t seed, std::size_t first_round = 64);
+
+}  // namespace dtlab
