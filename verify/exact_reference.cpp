@@ -1,0 +1,209 @@
+// The exact reference signs (exact_reference.hpp): homogeneous determinants over GMP rationals,
+// signed by Gaussian elimination (the sign of the product of the pivots, flipped once per row
+// exchange).
+#include "verify/exact_reference.hpp"
+
+#include <gmp.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "kernel/error.hpp"
+
+namespace dtlab::reference {
+
+namespace {
+
+constexpr int kMaxOrder = 5;
+
+// A square rational matrix of order n <= 5; the elimination destroys it.
+class Matrix {
+ public:
+  explicit Matrix(int n) : n_(n) {
+    for (auto& row : m_)
+      for (auto& x : row) mpq_init(x);
+  }
+  ~Matrix() {
+    for (auto& row : m_)
+      for (auto& x : row) mpq_clear(x);
+  }
+  Matrix(const Matrix&) = delete;
+  Matrix& operator=(const Matrix&) = delete;
+
+  int order() const { return n_; }
+  mpq_t& at(int i, int j) { return m_[i][j]; }
+
+  void set(int i, int j, double v) {
+    if (!std::isfinite(v))
+      throw InputError("exact reference: coordinate " + std::to_string(v) + " of row " + std::to_string(i) +
+                           " is not finite",
+                       {static_cast<std::uint64_t>(i)});
+    mpq_set_d(m_[i][j], v);  // exact: a finite double is a dyadic rational
+  }
+  void set_one(int i, int j) { mpq_set_ui(m_[i][j], 1, 1); }
+
+  // Column j of row i := sum of squares of columns 0..dim-1 of row i.
+  void set_lift(int i, int j, int dim) {
+    mpq_t sq;
+    mpq_init(sq);
+    mpq_set_ui(m_[i][j], 0, 1);
+    for (int k = 0; k < dim; ++k) {
+      mpq_mul(sq, m_[i][k], m_[i][k]);
+      mpq_add(m_[i][j], m_[i][j], sq);
+    }
+    mpq_clear(sq);
+  }
+
+  // The sign of the determinant, by elimination (destroys the matrix).
+  Sign determinant_sign() {
+    int sign = 1;
+    mpq_t factor, t;
+    mpq_init(factor);
+    mpq_init(t);
+    for (int k = 0; k < n_ && sign != 0; ++k) {
+      int pivot = k;
+      while (pivot < n_ && mpq_sgn(m_[pivot][k]) == 0) ++pivot;
+      if (pivot == n_) {
+        sign = 0;
+        break;
+      }
+      if (pivot != k) {
+        for (int j = 0; j < n_; ++j) mpq_swap(m_[pivot][j], m_[k][j]);
+        sign = -sign;
+      }
+      sign *= mpq_sgn(m_[k][k]);
+      for (int i = k + 1; i < n_; ++i) {
+        if (mpq_sgn(m_[i][k]) == 0) continue;
+        mpq_div(factor, m_[i][k], m_[k][k]);
+        for (int j = k + 1; j < n_; ++j) {
+          mpq_mul(t, factor, m_[k][j]);
+          mpq_sub(m_[i][j], m_[i][j], t);
+        }
+      }
+    }
+    mpq_clear(factor);
+    mpq_clear(t);
+    return sign > 0 ? Sign::Positive : (sign < 0 ? Sign::Negative : Sign::Zero);
+  }
+
+ private:
+  int n_;
+  std::array<std::array<mpq_t, kMaxOrder>, kMaxOrder> m_;
+};
+
+double coord(const Vec2& p, int k) { return k == 0 ? p.x : p.y; }
+double coord(const Vec3& p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
+
+// The homogeneous matrix of `points` (dim + 1 + lifted columns), with row `skip_row` and column
+// `skip_col` left out (-1: none): rows (p, 1) or (p, |p|^2, 1).
+template <class P, std::size_t N>
+Sign homogeneous_sign(const std::array<P, N>& points, int dim, bool lifted, int skip_row = -1,
+                      int skip_col = -1) {
+  const int cols = dim + (lifted ? 2 : 1);
+  const int n = cols - (skip_col >= 0 ? 1 : 0);
+  Matrix full(cols);  // built whole, then copied without the skipped row/column
+  for (int i = 0; i < static_cast<int>(N); ++i) {
+    for (int k = 0; k < dim; ++k) full.set(i, k, coord(points[i], k));
+    if (lifted) full.set_lift(i, dim, dim);
+    full.set_one(i, cols - 1);
+  }
+  if (skip_col < 0) return full.determinant_sign();
+  Matrix minor(n);
+  for (int i = 0, mi = 0; i < static_cast<int>(N); ++i) {
+    if (i == skip_row) continue;
+    for (int j = 0, mj = 0; j < cols; ++j) {
+      if (j == skip_col) continue;
+      mpq_set(minor.at(mi, mj), full.at(i, j));
+      ++mj;
+    }
+    ++mi;
+  }
+  return minor.determinant_sign();
+}
+
+Sign times(int s, Sign v) { return s > 0 ? v : -v; }
+
+// Indices of `points` in decreasing lexicographic order; throws on duplicates.
+template <class P, std::size_t N>
+std::array<int, N> rank_order(const std::array<P, N>& points) {
+  std::array<int, N> order;
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int i, int j) { return points[j] < points[i]; });
+  for (std::size_t k = 1; k < N; ++k)
+    if (points[order[k - 1]] == points[order[k]])
+      throw InputError("exact reference: the perturbation needs distinct points, points " +
+                           std::to_string(order[k - 1]) + " and " + std::to_string(order[k]) + " coincide",
+                       {static_cast<std::uint64_t>(std::min(order[k - 1], order[k])),
+                        static_cast<std::uint64_t>(std::max(order[k - 1], order[k]))});
+  return order;
+}
+
+// det of the lifted matrix with column `dim` (the lift) perturbed by eps^rank, times `sign`.
+template <class P, std::size_t N>
+Sign perturbed_sign(const std::array<P, N>& points, int dim, int sign) {
+  const std::array<int, N> order = rank_order(points);
+  if (const Sign s = homogeneous_sign(points, dim, true); s != Sign::Zero) return times(sign, s);
+  for (const int row : order) {
+    // Cofactor (row, dim) = (-1)^(row + dim) * minor(row, dim).
+    const Sign minor = homogeneous_sign(points, dim, true, row, dim);
+    if (minor != Sign::Zero) return times(sign * ((row + dim) % 2 == 0 ? 1 : -1), minor);
+  }
+  return Sign::Zero;
+}
+
+}  // namespace
+
+Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
+  return homogeneous_sign(std::array<Vec2, 3>{a, b, c}, 2, false);
+}
+
+Sign incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  return homogeneous_sign(std::array<Vec2, 4>{a, b, c, d}, 2, true);
+}
+
+Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return -homogeneous_sign(std::array<Vec3, 4>{a, b, c, d}, 3, false);
+}
+
+Sign insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) {
+  return -homogeneous_sign(std::array<Vec3, 5>{a, b, c, d, e}, 3, true);
+}
+
+Sign incircle_perturbed(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  return perturbed_sign(std::array<Vec2, 4>{a, b, c, d}, 2, +1);
+}
+
+Sign insphere_perturbed(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) {
+  return perturbed_sign(std::array<Vec3, 5>{a, b, c, d, e}, 3, -1);
+}
+
+bool all_collinear(std::span<const Vec2> points) {
+  if (points.empty()) return true;
+  const Vec2& p = points[0];
+  const auto q = std::find_if(points.begin(), points.end(), [&](const Vec2& x) { return x != p; });
+  if (q == points.end()) return true;
+  return std::all_of(points.begin(), points.end(),
+                     [&](const Vec2& r) { return orient2d(p, *q, r) == Sign::Zero; });
+}
+
+bool all_coplanar(std::span<const Vec3> points) {
+  if (points.empty()) return true;
+  const Vec3& p = points[0];
+  const auto q = std::find_if(points.begin(), points.end(), [&](const Vec3& x) { return x != p; });
+  if (q == points.end()) return true;
+  // Three points are collinear in space iff their three axis projections are collinear.
+  const auto collinear3 = [](const Vec3& a, const Vec3& b, const Vec3& c) {
+    return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::Zero &&
+           orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::Zero &&
+           orient2d({a.x, a.z}, {b.x, b.z}, {c.x, c.z}) == Sign::Zero;
+  };
+  const auto r = std::find_if(points.begin(), points.end(), [&](const Vec3& x) { return !collinear3(p, *q, x); });
+  if (r == points.end()) return true;
+  return std::all_of(points.begin(), points.end(),
+                     [&](const Vec3& s) { return orient3d(p, *q, *r, s) == Sign::Zero; });
+}
+
+}  // namespace dtlab::reference
