@@ -13,6 +13,8 @@ int main(int argc, char** argv) {
                        std::string("dtlab ") + dtlab::build_info::kVersion + " (commit " +
                            dtlab::build_info::kCommit + ", " + dtlab::build_info::kCompiler + ", " +
                            dtlab::build_info::kBuildType + ")");
+  dtlab::cli::add_delaunay(app);
+  dtlab::cli::add_verify(app);
   dtlab::cli::add_selfcheck(app);
   try {
     app.parse(argc, argv);
@@ -28,5 +30,5 @@ int main(int argc, char** argv) {
   if (app.get_subcommands().empty()) {
     std::cout << app.help();
   }
-  return 0;
+  return dtlab::cli::exit_code();
 }

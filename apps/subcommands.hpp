@@ -5,6 +5,14 @@
 
 namespace dtlab::cli {
 
+// The status main() returns: a subcommand's callback sets it (0 success, 1 bad input, 3 a check failed).
+inline int& exit_code() {
+  static int code = 0;
+  return code;
+}
+
 void add_selfcheck(CLI::App& app);
+void add_delaunay(CLI::App& app);
+void add_verify(CLI::App& app);
 
 }  // namespace dtlab::cli

@@ -1,0 +1,129 @@
+// `dtlab delaunay`: triangulate a point file or a generated point set with any registered
+// variant, write the mesh, verify it exactly and report statistics.
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "algorithms/delaunay2d/delaunay2d.hpp"
+#include "algorithms/delaunay2d/registry.hpp"
+#include "apps/cli_util.hpp"
+#include "apps/input_files.hpp"
+#include "apps/subcommands.hpp"
+#include "kernel/error.hpp"
+#include "verify/checks2d.hpp"
+#include "verify/generators/points2d.hpp"
+
+namespace dtlab::cli {
+
+namespace {
+
+struct DelaunayArgs {
+  std::string input;
+  std::string output;
+  std::string algorithm = "incremental";
+  bool stats = false;
+  bool verify = false;
+  std::size_t random = 0;
+  int dim = 2;
+  std::string distribution = "uniform";
+  std::uint64_t seed = 1;
+};
+
+std::string list_items(const std::vector<std::uint32_t>& items, const std::vector<std::uint32_t>& of,
+                       std::size_t limit) {
+  std::ostringstream s;
+  for (std::size_t i = 0; i < items.size() && i < limit; ++i) {
+    s << (i ? ", " : "") << items[i] + 1 << " (= " << of[i] + 1 << ")";
+  }
+  if (items.size() > limit) s << ", ... (" << items.size() - limit << " more)";
+  return s.str();
+}
+
+int run_delaunay(const DelaunayArgs& args) {
+  if (args.input.empty() == (args.random == 0)) {
+    throw InputError("give either an INPUT file or --random N");
+  }
+  if (args.dim != 2 || (!args.input.empty() && input_dimension(args.input) != 2)) {
+    throw InputError("3D Delaunay is not available yet in this build (2D inputs only)");
+  }
+  const std::string source = args.input.empty()
+                                 ? "random " + args.distribution + " n=" + std::to_string(args.random) +
+                                       " seed=" + std::to_string(args.seed)
+                                 : args.input;
+  const std::vector<Vec2> points = args.input.empty()
+                                       ? generate_points2d(args.distribution, args.random, args.seed)
+                                       : read_points2(args.input);
+
+  Delaunay2dOptions options;
+  options.algorithm = args.algorithm;
+  Delaunay2dResult result = delaunay2d(points, options);
+  const std::vector<std::array<std::uint32_t, 3>> triangles = result.triangulation.finite_triangles();
+
+  if (!result.duplicates.empty()) {
+    std::cerr << "dtlab: " << result.duplicates.size()
+              << " duplicate point(s), kept as unreferenced vertices (point = first point with the same "
+                 "coordinates, numbered from 1): "
+              << list_items(result.duplicates, result.duplicate_of, 20) << "\n";
+  }
+  if (!result.degenerate_message.empty()) {
+    std::cerr << "dtlab: no triangles: " << result.degenerate_message << "\n";
+  }
+
+  if (!args.output.empty()) {
+    MeshData2 mesh;
+    mesh.vertices = points;
+    mesh.vertex_refs.assign(points.size(), 0);
+    mesh.triangles = triangles;
+    mesh.triangle_refs.assign(triangles.size(), 0);
+    write_mesh2(args.output, mesh);
+  }
+
+  bool verified_ok = true;
+  if (args.verify) {
+    const CheckReport2 report = verify_delaunay2d(points, triangles, result.duplicates);
+    std::cout << to_text(report) << "\n";
+    verified_ok = report.ok;
+  }
+
+  if (args.stats) {
+    const double seconds = result.seconds;
+    const double per_minute = seconds > 0 ? static_cast<double>(triangles.size()) * 60.0 / seconds : 0.0;
+    std::ostringstream json;
+    json << "{\"input\":" << json_string(source) << ",\"dim\":2,\"algo\":" << json_string(args.algorithm)
+         << ",\"points\":" << points.size() << ",\"distinct_points\":" << points.size() - result.duplicates.size()
+         << ",\"duplicates\":" << result.duplicates.size() << ",\"elements\":" << triangles.size()
+         << ",\"seconds\":" << json_number(seconds) << ",\"elements_per_minute\":" << json_number(per_minute)
+         << ",\"peak_rss_mb\":" << json_number(peak_rss_mb())
+         << ",\"predicates\":" << result.predicate_stats.to_json() << "}";
+    std::cout << json.str() << "\n";
+  }
+  return verified_ok ? 0 : 3;
+}
+
+}  // namespace
+
+void add_delaunay(CLI::App& app) {
+  auto args = std::make_shared<DelaunayArgs>();
+  CLI::App* cmd = app.add_subcommand("delaunay", "Delaunay triangulation of a point set");
+  cmd->add_option("input", args->input, "Point file: plain 'x y' lines, Triangle .node, or Medit .mesh");
+  cmd->add_option("-o,--output", args->output, "Write the mesh: OUT.mesh (Medit) or OUT.ele (Triangle .node + .ele)");
+  std::string names;
+  for (const Delaunay2dVariant& v : delaunay2d_variants()) names += (names.empty() ? "" : "|") + std::string(v.name);
+  cmd->add_option("--algo", args->algorithm, "Variant: " + names)->capture_default_str();
+  cmd->add_flag("--stats", args->stats,
+                "Print one JSON object with points, elements, seconds, elements_per_minute, peak_rss_mb, "
+                "algo and predicate stage counts as the last line");
+  cmd->add_flag("--verify", args->verify, "Check the result with exact predicates and print the report");
+  cmd->add_option("--random", args->random, "Triangulate N generated points instead of a file");
+  cmd->add_option("--dim", args->dim, "Dimension of the generated points")->capture_default_str();
+  std::string dists;
+  for (const std::string& d : distribution_names2d()) dists += (dists.empty() ? "" : "|") + d;
+  cmd->add_option("--distribution", args->distribution, "Generated distribution: " + dists)->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the generated points")->capture_default_str();
+  cmd->callback([args] {
+    exit_code() = run_delaunay(*args);
+  });
+}
+
+}  // namespace dtlab::cli
