@@ -24,6 +24,7 @@ struct DelaunayArgs {
   std::string algorithm = "incremental";
   bool stats = false;
   bool verify = false;
+  bool list = false;
   std::size_t random = 0;
   int dim = 2;
   std::string distribution = "uniform";
@@ -41,6 +42,10 @@ std::string list_items(const std::vector<std::uint32_t>& items, const std::vecto
 }
 
 int run_delaunay(const DelaunayArgs& args) {
+  if (args.list) {
+    for (const Delaunay2dVariant& v : delaunay2d_variants()) std::cout << v.name << "\t" << v.description << "\n";
+    return 0;
+  }
   if (args.input.empty() == (args.random == 0)) {
     throw InputError("give either an INPUT file or --random N");
   }
@@ -82,7 +87,8 @@ int run_delaunay(const DelaunayArgs& args) {
   bool verified_ok = true;
   if (args.verify) {
     const CheckReport2 report = verify_delaunay2d(points, triangles, result.duplicates);
-    std::cout << to_text(report) << "\n";
+    std::cout << to_text(report);
+    if (to_text(report).back() != '\n') std::cout << "\n";
     verified_ok = report.ok;
   }
 
@@ -114,6 +120,7 @@ void add_delaunay(CLI::App& app) {
   cmd->add_flag("--stats", args->stats,
                 "Print one JSON object with points, elements, seconds, elements_per_minute, peak_rss_mb, "
                 "algo and predicate stage counts as the last line");
+  cmd->add_flag("--list-algos", args->list, "List the registered variants (name, tab, description) and exit");
   cmd->add_flag("--verify", args->verify, "Check the result with exact predicates and print the report");
   cmd->add_option("--random", args->random, "Triangulate N generated points instead of a file");
   cmd->add_option("--dim", args->dim, "Dimension of the generated points")->capture_default_str();

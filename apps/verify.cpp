@@ -36,7 +36,8 @@ int run_verify(const VerifyArgs& args) {
   }
   const PreparedPoints2 prepared = prepare_points2(points, 0);
   const CheckReport2 report = verify_delaunay2d(points, mesh.triangles, prepared.duplicates);
-  std::cout << (args.json ? to_json(report) : to_text(report)) << "\n";
+  const std::string text = args.json ? to_json(report) : to_text(report);
+  std::cout << text << (text.ends_with('\n') ? "" : "\n");
   return report.ok ? 0 : 3;
 }
 
