@@ -1,12 +1,12 @@
 // Stage 2 of the predicates: the determinant of the rounded coordinate differences, evaluated
-// exactly with floating-point expansions (expansion.hpp), certified against the rounding of the
-// differences themselves. The idea of an exact evaluation on the computed differences plus a
-// bound for their rounding follows Shewchuk 1997 (DCG 18, §4, the "B" estimate and its error).
+// exactly with floating-point expansions (expansion.hpp) or estimated in double-word arithmetic,
+// certified against the rounding of the differences themselves. The idea of an exact evaluation on
+// the computed differences plus a bound for their rounding follows Shewchuk 1997 (DCG 18, §4).
 //
 // Derivation. Let the predicate be D = P(d), P a homogeneous polynomial of degree k in the
 // coordinate differences d (orient2d k = 2, orient3d 3, incircle 4, insphere 5), written as the
 // evaluation tree of semistatic.hpp. Each difference is computed as d~ = fl(p - q) with exact tail
-// t = d - d~ (two_diff). E = P(d~) is evaluated exactly as an expansion.
+// t = d - d~ (two_diff). E = P(d~).
 //  * If every tail is zero, d~ = d and E = D: sign(E) is the exact sign, Zero included. This is
 //    the common case on grids and for nearby coordinates (Sterbenz).
 //  * Otherwise d = d~ (1 + delta) with |delta| <= u = 2^-53 (round to nearest, and no underflow
@@ -18,14 +18,27 @@
 //    doubles (at most 16 roundings of nonnegative values, no underflow) Perm <= Perm_fp (1 + 2^-40),
 //    and (1 + u)^k - 1 <= k u (1 + 2^-48) for k <= 5, so err = k u Perm_fp (1 + 2^-30) bounds
 //    |D - E| even after the two roundings of that product.
-//    E's largest component `top` and the rest satisfy |E| >= |top| - sum|rest| (triangle
-//    inequality, whatever the expansion's shape), with sum|rest| < |top| for a nonoverlapping
-//    expansion; the sum is computed in doubles and padded by (1 + 2^-39) (at most 1152 terms).
-//    If |top| (1 - 2^-50) > (sum|rest| + err)(1 + 2^-50) then |E| > |D - E|, so sign(D) =
-//    sign(E) = sign(top). Otherwise the stage defers (std::nullopt) to the exact stage.
 //  * If Perm is zero, every monomial vanishes at d~, hence at d (d = 0 iff d~ = 0): D = 0.
-// The same test guards the exact case (err = 0), so the stage never relies on the expansion
-// being nonoverlapping for its correctness, only for its success.
+//
+// Evaluating E. Exactly, as an expansion: its largest component `top` and the rest satisfy
+// |E| >= |top| - sum|rest| (triangle inequality), with sum|rest| < |top| for a nonoverlapping
+// expansion; the sum is computed in doubles and padded by (1 + 2^-39) (at most 1152 terms). If
+// |top| (1 - 2^-50) > (sum|rest| + err)(1 + 2^-50) then |E| > |D - E|: sign(D) = sign(top).
+// Expansions are short when the differences have few significant bits (grids: every product is
+// exact), but reach dozens of components for full 53-bit mantissas, where they cost microseconds.
+// So, unless the differences all fit in 26 bits, E is first estimated in double-word arithmetic
+// (hi + lo, Joldes, Muller and Popescu, ACM TOMS 2017: their AccurateDWPlusDW, relative error
+// <= 3u^2, and products whose error, neglected lo*lo term included, is <= 8u^2 |x| |y|). By
+// induction on the tree, a node whose |.|-tree value is V carries an error <= c u^2 V, c growing
+// by at most 8 (products: plus the operands' c) per operation; no path has more than 12
+// operations and c stays below 2^7 (35 for insphere), so |E~ - E| <= eta Perm with eta = 2^-90 a
+// wide margin. It also absorbs underflow in the lo parts (at most 2^-1074 per operation, a few
+// hundred operations) provided Perm >= 2^-900; below that (only for tiny coordinates with long
+// mantissas) the estimate is skipped. The
+// estimate E~ = hi + lo is normalised (|lo| <= u |hi|), so the stage returns sign(hi) when
+// |hi| (1 - 2^-50) > (k u [if rounded] + eta) Perm_fp (1 + 2^-30). When that fails, exact
+// differences fall back to the exact expansion (which decides, Zero included), rounded ones defer
+// (std::nullopt) to the exact stage: the exact E could only win in a sliver of width eta Perm.
 #include <cmath>
 
 #include "kernel/predicates.hpp"
@@ -37,108 +50,80 @@ namespace {
 using expansion::cross_difference;
 using expansion::difference;
 using expansion::Expansion;
+using expansion::fast_two_sum;
 using expansion::product;
 using expansion::scale;
 using expansion::square;
 using expansion::sum;
+using expansion::two_product;
+using expansion::two_sum;
 
 constexpr double kUnitRoundoff = 0x1p-53;
+constexpr double kEstimateError = 0x1p-90;  // eta: the double-word estimate's error / Perm
 
-// Coordinate differences d~ = fl(p - q), remembering whether any of them was rounded.
+// Coordinate differences d~ = fl(p - q), remembering whether any was rounded and whether all fit
+// in 26 significant bits (then every product of two is exact and the expansions stay short).
 class Differences {
  public:
   double operator()(double p, double q) noexcept {
-    double x, tail;
+    double x, tail, hi, lo;
     expansion::two_diff(p, q, x, tail);
+    expansion::split(x, hi, lo);
     rounded_ = rounded_ || tail != 0.0;
+    short_ = short_ && lo == 0.0;
     return x;
   }
   bool rounded() const noexcept { return rounded_; }
+  bool exact_and_short() const noexcept { return !rounded_ && short_; }
 
  private:
   bool rounded_ = false;
+  bool short_ = true;
 };
 
-// The sign of D from E = det; `permanent` computes Perm_fp, only needed when rounded.
-template <int N, class Permanent>
-FilteredSign certify(const Expansion<N>& det, bool rounded, int degree, Permanent permanent) noexcept {
-  if (det.size == 0 && !rounded) return Sign::Zero;
-  double err = 0.0;
-  if (rounded) {
-    const double perm = permanent();
-    if (perm == 0.0) return Sign::Zero;
-    err = degree * kUnitRoundoff * perm * (1.0 + 0x1p-30);
-  }
+// ---- the exact evaluation
+
+// The sign of an exactly evaluated E = D, or nullopt if the expansion were not nonoverlapping.
+template <int N>
+FilteredSign exact_sign(const Expansion<N>& det) noexcept {
+  if (det.size == 0) return Sign::Zero;
   const double top = std::fabs(det.top());
   const double rest = det.rest_magnitude() * (1.0 + 0x1p-39);
-  if (top * (1.0 - 0x1p-50) > (rest + err) * (1.0 + 0x1p-50)) return sign_of(det.top());
+  if (top * (1.0 - 0x1p-50) > rest * (1.0 + 0x1p-50)) return sign_of(det.top());
   return std::nullopt;
 }
 
 // The 3x3 determinant |x0 ., x1 ., x2 .| expanded along its first column, from the exact 2x2
 // minors m12, m02, m01 of the other two columns (rows 1-2, 0-2, 0-1).
-inline Expansion<24> first_column_expansion(double x0, double x1, double x2, const Expansion<4>& m12,
-                                            const Expansion<4>& m02, const Expansion<4>& m01) noexcept {
+Expansion<24> first_column_expansion(double x0, double x1, double x2, const Expansion<4>& m12,
+                                     const Expansion<4>& m02, const Expansion<4>& m01) noexcept {
   return sum(difference(scale(m12, x0), scale(m02, x1)), scale(m01, x2));
 }
 
-}  // namespace
-
-FilteredSign orient2d_adaptive(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
-  Differences diff;
-  const double d1x = diff(b.x, a.x), d1y = diff(b.y, a.y);
-  const double d2x = diff(c.x, a.x), d2y = diff(c.y, a.y);
-  const Expansion<4> det = cross_difference(d1x, d2y, d1y, d2x);
-  return certify(det, diff.rounded(), 2, [&]() noexcept {
-    return std::fabs(d1x * d2y) + std::fabs(d1y * d2x);
-  });
+FilteredSign orient2d_exact_differences(double d1x, double d1y, double d2x, double d2y) noexcept {
+  return exact_sign(cross_difference(d1x, d2y, d1y, d2x));
 }
 
-FilteredSign orient3d_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
-  Differences diff;
-  const double r0x = diff(b.x, a.x), r0y = diff(b.y, a.y), r0z = diff(b.z, a.z);
-  const double r1x = diff(c.x, a.x), r1y = diff(c.y, a.y), r1z = diff(c.z, a.z);
-  const double r2x = diff(d.x, a.x), r2y = diff(d.y, a.y), r2z = diff(d.z, a.z);
-  const Expansion<24> det = first_column_expansion(
-      r0x, r1x, r2x, cross_difference(r1y, r2z, r1z, r2y), cross_difference(r0y, r2z, r0z, r2y),
-      cross_difference(r0y, r1z, r0z, r1y));
-  return certify(det, diff.rounded(), 3, [&]() noexcept {
-    const double p12 = std::fabs(r1y * r2z) + std::fabs(r1z * r2y);
-    const double p02 = std::fabs(r0y * r2z) + std::fabs(r0z * r2y);
-    const double p01 = std::fabs(r0y * r1z) + std::fabs(r0z * r1y);
-    return (std::fabs(r0x) * p12 + std::fabs(r1x) * p02) + std::fabs(r2x) * p01;
-  });
+FilteredSign orient3d_exact_differences(const double (&r)[9]) noexcept {
+  return exact_sign(first_column_expansion(r[0], r[3], r[6], cross_difference(r[4], r[8], r[5], r[7]),
+                                           cross_difference(r[1], r[8], r[2], r[7]),
+                                           cross_difference(r[1], r[5], r[2], r[4])));
 }
 
-FilteredSign incircle_adaptive(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
-  Differences diff;
-  const double ax = diff(a.x, d.x), ay = diff(a.y, d.y);
-  const double bx = diff(b.x, d.x), by = diff(b.y, d.y);
-  const double cx = diff(c.x, d.x), cy = diff(c.y, d.y);
+FilteredSign incircle_exact_differences(const double (&r)[6]) noexcept {
+  const double ax = r[0], ay = r[1], bx = r[2], by = r[3], cx = r[4], cy = r[5];
   const Expansion<4> la = sum(square(ax), square(ay));
   const Expansion<4> lb = sum(square(bx), square(by));
   const Expansion<4> lc = sum(square(cx), square(cy));
   const Expansion<4> mbc = cross_difference(bx, cy, by, cx);
   const Expansion<4> mac = cross_difference(ax, cy, ay, cx);
   const Expansion<4> mab = cross_difference(ax, by, ay, bx);
-  const Expansion<96> det =
-      sum(difference(product(la, mbc), product(lb, mac)), product(lc, mab));
-  return certify(det, diff.rounded(), 4, [&]() noexcept {
-    const double pa = ax * ax + ay * ay, pb = bx * bx + by * by, pc = cx * cx + cy * cy;
-    const double pbc = std::fabs(bx * cy) + std::fabs(by * cx);
-    const double pac = std::fabs(ax * cy) + std::fabs(ay * cx);
-    const double pab = std::fabs(ax * by) + std::fabs(ay * bx);
-    return (pa * pbc + pb * pac) + pc * pab;
-  });
+  return exact_sign(sum(difference(product(la, mbc), product(lb, mac)), product(lc, mab)));
 }
 
-FilteredSign insphere_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
-                               const Vec3& e) noexcept {
-  Differences diff;
-  const double ax = diff(a.x, e.x), ay = diff(a.y, e.y), az = diff(a.z, e.z);
-  const double bx = diff(b.x, e.x), by = diff(b.y, e.y), bz = diff(b.z, e.z);
-  const double cx = diff(c.x, e.x), cy = diff(c.y, e.y), cz = diff(c.z, e.z);
-  const double dx = diff(d.x, e.x), dy = diff(d.y, e.y), dz = diff(d.z, e.z);
+FilteredSign insphere_exact_differences(const double (&r)[12]) noexcept {
+  const double ax = r[0], ay = r[1], az = r[2], bx = r[3], by = r[4], bz = r[5];
+  const double cx = r[6], cy = r[7], cz = r[8], dx = r[9], dy = r[10], dz = r[11];
   // 2x2 minors of the (y, z) columns, shared by the four 3x3 minors.
   const Expansion<4> ab = cross_difference(ay, bz, az, by), ac = cross_difference(ay, cz, az, cy);
   const Expansion<4> ad = cross_difference(ay, dz, az, dy), bc = cross_difference(by, cz, bz, cy);
@@ -151,23 +136,170 @@ FilteredSign insphere_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, cons
   const Expansion<6> lb = sum(sum(square(bx), square(by)), square(bz));
   const Expansion<6> lc = sum(sum(square(cx), square(cy)), square(cz));
   const Expansion<6> ld = sum(sum(square(dx), square(dy)), square(dz));
-  const Expansion<1152> det = difference(
-      sum(difference(product(la, mbcd), product(lb, macd)), product(lc, mabd)), product(ld, mabc));
-  return certify(det, diff.rounded(), 5, [&]() noexcept {
-    const double pab = std::fabs(ay * bz) + std::fabs(az * by);
-    const double pac = std::fabs(ay * cz) + std::fabs(az * cy);
-    const double pad = std::fabs(ay * dz) + std::fabs(az * dy);
-    const double pbc = std::fabs(by * cz) + std::fabs(bz * cy);
-    const double pbd = std::fabs(by * dz) + std::fabs(bz * dy);
-    const double pcd = std::fabs(cy * dz) + std::fabs(cz * dy);
-    const double pbcd = (std::fabs(bx) * pcd + std::fabs(cx) * pbd) + std::fabs(dx) * pbc;
-    const double pacd = (std::fabs(ax) * pcd + std::fabs(cx) * pad) + std::fabs(dx) * pac;
-    const double pabd = (std::fabs(ax) * pbd + std::fabs(bx) * pad) + std::fabs(dx) * pab;
-    const double pabc = (std::fabs(ax) * pbc + std::fabs(bx) * pac) + std::fabs(cx) * pab;
-    const double pa = (ax * ax + ay * ay) + az * az, pb = (bx * bx + by * by) + bz * bz;
-    const double pc = (cx * cx + cy * cy) + cz * cz, pd = (dx * dx + dy * dy) + dz * dz;
-    return ((pa * pbcd + pb * pacd) + pc * pabd) + pd * pabc;
-  });
+  return exact_sign(difference(
+      sum(difference(product(la, mbcd), product(lb, macd)), product(lc, mabd)), product(ld, mabc)));
+}
+
+// ---- the double-word estimate
+
+struct DoubleWord {
+  double hi = 0.0, lo = 0.0;
+};
+
+DoubleWord exact_product(double a, double b) noexcept {
+  DoubleWord r;
+  two_product(a, b, r.hi, r.lo);
+  return r;
+}
+
+// AccurateDWPlusDW (Joldes, Muller, Popescu 2017, Algorithm 6).
+DoubleWord operator+(const DoubleWord& x, const DoubleWord& y) noexcept {
+  double sh, sl, th, tl, vh, vl;
+  two_sum(x.hi, y.hi, sh, sl);
+  two_sum(x.lo, y.lo, th, tl);
+  fast_two_sum(sh, sl + th, vh, vl);
+  DoubleWord r;
+  fast_two_sum(vh, vl + tl, r.hi, r.lo);
+  return r;
+}
+
+DoubleWord operator-(const DoubleWord& x) noexcept { return {-x.hi, -x.lo}; }
+DoubleWord operator-(const DoubleWord& x, const DoubleWord& y) noexcept { return x + -y; }
+
+// Double-word times double word; x.lo * y.lo is dropped.
+DoubleWord operator*(const DoubleWord& x, const DoubleWord& y) noexcept {
+  double ch, cl;
+  two_product(x.hi, y.hi, ch, cl);
+  DoubleWord r;
+  fast_two_sum(ch, cl + (x.hi * y.lo + x.lo * y.hi), r.hi, r.lo);
+  return r;
+}
+
+DoubleWord operator*(const DoubleWord& x, double b) noexcept {
+  double ch, cl;
+  two_product(x.hi, b, ch, cl);
+  DoubleWord r;
+  fast_two_sum(ch, cl + x.lo * b, r.hi, r.lo);
+  return r;
+}
+
+DoubleWord cross_estimate(double a, double b, double c, double d) noexcept {
+  return exact_product(a, b) - exact_product(c, d);
+}
+
+// sign(D) from the estimate, or nullopt; see the derivation at the top.
+FilteredSign certify_estimate(const DoubleWord& det, bool rounded, int degree, double perm) noexcept {
+  if (perm == 0.0) return Sign::Zero;
+  if (perm < 0x1p-900) return std::nullopt;  // underflow could exceed eta Perm
+  const double coefficient = (rounded ? degree * kUnitRoundoff : 0.0) + kEstimateError;
+  if (std::fabs(det.hi) * (1.0 - 0x1p-50) > coefficient * perm * (1.0 + 0x1p-30)) return sign_of(det.hi);
+  return std::nullopt;
+}
+
+// Stage 2 from the differences: the exact expansion straight away when it is cheap, else the
+// estimate first.
+template <class Exact, class Estimate>
+FilteredSign decide(const Differences& diff, Exact exact, Estimate estimate) noexcept {
+  if (diff.exact_and_short()) return exact();
+  if (const FilteredSign s = estimate()) return s;
+  if (diff.rounded()) return std::nullopt;
+  return exact();
+}
+
+}  // namespace
+
+FilteredSign orient2d_adaptive(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
+  Differences diff;
+  const double d1x = diff(b.x, a.x), d1y = diff(b.y, a.y);
+  const double d2x = diff(c.x, a.x), d2y = diff(c.y, a.y);
+  return decide(
+      diff, [&]() noexcept { return orient2d_exact_differences(d1x, d1y, d2x, d2y); },
+      [&]() noexcept {
+        const double perm = std::fabs(d1x * d2y) + std::fabs(d1y * d2x);
+        return certify_estimate(cross_estimate(d1x, d2y, d1y, d2x), diff.rounded(), 2, perm);
+      });
+}
+
+FilteredSign orient3d_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  Differences diff;
+  const double r[9] = {diff(b.x, a.x), diff(b.y, a.y), diff(b.z, a.z),  // rows b - a,
+                       diff(c.x, a.x), diff(c.y, a.y), diff(c.z, a.z),  // c - a,
+                       diff(d.x, a.x), diff(d.y, a.y), diff(d.z, a.z)}; // d - a
+  return decide(
+      diff, [&]() noexcept { return orient3d_exact_differences(r); },
+      [&]() noexcept {
+        const DoubleWord m12 = cross_estimate(r[4], r[8], r[5], r[7]);
+        const DoubleWord m02 = cross_estimate(r[1], r[8], r[2], r[7]);
+        const DoubleWord m01 = cross_estimate(r[1], r[5], r[2], r[4]);
+        const DoubleWord det = (m12 * r[0] - m02 * r[3]) + m01 * r[6];
+        const double p12 = std::fabs(r[4] * r[8]) + std::fabs(r[5] * r[7]);
+        const double p02 = std::fabs(r[1] * r[8]) + std::fabs(r[2] * r[7]);
+        const double p01 = std::fabs(r[1] * r[5]) + std::fabs(r[2] * r[4]);
+        const double perm = (std::fabs(r[0]) * p12 + std::fabs(r[3]) * p02) + std::fabs(r[6]) * p01;
+        return certify_estimate(det, diff.rounded(), 3, perm);
+      });
+}
+
+FilteredSign incircle_adaptive(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
+  Differences diff;
+  const double r[6] = {diff(a.x, d.x), diff(a.y, d.y), diff(b.x, d.x),
+                       diff(b.y, d.y), diff(c.x, d.x), diff(c.y, d.y)};
+  return decide(
+      diff, [&]() noexcept { return incircle_exact_differences(r); },
+      [&]() noexcept {
+        const double ax = r[0], ay = r[1], bx = r[2], by = r[3], cx = r[4], cy = r[5];
+        const DoubleWord la = exact_product(ax, ax) + exact_product(ay, ay);
+        const DoubleWord lb = exact_product(bx, bx) + exact_product(by, by);
+        const DoubleWord lc = exact_product(cx, cx) + exact_product(cy, cy);
+        const DoubleWord det = (la * cross_estimate(bx, cy, by, cx) - lb * cross_estimate(ax, cy, ay, cx)) +
+                               lc * cross_estimate(ax, by, ay, bx);
+        const double pa = ax * ax + ay * ay, pb = bx * bx + by * by, pc = cx * cx + cy * cy;
+        const double pbc = std::fabs(bx * cy) + std::fabs(by * cx);
+        const double pac = std::fabs(ax * cy) + std::fabs(ay * cx);
+        const double pab = std::fabs(ax * by) + std::fabs(ay * bx);
+        return certify_estimate(det, diff.rounded(), 4, (pa * pbc + pb * pac) + pc * pab);
+      });
+}
+
+FilteredSign insphere_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                               const Vec3& e) noexcept {
+  Differences diff;
+  const double r[12] = {diff(a.x, e.x), diff(a.y, e.y), diff(a.z, e.z), diff(b.x, e.x),
+                        diff(b.y, e.y), diff(b.z, e.z), diff(c.x, e.x), diff(c.y, e.y),
+                        diff(c.z, e.z), diff(d.x, e.x), diff(d.y, e.y), diff(d.z, e.z)};
+  return decide(
+      diff, [&]() noexcept { return insphere_exact_differences(r); },
+      [&]() noexcept {
+        const double ax = r[0], ay = r[1], az = r[2], bx = r[3], by = r[4], bz = r[5];
+        const double cx = r[6], cy = r[7], cz = r[8], dx = r[9], dy = r[10], dz = r[11];
+        const DoubleWord ab = cross_estimate(ay, bz, az, by), ac = cross_estimate(ay, cz, az, cy);
+        const DoubleWord ad = cross_estimate(ay, dz, az, dy), bc = cross_estimate(by, cz, bz, cy);
+        const DoubleWord bd = cross_estimate(by, dz, bz, dy), cd = cross_estimate(cy, dz, cz, dy);
+        const DoubleWord mbcd = (cd * bx - bd * cx) + bc * dx;
+        const DoubleWord macd = (cd * ax - ad * cx) + ac * dx;
+        const DoubleWord mabd = (bd * ax - ad * bx) + ab * dx;
+        const DoubleWord mabc = (bc * ax - ac * bx) + ab * cx;
+        auto lift = [](double x, double y, double z) noexcept {
+          return (exact_product(x, x) + exact_product(y, y)) + exact_product(z, z);
+        };
+        const DoubleWord det = ((lift(ax, ay, az) * mbcd - lift(bx, by, bz) * macd) +
+                                lift(cx, cy, cz) * mabd) -
+                               lift(dx, dy, dz) * mabc;
+        const double pab = std::fabs(ay * bz) + std::fabs(az * by);
+        const double pac = std::fabs(ay * cz) + std::fabs(az * cy);
+        const double pad = std::fabs(ay * dz) + std::fabs(az * dy);
+        const double pbc = std::fabs(by * cz) + std::fabs(bz * cy);
+        const double pbd = std::fabs(by * dz) + std::fabs(bz * dy);
+        const double pcd = std::fabs(cy * dz) + std::fabs(cz * dy);
+        const double pbcd = (std::fabs(bx) * pcd + std::fabs(cx) * pbd) + std::fabs(dx) * pbc;
+        const double pacd = (std::fabs(ax) * pcd + std::fabs(cx) * pad) + std::fabs(dx) * pac;
+        const double pabd = (std::fabs(ax) * pbd + std::fabs(bx) * pad) + std::fabs(dx) * pab;
+        const double pabc = (std::fabs(ax) * pbc + std::fabs(bx) * pac) + std::fabs(cx) * pab;
+        const double pa = (ax * ax + ay * ay) + az * az, pb = (bx * bx + by * by) + bz * bz;
+        const double pc = (cx * cx + cy * cy) + cz * cz, pd = (dx * dx + dy * dy) + dz * dz;
+        const double perm = ((pa * pbcd + pb * pacd) + pc * pabd) + pd * pabc;
+        return certify_estimate(det, diff.rounded(), 5, perm);
+      });
 }
 
 }  // namespace dtlab::stage

@@ -214,6 +214,32 @@ TEST(Stage2, DecidesExactZeroOnGridPoints) {
   EXPECT_EQ(stage::insphere_adaptive(o, x, y, z, xyz), Sign::Zero);
 }
 
+// Exact zeros whose differences are exact but carry ~50 significant bits (points in [1, 2)):
+// the expansions are long, the double-word estimate cannot decide, the exact expansion must.
+TEST(Stage2, DecidesExactZeroWithLongMantissas) {
+  // Multiples of 2^-51 with about 50 significant bits, so that p + 2s etc. are exact in [1, 2).
+  const double s = 0x1.3c5a7e91d2b40p-3, t = 0x1.9e2d4b7c1a3f0p-3, w = 0x1.7a3b9c2d4e5f0p-4;
+  const double p = 1.0, q = 1.0 + 0x1.5p-5, r = 1.0 + 0x1.9p-4;
+  const Vec2 a{p, q}, b{p + s, q + t}, c{p + 2 * s, q + 2 * t};
+  ASSERT_EQ(ref_orient2d(a, b, c), Sign::Zero);
+  EXPECT_EQ(stage::orient2d_adaptive(a, b, c), Sign::Zero);
+  // A rectangle is cocircular; a box's vertices are cospherical; a box face is coplanar.
+  const Vec2 r0{p, q}, r1{p + s, q}, r2{p + s, q + t}, r3{p, q + t};
+  ASSERT_EQ(ref_incircle(r0, r1, r2, r3), Sign::Zero);
+  EXPECT_FALSE(stage::incircle_semistatic(r0, r1, r2, r3));
+  EXPECT_EQ(stage::incircle_adaptive(r0, r1, r2, r3), Sign::Zero);
+  const Vec3 o{p, q, r}, x{p + s, q, r}, y{p, q + t, r}, z{p, q, r + w}, xy{p + s, q + t, r};
+  const Vec3 xyz{p + s, q + t, r + w};
+  EXPECT_EQ(stage::orient3d_adaptive(o, x, y, xy), Sign::Zero);
+  ASSERT_EQ(ref_insphere(o, x, y, z, xyz), Sign::Zero);
+  EXPECT_FALSE(stage::insphere_semistatic(o, x, y, z, xyz));
+  EXPECT_EQ(stage::insphere_adaptive(o, x, y, z, xyz), Sign::Zero);
+  // One ulp off the sphere: the estimate decides, with the exact sign.
+  const Vec3 off{p + s, q + t, std::nextafter(r + w, 2.0)};
+  EXPECT_EQ(stage::insphere_adaptive(o, x, y, z, off), ref_insphere(o, x, y, z, off));
+  EXPECT_TRUE(stage::insphere_adaptive(o, x, y, z, off));
+}
+
 // Nonzero but tiny determinants with exact differences: stage 2 returns the exact sign.
 TEST(Stage2, DecidesNearlyDegenerateWithExactDifferences) {
   const double big = 0x1p30;
@@ -398,6 +424,12 @@ TEST(AllStages, AgreeWithExactSignOnNearDegenerate2d) {
       const double rr = std::ldexp(1.0, in.integer(40, 60));
       const Vec2 p{2 * rr, 0}, q{rr, rr}, w{rr, -rr}, d{in.uniform(-1, 1) * 0x1p-12, 0};
       circle.add(judge(p, q, w, d), describe({p, q, w, d}));
+    } else if (trial % 8 == 3) {  // rectangles in [1, 2)^2: exact zeros, long mantissas
+      const double x0 = in.uniform(1, 1.5), y0 = in.uniform(1, 1.5);
+      const double w = in.uniform(0, 0.5), h = in.uniform(0, 0.5);
+      const Vec2 a{x0, y0}, b{x0 + w, y0}, c{x0 + w, y0 + h}, d{x0, y0 + h};
+      orient.add(judge(a, b, Vec2{x0 + h, y0}), describe({a, b}));
+      circle.add(judge(a, b, c, d), describe({a, b, c, d}));
     } else {  // uniform random points
       Vec2 q[4];
       for (Vec2& p : q) p = pt(in.uniform(-1, 1), in.uniform(-1, 1));
@@ -446,6 +478,13 @@ TEST(AllStages, AgreeWithExactSignOnNearDegenerate3d) {
       orient.add(judge(a, b, c, d), describe({a, b, c, d}));
       const Vec3 p{2 * rr, 0, 0}, q{rr, rr, 0}, w{rr, -rr, 0}, x{rr, 0, rr};
       sphere.add(judge(p, q, w, x, a), describe({p, q, w, x, a}));
+    } else if (trial % 8 == 3) {  // boxes in [1, 2)^3: exact zeros, long mantissas
+      const double x0 = in.uniform(1, 1.5), y0 = in.uniform(1, 1.5), z0 = in.uniform(1, 1.5);
+      const double w = in.uniform(0, 0.5), h = in.uniform(0, 0.5), l = in.uniform(0, 0.5);
+      const Vec3 a{x0, y0, z0}, b{x0 + w, y0, z0}, c{x0, y0 + h, z0}, d{x0, y0, z0 + l};
+      const Vec3 e{x0 + w, y0 + h, z0 + l}, f{x0 + w, y0 + h, z0};
+      orient.add(judge(a, b, c, f), describe({a, b, c, f}));
+      sphere.add(judge(a, b, c, d, e), describe({a, b, c, d, e}));
     } else {
       Vec3 q[5];
       for (Vec3& p : q) p = random_point();
@@ -490,6 +529,18 @@ TEST(AllStages, ExtremeMagnitudes) {
     t.add(judge(p, q, r, Vec2{inside.x, inside.y}), "incircle inside");
     t.add(judge(p, q, r), "orient2d");
     EXPECT_EQ(incircle(p, q, r, s), Sign::Zero);
+  }
+  // Tiny coordinates whose differences carry 29 significant bits (not short): the double-word
+  // estimate or its underflow guard, then the exact expansion.
+  const double longer = 0x1.3c5a7e9p-166;  // a multiple of 2^-194
+  Tally tiny_long;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = tiny(1, 2, 2), b = tiny(3, 2, 2), c = tiny(2, 1, 2), d = tiny(2, 2, 1);
+    const Vec3 e{lo + 2 * step + k * longer, lo + 2 * step, lo + (2 + k) * step};
+    tiny_long.add(judge(a, b, c, d, e), "tiny long insphere");
+    tiny_long.add(judge(a, b, c, e), "tiny long orient3d");
+    tiny_long.add(judge(Vec2{a.x, a.y}, Vec2{b.x, b.y}, Vec2{c.x, c.y}, Vec2{e.x, e.y}), "tiny long incircle");
+    tiny_long.add(judge(Vec2{a.x, a.y}, Vec2{b.x, b.y}, Vec2{e.x, e.y}), "tiny long orient2d");
   }
   // Both ends in one call: the differences round, only the exact stage may decide.
   const double top = 0x1p142;
