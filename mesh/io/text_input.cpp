@@ -1,0 +1,132 @@
+#include "mesh/io/text_input.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "kernel/coordinate_range.hpp"
+#include "kernel/error.hpp"
+
+namespace dtlab::io {
+
+namespace {
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// Lower-case spellings of NaN and infinity, so that they get their own message.
+bool names_non_finite(std::string_view t) {
+  if (!t.empty() && (t.front() == '+' || t.front() == '-')) t.remove_prefix(1);
+  std::string lower;
+  for (char c : t.substr(0, 8)) lower += static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return lower.starts_with("nan") || lower.starts_with("inf");
+}
+}  // namespace
+
+std::string quote(std::string_view token) {
+  constexpr std::size_t kMax = 40;
+  std::string out = "'";
+  for (std::size_t i = 0; i < token.size() && i < kMax; ++i) {
+    const auto c = static_cast<unsigned char>(token[i]);
+    if (c >= 0x20 && c < 0x7f && c != '\'') {
+      out += static_cast<char>(c);
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    }
+  }
+  if (token.size() > kMax) out += "...";
+  return out + "'";
+}
+
+LineTokenizer::LineTokenizer(std::istream& in, std::string file_name)
+    : in_(in), file_(std::move(file_name)) {}
+
+bool LineTokenizer::next_line() {
+  tokens_.clear();
+  while (std::getline(in_, text_)) {
+    ++line_;
+    std::string_view rest(text_);
+    if (const auto hash = rest.find('#'); hash != std::string_view::npos) rest = rest.substr(0, hash);
+    std::size_t i = 0;
+    while (i < rest.size()) {
+      while (i < rest.size() && is_blank(rest[i])) ++i;
+      const std::size_t start = i;
+      while (i < rest.size() && !is_blank(rest[i])) ++i;
+      if (i > start) tokens_.push_back(rest.substr(start, i - start));
+    }
+    if (!tokens_.empty()) return true;
+  }
+  if (in_.bad()) fail("read error");
+  return false;
+}
+
+void LineTokenizer::fail(const std::string& reason) const { throw ParseError(file_, line_, reason); }
+
+void LineTokenizer::fail_at(std::uint64_t line, const std::string& reason) const {
+  throw ParseError(file_, line, reason);
+}
+
+double LineTokenizer::real(std::size_t k, std::string_view what) const {
+  if (k >= tokens_.size()) fail("missing " + std::string(what));
+  std::string_view t = tokens_[k];
+  // from_chars refuses a leading '+', which C and every mesh writer accept.
+  std::string_view digits = t;
+  if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+') {
+    digits.remove_prefix(1);
+  }
+  if (names_non_finite(digits)) fail(std::string(what) + " is not finite: " + quote(t));
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (ec == std::errc::result_out_of_range) {
+    fail(std::string(what) + " " + quote(t) + " is out of the range of a double");
+  }
+  if (ec != std::errc() || end != digits.data() + digits.size()) {
+    fail(std::string(what) + " is not a number: " + quote(t));
+  }
+  if (!std::isfinite(v)) fail(std::string(what) + " is not finite: " + quote(t));
+  return v;
+}
+
+std::int64_t LineTokenizer::integer(std::size_t k, std::string_view what) const {
+  if (k >= tokens_.size()) fail("missing " + std::string(what));
+  std::string_view t = tokens_[k];
+  std::string_view digits = t;
+  if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+') {
+    digits.remove_prefix(1);
+  }
+  std::int64_t v = 0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (ec == std::errc::result_out_of_range) fail(std::string(what) + " " + quote(t) + " is too large");
+  if (ec != std::errc() || end != digits.data() + digits.size()) {
+    fail(std::string(what) + " is not an integer: " + quote(t));
+  }
+  return v;
+}
+
+std::uint64_t LineTokenizer::count(std::size_t k, std::string_view what) const {
+  const std::int64_t v = integer(k, what);
+  if (v < 0) fail(std::string(what) + " is negative: " + quote(tokens_[k]));
+  if (static_cast<std::uint64_t>(v) > std::numeric_limits<std::uint32_t>::max()) {
+    fail(std::string(what) + " " + quote(tokens_[k]) + " exceeds the 32-bit index range");
+  }
+  return static_cast<std::uint64_t>(v);
+}
+
+void LineTokenizer::expect_tokens(std::size_t n, std::string_view what) const {
+  if (tokens_.size() < n) {
+    fail(std::string(what) + ": expected " + std::to_string(n) + " fields, found " +
+         std::to_string(tokens_.size()));
+  }
+  if (tokens_.size() > n) {
+    fail(std::string(what) + ": trailing text " + quote(tokens_[n]) + " after " + std::to_string(n) +
+         " fields");
+  }
+}
+
+void check_coordinate(const LineTokenizer& in, double v, std::string_view what) {
+  if (coordinate_in_range(v)) return;
+  in.fail(std::string(what) + " is " + coordinate_problem(v));
+}
+
+}  // namespace dtlab::io

@@ -1,0 +1,57 @@
+// Line-oriented tokenizer shared by the ASCII mesh readers: comments, blank lines, strict
+// number parsing, and ParseError messages that name the file and the 1-based line.
+//
+// A line is split on blanks (space, tab, CR, VT, FF); '#' starts a comment that runs to the end
+// of the line. Numbers are parsed with std::from_chars, so the accepted syntax does not depend
+// on the locale; a token must be a number in full (no trailing characters), and NaN, infinity
+// or a value that overflows a double are refused.
+#pragma once
+
+#include <cstdint>
+#include <istream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace dtlab::io {
+
+class LineTokenizer {
+ public:
+  LineTokenizer(std::istream& in, std::string file_name);
+
+  // Moves to the next line that holds a token; false at the end of the input.
+  bool next_line();
+
+  std::uint64_t line() const noexcept { return line_; }
+  const std::string& file_name() const noexcept { return file_; }
+  std::size_t size() const noexcept { return tokens_.size(); }
+  std::string_view token(std::size_t k) const { return tokens_.at(k); }
+
+  // Number parsing of token k of the current line; `what` names the field in the message.
+  double real(std::size_t k, std::string_view what) const;
+  std::int64_t integer(std::size_t k, std::string_view what) const;
+  // A non-negative count that fits an index of type std::uint32_t.
+  std::uint64_t count(std::size_t k, std::string_view what) const;
+
+  // Throws unless the current line has exactly n tokens ("missing ..." or "trailing ...").
+  void expect_tokens(std::size_t n, std::string_view what) const;
+
+  // Throws ParseError at the current line (or at `line`).
+  [[noreturn]] void fail(const std::string& reason) const;
+  [[noreturn]] void fail_at(std::uint64_t line, const std::string& reason) const;
+
+ private:
+  std::istream& in_;
+  std::string file_;
+  std::uint64_t line_ = 0;
+  std::string text_;
+  std::vector<std::string_view> tokens_;
+};
+
+// A token quoted for an error message: non-printable bytes escaped, long tokens shortened.
+std::string quote(std::string_view token);
+
+// Checks a coordinate read at the tokenizer's current line against coordinate_range.hpp.
+void check_coordinate(const LineTokenizer& in, double v, std::string_view what);
+
+}  // namespace dtlab::io
