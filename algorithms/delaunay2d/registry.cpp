@@ -6,6 +6,7 @@ namespace dtlab {
 
 // Each variant's run function lives in its own file.
 void delaunay2d_incremental(const PreparedPoints2& input, Triangulation2& triangulation);
+void delaunay2d_divide_conquer(const PreparedPoints2& input, Triangulation2& triangulation);
 
 namespace {
 
@@ -14,6 +15,10 @@ constexpr std::array kVariants = {
                       "reduced incremental method (Delaunay kernel, book §2.4-2.6): BRIO/Hilbert order, "
                       "visibility walk from the last insertion, cavity grown by adjacency",
                       &delaunay2d_incremental},
+    Delaunay2dVariant{"divide-conquer",
+                      "divide and conquer (Lee & Schachter; Guibas & Stolfi merge by lower tangent and rising "
+                      "bubble; Dwyer's alternating cuts) on a flat quad-edge structure",
+                      &delaunay2d_divide_conquer},
 };
 
 }  // namespace
