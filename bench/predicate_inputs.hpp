@@ -35,7 +35,7 @@ inline const char* to_string(Dist d) {
 
 // Cases per distribution, cycled. Many on purpose: a current branch predictor memorises the
 // outcomes of a few thousand repeated cases (measured here: with 4096 cases, a predicate that
-// branches on the sign of random determinants looked 7x cheaper than with 65536), and a
+// branches on the sign of random determinants looked 8x cheaper than with 65536), and a
 // predicate's sign in a triangulation does not repeat with a short period. The largest array
 // (insphere, 7.5 MiB) streams sequentially, which the hardware prefetcher keeps up with.
 inline constexpr std::size_t kCases = std::size_t{1} << 16;
