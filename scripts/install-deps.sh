@@ -10,6 +10,7 @@ packages=(
   libbenchmark-dev libgtest-dev libgmock-dev librapidcheck-dev
   libtbb-dev libeigen3-dev libcli11-dev
   tetgen                               # peer in bench/ (Debian binary)
+  libcgal-demo                         # real scanned point clouds and surfaces for tests
 )
 missing=()
 for p in "${packages[@]}"; do
