@@ -66,17 +66,32 @@ struct EdgeTable {
   std::vector<HalfEdge> half;
   std::vector<std::size_t> group_begin;  // group g is half[group_begin[g] .. group_begin[g+1])
 
+  // Counting sort on the smaller end, then a small sort within each bucket: linear in the
+  // number of half-edges plus the buckets' (vertex degrees') sorting.
   EdgeTable(std::span<const TriangleIds> triangles, std::size_t n) {
+    std::vector<std::size_t> bucket(n + 1, 0);
+    for (const TriangleIds& t : triangles) {
+      if (!ids_valid(t, n)) continue;
+      for (int k = 0; k < 3; ++k) ++bucket[std::min(t[k], t[(k + 1) % 3]) + 1];
+    }
+    for (std::size_t v = 0; v < n; ++v) bucket[v + 1] += bucket[v];
+    half.resize(bucket[n]);
+    std::vector<std::size_t> fill(bucket.begin(), bucket.end() - 1);
     for (std::size_t t = 0; t < triangles.size(); ++t) {
       if (!ids_valid(triangles[t], n)) continue;
       for (std::uint8_t k = 0; k < 3; ++k) {
         const std::uint32_t a = triangles[t][k], b = triangles[t][(k + 1) % 3];
-        half.push_back({std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(t), k});
+        half[fill[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(t), k};
       }
     }
-    std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
-      return std::tie(x.lo, x.hi, x.tri, x.k) < std::tie(y.lo, y.hi, y.tri, y.k);
-    });
+    const auto less = [](const HalfEdge& x, const HalfEdge& y) {
+      return std::tie(x.hi, x.tri, x.k) < std::tie(y.hi, y.tri, y.k);
+    };
+    for (std::size_t v = 0; v < n; ++v) {
+      std::sort(half.begin() + static_cast<std::ptrdiff_t>(bucket[v]),
+                half.begin() + static_cast<std::ptrdiff_t>(bucket[v + 1]), less);
+    }
+    group_begin.reserve(half.size() / 2 + 2);
     for (std::size_t i = 0; i < half.size(); ++i) {
       if (i == 0 || half[i].lo != half[i - 1].lo || half[i].hi != half[i - 1].hi) group_begin.push_back(i);
     }
