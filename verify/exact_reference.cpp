@@ -23,18 +23,16 @@ constexpr int kMaxOrder = 5;
 class Matrix {
  public:
   explicit Matrix(int n) : n_(n) {
-    for (auto& row : m_)
-      for (auto& x : row) mpq_init(x);
+    DTLAB_ASSERT(n >= 1 && n <= kMaxOrder);
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j) mpq_init(m_[i][j]);
   }
   ~Matrix() {
-    for (auto& row : m_)
-      for (auto& x : row) mpq_clear(x);
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j) mpq_clear(m_[i][j]);
   }
   Matrix(const Matrix&) = delete;
   Matrix& operator=(const Matrix&) = delete;
-
-  int order() const { return n_; }
-  mpq_t& at(int i, int j) { return m_[i][j]; }
 
   void set(int i, int j, double v) {
     if (!std::isfinite(v))
@@ -97,31 +95,23 @@ class Matrix {
 double coord(const Vec2& p, int k) { return k == 0 ? p.x : p.y; }
 double coord(const Vec3& p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
 
-// The homogeneous matrix of `points` (dim + 1 + lifted columns), with row `skip_row` and column
-// `skip_col` left out (-1: none): rows (p, 1) or (p, |p|^2, 1).
+// The sign of the homogeneous determinant of `points`: rows (p, 1), or (p, |p|^2, 1) if lifted.
+template <class P>
+Sign homogeneous_sign(std::span<const P> points, int dim, bool lifted) {
+  const int n = dim + (lifted ? 2 : 1);
+  DTLAB_ASSERT(static_cast<int>(points.size()) == n);
+  Matrix m(n);
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < dim; ++k) m.set(i, k, coord(points[static_cast<std::size_t>(i)], k));
+    if (lifted) m.set_lift(i, dim, dim);
+    m.set_one(i, n - 1);
+  }
+  return m.determinant_sign();
+}
+
 template <class P, std::size_t N>
-Sign homogeneous_sign(const std::array<P, N>& points, int dim, bool lifted, int skip_row = -1,
-                      int skip_col = -1) {
-  const int cols = dim + (lifted ? 2 : 1);
-  const int n = cols - (skip_col >= 0 ? 1 : 0);
-  Matrix full(cols);  // built whole, then copied without the skipped row/column
-  for (int i = 0; i < static_cast<int>(N); ++i) {
-    for (int k = 0; k < dim; ++k) full.set(i, k, coord(points[i], k));
-    if (lifted) full.set_lift(i, dim, dim);
-    full.set_one(i, cols - 1);
-  }
-  if (skip_col < 0) return full.determinant_sign();
-  Matrix minor(n);
-  for (int i = 0, mi = 0; i < static_cast<int>(N); ++i) {
-    if (i == skip_row) continue;
-    for (int j = 0, mj = 0; j < cols; ++j) {
-      if (j == skip_col) continue;
-      mpq_set(minor.at(mi, mj), full.at(i, j));
-      ++mj;
-    }
-    ++mi;
-  }
-  return minor.determinant_sign();
+Sign homogeneous_sign(const std::array<P, N>& points, int dim, bool lifted) {
+  return homogeneous_sign(std::span<const P>(points), dim, lifted);
 }
 
 Sign times(int s, Sign v) { return s > 0 ? v : -v; }
@@ -147,8 +137,12 @@ Sign perturbed_sign(const std::array<P, N>& points, int dim, int sign) {
   const std::array<int, N> order = rank_order(points);
   if (const Sign s = homogeneous_sign(points, dim, true); s != Sign::Zero) return times(sign, s);
   for (const int row : order) {
-    // Cofactor (row, dim) = (-1)^(row + dim) * minor(row, dim).
-    const Sign minor = homogeneous_sign(points, dim, true, row, dim);
+    // Cofactor (row, dim) = (-1)^(row + dim) * minor(row, dim); without the lifted column and
+    // the row, the minor is the (p, 1) determinant of the other points.
+    std::array<P, N - 1> others;
+    for (int i = 0, k = 0; i < static_cast<int>(N); ++i)
+      if (i != row) others[static_cast<std::size_t>(k++)] = points[static_cast<std::size_t>(i)];
+    const Sign minor = homogeneous_sign(others, dim, false);
     if (minor != Sign::Zero) return times(sign * ((row + dim) % 2 == 0 ? 1 : -1), minor);
   }
   return Sign::Zero;

@@ -12,6 +12,7 @@
 #include <numeric>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "kernel/predicates.hpp"
@@ -33,20 +34,18 @@ namespace stage = dtlab::stage;
 
 // --- the four predicates, behind one interface -------------------------------------------------
 
-#define DTLAB_CALL(f) std::apply([](const auto&... q) { return f(q...); }, p)
-
 struct Orient2d {
   using Point = Vec2;
   static constexpr std::size_t kArity = 3;
   static constexpr Predicate kId = Predicate::Orient2d;
   static constexpr gen::Shape kShape = gen::Shape::Flat;
   using Tuple = std::array<Point, kArity>;
-  static Sign filtered(const Tuple& p) { return DTLAB_CALL(dtlab::orient2d); }
-  static Sign uncounted(const Tuple& p) { return DTLAB_CALL(dtlab::uncounted::orient2d); }
-  static FilteredSign semistatic(const Tuple& p) { return DTLAB_CALL(stage::orient2d_semistatic); }
-  static FilteredSign adaptive(const Tuple& p) { return DTLAB_CALL(stage::orient2d_adaptive); }
-  static Sign exact(const Tuple& p) { return DTLAB_CALL(stage::orient2d_exact); }
-  static Sign reference(const Tuple& p) { return DTLAB_CALL(ref::orient2d); }
+  static Sign filtered(const Tuple& p) { return std::apply(dtlab::orient2d, p); }
+  static Sign uncounted(const Tuple& p) { return std::apply(dtlab::uncounted::orient2d, p); }
+  static FilteredSign semistatic(const Tuple& p) { return std::apply(stage::orient2d_semistatic, p); }
+  static FilteredSign adaptive(const Tuple& p) { return std::apply(stage::orient2d_adaptive, p); }
+  static Sign exact(const Tuple& p) { return std::apply(stage::orient2d_exact, p); }
+  static Sign reference(const Tuple& p) { return std::apply(ref::orient2d, p); }
 };
 
 struct Incircle {
@@ -55,14 +54,14 @@ struct Incircle {
   static constexpr Predicate kId = Predicate::Incircle;
   static constexpr gen::Shape kShape = gen::Shape::Round;
   using Tuple = std::array<Point, kArity>;
-  static Sign filtered(const Tuple& p) { return DTLAB_CALL(dtlab::incircle); }
-  static Sign uncounted(const Tuple& p) { return DTLAB_CALL(dtlab::uncounted::incircle); }
-  static FilteredSign semistatic(const Tuple& p) { return DTLAB_CALL(stage::incircle_semistatic); }
-  static FilteredSign adaptive(const Tuple& p) { return DTLAB_CALL(stage::incircle_adaptive); }
-  static Sign exact(const Tuple& p) { return DTLAB_CALL(stage::incircle_exact); }
-  static Sign reference(const Tuple& p) { return DTLAB_CALL(ref::incircle); }
-  static Sign perturbed(const Tuple& p) { return DTLAB_CALL(dtlab::incircle_perturbed); }
-  static Sign reference_perturbed(const Tuple& p) { return DTLAB_CALL(ref::incircle_perturbed); }
+  static Sign filtered(const Tuple& p) { return std::apply(dtlab::incircle, p); }
+  static Sign uncounted(const Tuple& p) { return std::apply(dtlab::uncounted::incircle, p); }
+  static FilteredSign semistatic(const Tuple& p) { return std::apply(stage::incircle_semistatic, p); }
+  static FilteredSign adaptive(const Tuple& p) { return std::apply(stage::incircle_adaptive, p); }
+  static Sign exact(const Tuple& p) { return std::apply(stage::incircle_exact, p); }
+  static Sign reference(const Tuple& p) { return std::apply(ref::incircle, p); }
+  static Sign perturbed(const Tuple& p) { return std::apply(dtlab::incircle_perturbed, p); }
+  static Sign reference_perturbed(const Tuple& p) { return std::apply(ref::incircle_perturbed, p); }
   static bool lower_dimensional(const Tuple& p) { return ref::all_collinear(p); }
 };
 
@@ -72,12 +71,12 @@ struct Orient3d {
   static constexpr Predicate kId = Predicate::Orient3d;
   static constexpr gen::Shape kShape = gen::Shape::Flat;
   using Tuple = std::array<Point, kArity>;
-  static Sign filtered(const Tuple& p) { return DTLAB_CALL(dtlab::orient3d); }
-  static Sign uncounted(const Tuple& p) { return DTLAB_CALL(dtlab::uncounted::orient3d); }
-  static FilteredSign semistatic(const Tuple& p) { return DTLAB_CALL(stage::orient3d_semistatic); }
-  static FilteredSign adaptive(const Tuple& p) { return DTLAB_CALL(stage::orient3d_adaptive); }
-  static Sign exact(const Tuple& p) { return DTLAB_CALL(stage::orient3d_exact); }
-  static Sign reference(const Tuple& p) { return DTLAB_CALL(ref::orient3d); }
+  static Sign filtered(const Tuple& p) { return std::apply(dtlab::orient3d, p); }
+  static Sign uncounted(const Tuple& p) { return std::apply(dtlab::uncounted::orient3d, p); }
+  static FilteredSign semistatic(const Tuple& p) { return std::apply(stage::orient3d_semistatic, p); }
+  static FilteredSign adaptive(const Tuple& p) { return std::apply(stage::orient3d_adaptive, p); }
+  static Sign exact(const Tuple& p) { return std::apply(stage::orient3d_exact, p); }
+  static Sign reference(const Tuple& p) { return std::apply(ref::orient3d, p); }
 };
 
 struct Insphere {
@@ -86,18 +85,16 @@ struct Insphere {
   static constexpr Predicate kId = Predicate::Insphere;
   static constexpr gen::Shape kShape = gen::Shape::Round;
   using Tuple = std::array<Point, kArity>;
-  static Sign filtered(const Tuple& p) { return DTLAB_CALL(dtlab::insphere); }
-  static Sign uncounted(const Tuple& p) { return DTLAB_CALL(dtlab::uncounted::insphere); }
-  static FilteredSign semistatic(const Tuple& p) { return DTLAB_CALL(stage::insphere_semistatic); }
-  static FilteredSign adaptive(const Tuple& p) { return DTLAB_CALL(stage::insphere_adaptive); }
-  static Sign exact(const Tuple& p) { return DTLAB_CALL(stage::insphere_exact); }
-  static Sign reference(const Tuple& p) { return DTLAB_CALL(ref::insphere); }
-  static Sign perturbed(const Tuple& p) { return DTLAB_CALL(dtlab::insphere_perturbed); }
-  static Sign reference_perturbed(const Tuple& p) { return DTLAB_CALL(ref::insphere_perturbed); }
+  static Sign filtered(const Tuple& p) { return std::apply(dtlab::insphere, p); }
+  static Sign uncounted(const Tuple& p) { return std::apply(dtlab::uncounted::insphere, p); }
+  static FilteredSign semistatic(const Tuple& p) { return std::apply(stage::insphere_semistatic, p); }
+  static FilteredSign adaptive(const Tuple& p) { return std::apply(stage::insphere_adaptive, p); }
+  static Sign exact(const Tuple& p) { return std::apply(stage::insphere_exact, p); }
+  static Sign reference(const Tuple& p) { return std::apply(ref::insphere, p); }
+  static Sign perturbed(const Tuple& p) { return std::apply(dtlab::insphere_perturbed, p); }
+  static Sign reference_perturbed(const Tuple& p) { return std::apply(ref::insphere_perturbed, p); }
   static bool lower_dimensional(const Tuple& p) { return ref::all_coplanar(p); }
 };
-
-#undef DTLAB_CALL
 
 // --- helpers ---------------------------------------------------------------------------------
 
