@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <string>
 #include <utility>
+
+#include "kernel/error.hpp"
+#include "mesh/triangulation2.hpp"  // advise_huge_pages
 
 namespace dtlab {
 
@@ -52,6 +56,18 @@ constexpr int kGridBits = 16;
 constexpr std::size_t kLeaf = 8;            // below this, a lexicographic sort is as good
 constexpr std::size_t kRadixThreshold = 2048;  // below this, std::sort on the packed keys
 
+// Resizes v to n, with fresh storage advised onto huge pages when it has to grow.
+template <class T>
+void resize_for_bulk(std::vector<T>& v, std::size_t n) {
+  if (v.capacity() < n) {
+    std::vector<T> fresh;
+    fresh.reserve(n);
+    advise_huge_pages(fresh.data(), n * sizeof(T));
+    v.swap(fresh);
+  }
+  v.resize(n);
+}
+
 // Stable LSD radix sort of (key << 32 | position) words by their upper 32 bits, 11 bits a pass.
 void radix_sort_upper32(std::vector<std::uint64_t>& a, std::vector<std::uint64_t>& scratch) {
   constexpr int kDigitBits = 11;
@@ -64,7 +80,7 @@ void radix_sort_upper32(std::vector<std::uint64_t>& a, std::vector<std::uint64_t
     ++count[kBuckets + ((key >> kDigitBits) & (kBuckets - 1))];
     ++count[2 * kBuckets + (key >> (2 * kDigitBits))];
   }
-  scratch.resize(n);
+  resize_for_bulk(scratch, n);
   for (int pass = 0; pass < 3; ++pass) {
     std::uint32_t* c = count.data() + pass * kBuckets;
     const int shift = 32 + pass * kDigitBits;
@@ -76,9 +92,14 @@ void radix_sort_upper32(std::vector<std::uint64_t>& a, std::vector<std::uint64_t
   }
 }
 
+constexpr std::uint32_t kDropped = 0x80000000u;  // marks an id to drop, in hilbert_sort_unique
+
 class HilbertSorter2 {
  public:
-  explicit HilbertSorter2(std::span<const Vec2> points) : points_(points) {}
+  // With `duplicates`, every id whose point equals that of a smaller id is recorded there as
+  // (id, smallest id) and marked with kDropped in place.
+  HilbertSorter2(std::span<const Vec2> points, std::vector<std::pair<std::uint32_t, std::uint32_t>>* duplicates)
+      : points_(points), duplicates_(duplicates) {}
 
   void sort(std::span<std::uint32_t> ids) {
     const std::size_t n = ids.size();
@@ -91,6 +112,18 @@ class HilbertSorter2 {
         if (p.y != q.y) return p.y < q.y;
         return i < j;
       });
+      if (duplicates_ != nullptr) {
+        // Equal points meet only in a leaf or in an all-equal run: both are handled here.
+        std::size_t first = 0;
+        for (std::size_t k = 1; k < n; ++k) {
+          if (points_[ids[k]] == points_[ids[first]]) {
+            duplicates_->emplace_back(ids[k], ids[first]);
+            ids[k] |= kDropped;
+          } else {
+            first = k;
+          }
+        }
+      }
       return;
     }
     double xmin = points_[ids[0]].x, xmax = xmin, ymin = points_[ids[0]].y, ymax = ymin;
@@ -100,6 +133,12 @@ class HilbertSorter2 {
     }
     if (xmin == xmax && ymin == ymax) {  // all duplicates of one point
       std::sort(ids.begin(), ids.end());
+      if (duplicates_ != nullptr) {
+        for (std::size_t k = 1; k < n; ++k) {
+          duplicates_->emplace_back(ids[k], ids[0]);
+          ids[k] |= kDropped;
+        }
+      }
       return;
     }
     // Each axis scaled on its own, so that the points fill the grid. The quantisation is a
@@ -109,7 +148,7 @@ class HilbertSorter2 {
     const double sx = xmax > xmin ? kCells / (xmax - xmin) : 0.0;
     const double sy = ymax > ymin ? kCells / (ymax - ymin) : 0.0;
     constexpr double kLast = kCells - 1;
-    keys_.resize(n);
+    resize_for_bulk(keys_, n);
     for (std::size_t k = 0; k < n; ++k) {
       const Vec2& p = points_[ids[k]];
       const auto qx = static_cast<std::uint32_t>(std::min((p.x - xmin) * sx, kLast));
@@ -121,7 +160,8 @@ class HilbertSorter2 {
     } else {
       radix_sort_upper32(keys_, scratch_);
     }
-    copy_.assign(ids.begin(), ids.end());
+    resize_for_bulk(copy_, n);
+    std::copy(ids.begin(), ids.end(), copy_.begin());
     // Runs of equal keys share one cell: sort them again on their own bounding box. Collect the
     // runs first, since the recursion reuses the buffers.
     std::vector<std::pair<std::size_t, std::size_t>> runs;
@@ -139,6 +179,7 @@ class HilbertSorter2 {
 
  private:
   std::span<const Vec2> points_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>>* duplicates_;
   std::vector<std::uint64_t> keys_, scratch_;
   std::vector<std::uint32_t> copy_;
 };
@@ -165,8 +206,20 @@ std::uint32_t hilbert_index2(std::uint32_t x, std::uint32_t y) noexcept {
 }
 
 void hilbert_sort(std::span<const Vec2> points, std::span<std::uint32_t> ids) {
-  HilbertSorter2 sorter(points);
+  HilbertSorter2 sorter(points, nullptr);
   sorter.sort(ids);
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> hilbert_sort_unique(std::span<const Vec2> points,
+                                                                        std::vector<std::uint32_t>& ids) {
+  for (const std::uint32_t id : ids)
+    if (id >= kDropped) throw InternalError("hilbert_sort_unique: id " + std::to_string(id) + " above 2^31 - 1");
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;
+  HilbertSorter2 sorter(points, &duplicates);
+  sorter.sort(ids);
+  if (!duplicates.empty()) std::erase_if(ids, [](std::uint32_t id) { return (id & kDropped) != 0; });
+  std::sort(duplicates.begin(), duplicates.end());
+  return duplicates;
 }
 
 std::vector<std::uint32_t> brio_order_of_sorted(std::span<const std::uint32_t> ids, std::uint64_t seed,

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "kernel/vec.hpp"
@@ -30,6 +31,12 @@ std::uint32_t hilbert_index2(std::uint32_t x, std::uint32_t y) noexcept;
 // next to each other, in increasing id order: a duplicate scan after this sort is one linear
 // pass comparing neighbours.
 void hilbert_sort(std::span<const Vec2> points, std::span<std::uint32_t> ids);
+
+// hilbert_sort that also drops duplicates from `ids` on the way (no extra pass over the points):
+// of each group of equal points only the smallest id stays. Returns the dropped ids, ascending,
+// each with the id it duplicates: (dropped, kept). Ids must be below 2^31.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> hilbert_sort_unique(std::span<const Vec2> points,
+                                                                        std::vector<std::uint32_t>& ids);
 
 // BRIO order of ids that are already in Hilbert order (hilbert_sort): a stable partition into
 // rounds keeps each round in Hilbert order. Rounds smaller than `first_round` are merged into

@@ -2,6 +2,10 @@
 
 #include <string>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include "kernel/error.hpp"
 
 namespace dtlab {
@@ -14,6 +18,29 @@ namespace {
 }
 
 }  // namespace
+
+void advise_huge_pages(const void* data, std::size_t bytes) noexcept {
+#if defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
+  const auto begin = reinterpret_cast<std::uintptr_t>(data);
+  const std::uintptr_t first = (begin + kHuge - 1) & ~(kHuge - 1);
+  const std::uintptr_t last = (begin + bytes) & ~(kHuge - 1);
+  // Only whole huge pages inside the array; a refusal only costs speed.
+  if (last > first) static_cast<void>(madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE));
+#else
+  static_cast<void>(data), static_cast<void>(bytes);
+#endif
+}
+
+void Triangulation2::reserve_triangles(std::size_t triangles) {
+  const bool fresh = vertices_.capacity() < 3 * triangles;
+  vertices_.reserve(3 * triangles);
+  neighbours_.reserve(3 * triangles);
+  if (fresh) {
+    advise_huge_pages(vertices_.data(), vertices_.capacity() * sizeof(std::uint32_t));
+    advise_huge_pages(neighbours_.data(), neighbours_.capacity() * sizeof(std::uint32_t));
+  }
+}
 
 std::size_t Triangulation2::finite_triangle_count() const noexcept {
   std::size_t count = 0;

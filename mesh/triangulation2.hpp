@@ -52,6 +52,12 @@
 
 namespace dtlab {
 
+// Memory hint for a large array about to be filled: back it with transparent huge pages where
+// the system offers them (Linux, madvise), which cuts the TLB misses of the random accesses of
+// point location and cavity search. Call it before first writing the memory; no effect on
+// small arrays or elsewhere.
+void advise_huge_pages(const void* data, std::size_t bytes) noexcept;
+
 class Triangulation2 {
  public:
   // The infinite vertex, apex of every ghost triangle.
@@ -112,6 +118,9 @@ class Triangulation2 {
     neighbours_[g] = h;
     neighbours_[h] = g;
   }
+  // Reserves room for `triangles` triangles (the arrays never reallocate below that), and for
+  // large sizes asks for transparent huge pages (advise_huge_pages).
+  void reserve_triangles(std::size_t triangles);
   void clear_triangles() noexcept {
     vertices_.clear();
     neighbours_.clear();

@@ -23,7 +23,11 @@ Delaunay2dResult delaunay2d(std::span<const Vec2> points, const Delaunay2dOption
 
   PreparedPoints2 prepared = prepare_points2(points, options.seed);
   Delaunay2dResult result;
-  result.triangulation = Triangulation2(std::vector<Vec2>(points.begin(), points.end()));
+  std::vector<Vec2> copy;
+  copy.reserve(points.size());
+  advise_huge_pages(copy.data(), points.size() * sizeof(Vec2));
+  copy.assign(points.begin(), points.end());
+  result.triangulation = Triangulation2(std::move(copy));
   if (prepared.degenerate_message.empty()) variant->run(prepared, result.triangulation);
   result.duplicates = std::move(prepared.duplicates);
   result.duplicate_of = std::move(prepared.duplicate_of);

@@ -24,13 +24,23 @@ constexpr std::uint32_t kPrev[3] = {2, 0, 1};
 
 enum Mark : std::uint8_t { kUnmarked = 0, kInCavity = 1, kOutside = 2 };
 
-// The insertion engine, working on raw views of the triangulation's arrays (sized once for the
-// final 2m - 2 triangles, so nothing reallocates) and on the points in insertion order: vertex
+// The insertion engine, working on raw views of the triangulation's arrays (reserved once for
+// the final 2m - 2 triangles, so nothing reallocates) and on the points in insertion order: vertex
 // ids are insertion ranks while it runs, which keeps consecutive insertions close in memory.
 class Inserter {
  public:
-  Inserter(const Vec2* points, std::uint32_t* vertices, std::uint32_t* neighbours, std::size_t capacity)
-      : p_(points), v_(vertices), n_(neighbours), mark_(capacity, kUnmarked), capacity_(capacity) {
+  // The triangle arrays must be empty with room reserved for `capacity` triangles.
+  Inserter(const Vec2* points, std::vector<std::uint32_t>& vertices, std::vector<std::uint32_t>& neighbours,
+           std::size_t capacity)
+      : p_(points),
+        vertices_(vertices),
+        neighbours_(neighbours),
+        v_(vertices.data()),
+        n_(neighbours.data()),
+        mark_(capacity, kUnmarked),
+        capacity_(capacity) {
+    DTLAB_ASSERT(vertices.empty() && neighbours.empty());
+    DTLAB_ASSERT(vertices.capacity() >= 3 * capacity && neighbours.capacity() >= 3 * capacity);
     cavity_.reserve(64);
     outside_.reserve(64);
     boundary_.reserve(64);
@@ -39,6 +49,8 @@ class Inserter {
   // The first triangle (a, b, c), counter-clockwise, and its three ghosts.
   void start(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     const std::uint32_t v[3] = {a, b, c};
+    vertices_.resize(12);
+    neighbours_.resize(12);
     set_triangle(0, a, b, c);
     for (std::uint32_t i = 0; i < 3; ++i) {
       // Ghost 1 + i lies across edge i (v[i+1] -> v[i+2]) of triangle 0.
@@ -54,7 +66,6 @@ class Inserter {
   void insert(std::uint32_t p) {
     const std::uint32_t base = locate(p);
     grow_cavity(base, p);
-    trace_boundary();
     fill_ball(p);
   }
 
@@ -118,99 +129,104 @@ class Inserter {
                         ") exceeded its bound of " + std::to_string(count_) + " steps");
   }
 
-  // C_P by breadth-first search from the base over adjacency (the cavity is connected).
+  // C_P by breadth-first search from the base over adjacency (the cavity is connected). Every
+  // edge of a cavity triangle is looked at once, so the boundary edges come out on the way.
   void grow_cavity(std::uint32_t base, std::uint32_t pid) {
     const Vec2& p = p_[pid];
     cavity_.clear();
     outside_.clear();
+    boundary_.clear();
     mark_[base] = kInCavity;
     cavity_.push_back(base);
     for (std::size_t k = 0; k < cavity_.size(); ++k) {
       const std::uint32_t t = cavity_[k];
       for (std::uint32_t i = 0; i < 3; ++i) {
-        const std::uint32_t u = n_[3 * t + i] / 3;
-        if (mark_[u] != kUnmarked) continue;
-        if (conflicts(u, p)) {
-          mark_[u] = kInCavity;
-          cavity_.push_back(u);
-        } else {
+        const std::uint32_t outer = n_[3 * t + i];
+        const std::uint32_t u = outer / 3;
+        if (mark_[u] == kUnmarked) {
+          if (conflicts(u, p)) {
+            mark_[u] = kInCavity;
+            cavity_.push_back(u);
+            continue;
+          }
           mark_[u] = kOutside;
           outside_.push_back(u);
+        } else if (mark_[u] == kInCavity) {
+          continue;
         }
+        boundary_.push_back({v_[3 * t + kNext[i]], v_[3 * t + kPrev[i]], outer, 0});
       }
     }
-  }
-
-  // The cavity's boundary as a cycle of half-edges (cavity on their left), in order: from a
-  // boundary edge u -> v, turn around v through cavity triangles to the next one.
-  void trace_boundary() {
-    boundary_.clear();
-    std::uint32_t h0 = Triangulation2::kNone;
-    for (const std::uint32_t t : cavity_) {
-      for (std::uint32_t i = 0; i < 3 && h0 == Triangulation2::kNone; ++i)
-        if (mark_[n_[3 * t + i] / 3] != kInCavity) h0 = 3 * t + i;
-      if (h0 != Triangulation2::kNone) break;
-    }
-    DTLAB_ASSERT(h0 != Triangulation2::kNone);
-    const std::size_t bound = 3 * cavity_.size() + 3;
-    std::size_t steps = 0;
-    std::uint32_t h = h0;
-    do {
-      const std::uint32_t t = h / 3, i = h % 3;
-      boundary_.push_back({v_[3 * t + kNext[i]], v_[3 * t + kPrev[i]], n_[h]});
-      std::uint32_t g = 3 * t + kNext[i];  // starts where h ends
-      while (mark_[n_[g] / 3] == kInCavity) {
-        const std::uint32_t twin = n_[g];
-        g = twin - twin % 3 + kNext[twin % 3];
-        DTLAB_ASSERT(++steps <= bound);
-      }
-      h = g;
-      DTLAB_ASSERT(++steps <= bound);
-    } while (h != h0);
     // A cavity is a triangulated polygon without interior vertex: k edges, k - 2 triangles.
     DTLAB_ASSERT(boundary_.size() == cavity_.size() + 2);
   }
 
+  // For each boundary edge u -> v, the boundary edge that starts at v: the boundary is one cycle,
+  // so each vertex starts exactly one edge.
+  void chain_boundary() {
+    const std::size_t k = boundary_.size();
+    if (k <= 16) {
+      for (BoundaryEdge& e : boundary_) {
+        std::size_t j = 0;
+        while (j < k && boundary_[j].u != e.v) ++j;
+        DTLAB_ASSERT(j < k);
+        e.next = static_cast<std::uint32_t>(j);
+      }
+      return;
+    }
+    by_origin_.resize(k);
+    for (std::size_t j = 0; j < k; ++j) by_origin_[j] = static_cast<std::uint32_t>(j);
+    std::sort(by_origin_.begin(), by_origin_.end(),
+              [this](std::uint32_t a, std::uint32_t b) { return boundary_[a].u < boundary_[b].u; });
+    for (BoundaryEdge& e : boundary_) {
+      const auto it = std::lower_bound(by_origin_.begin(), by_origin_.end(), e.v,
+                                       [this](std::uint32_t j, std::uint32_t v) { return boundary_[j].u < v; });
+      DTLAB_ASSERT(it != by_origin_.end() && boundary_[*it].u == e.v);
+      e.next = *it;
+    }
+  }
+
   // B_P: one triangle (p, u, v) per boundary edge u -> v, in the cavity's slots and two new ones.
   void fill_ball(std::uint32_t p) {
+    chain_boundary();
     const std::size_t k = boundary_.size();
     DTLAB_ASSERT(count_ + 2 <= capacity_);
     cavity_.push_back(static_cast<std::uint32_t>(count_));
     cavity_.push_back(static_cast<std::uint32_t>(count_ + 1));
     count_ += 2;
-    // For triangle j: the half-edge v -> p (to link with j + 1) and p -> u (with j - 1).
-    std::uint32_t first_in = 0, prev_out = 0;
+    vertices_.resize(3 * count_);  // within the reserved capacity: v_ and n_ stay valid
+    neighbours_.resize(3 * count_);
     for (std::size_t j = 0; j < k; ++j) {
       const std::uint32_t t = cavity_[j];
-      const auto [u, v, outer] = boundary_[j];
+      BoundaryEdge& e = boundary_[j];
       // Positions of p, u, v in t: ghosts keep kInfinite at index 0.
       std::uint32_t ip, iu, iv;
-      if (u == kInf) {
-        set_triangle(t, kInf, v, p), ip = 2, iu = 0, iv = 1;
-      } else if (v == kInf) {
-        set_triangle(t, kInf, p, u), ip = 1, iu = 2, iv = 0;
+      if (e.u == kInf) {
+        set_triangle(t, kInf, e.v, p), ip = 2, iu = 0, iv = 1;
+      } else if (e.v == kInf) {
+        set_triangle(t, kInf, p, e.u), ip = 1, iu = 2, iv = 0;
       } else {
-        set_triangle(t, p, u, v), ip = 0, iu = 1, iv = 2;
+        set_triangle(t, p, e.u, e.v), ip = 0, iu = 1, iv = 2;
       }
-      link(3 * t + ip, outer);
-      if (j == 0) {
-        first_in = 3 * t + iv;
-      } else {
-        link(prev_out, 3 * t + iv);
-      }
-      prev_out = 3 * t + iu;
+      link(3 * t + ip, e.outer);
+      // Keep the half-edges p -> u (opposite v) and v -> p (opposite u) for the links inside B_P.
+      e.u = 3 * t + iv;
+      e.v = 3 * t + iu;
       mark_[t] = kUnmarked;
     }
-    link(prev_out, first_in);
+    for (const BoundaryEdge& e : boundary_) link(e.v, boundary_[e.next].u);
     for (const std::uint32_t t : outside_) mark_[t] = kUnmarked;
     last_ = cavity_[0];
   }
 
   struct BoundaryEdge {
-    std::uint32_t u, v, outer;  // u -> v, and the twin outside the cavity
+    std::uint32_t u, v, outer;  // u -> v, and its twin outside the cavity
+    std::uint32_t next;         // the boundary edge that starts at v
   };
 
   const Vec2* p_;
+  std::vector<std::uint32_t>& vertices_;
+  std::vector<std::uint32_t>& neighbours_;
   std::uint32_t* v_;
   std::uint32_t* n_;
   std::vector<std::uint8_t> mark_;
@@ -219,6 +235,7 @@ class Inserter {
   std::uint32_t last_ = 0;
   std::vector<std::uint32_t> cavity_, outside_;
   std::vector<BoundaryEdge> boundary_;
+  std::vector<std::uint32_t> by_origin_;
 };
 
 }  // namespace
@@ -243,10 +260,10 @@ void delaunay2d_incremental(const PreparedPoints2& input, Triangulation2& triang
   const std::size_t capacity = 2 * m - 2;  // triangles of the final triangulation, ghosts included
   std::vector<std::uint32_t>& vertices = triangulation.mutable_vertices();
   std::vector<std::uint32_t>& neighbours = triangulation.mutable_neighbours();
-  vertices.assign(3 * capacity, Triangulation2::kNone);
-  neighbours.assign(3 * capacity, Triangulation2::kNone);
+  triangulation.clear_triangles();
+  triangulation.reserve_triangles(capacity);
 
-  Inserter inserter(points.data(), vertices.data(), neighbours.data(), capacity);
+  Inserter inserter(points.data(), vertices, neighbours, capacity);
   if (turn == Sign::Positive) {
     inserter.start(0, 1, 2);
   } else {

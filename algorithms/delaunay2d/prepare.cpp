@@ -24,20 +24,9 @@ PreparedPoints2 prepare_points2(std::span<const Vec2> points, std::uint64_t seed
   std::vector<std::uint32_t>& ids = out.distinct;
   ids.resize(points.size());
   std::iota(ids.begin(), ids.end(), 0u);
-  hilbert_sort(points, ids);
-
-  // Equal points are adjacent, smallest id first: keep it, drop the rest (in place).
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> dropped;  // (duplicate, kept)
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < ids.size(); ++k) {
-    if (kept > 0 && points[ids[k]] == points[ids[kept - 1]]) {
-      dropped.emplace_back(ids[k], ids[kept - 1]);
-    } else {
-      ids[kept++] = ids[k];
-    }
-  }
-  ids.resize(kept);
-  std::sort(dropped.begin(), dropped.end());
+  const auto dropped = hilbert_sort_unique(points, ids);
+  out.duplicates.reserve(dropped.size());
+  out.duplicate_of.reserve(dropped.size());
   for (const auto& [duplicate, original] : dropped) {
     out.duplicates.push_back(duplicate);
     out.duplicate_of.push_back(original);

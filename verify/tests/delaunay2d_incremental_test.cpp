@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <random>
 #include <string>
@@ -196,6 +197,18 @@ TEST(SpatialSort, SortGroupsDuplicatesAndBrioIsAPermutation) {
     if (k > 0) closed.insert({P[ids[k - 1]].x, P[ids[k - 1]].y});
     EXPECT_FALSE(closed.count({P[ids[k]].x, P[ids[k]].y})) << "group split at " << k;
   }
+  // Dropping duplicates on the way: the first index of each coordinate pair stays.
+  std::map<std::pair<double, double>, std::uint32_t> first;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> expected;
+  for (std::uint32_t i = 0; i < P.size(); ++i) {
+    const auto [it, fresh] = first.emplace(std::pair{P[i].x, P[i].y}, i);
+    if (!fresh) expected.emplace_back(i, it->second);
+  }
+  std::vector<std::uint32_t> unique(P.size());
+  for (std::uint32_t i = 0; i < unique.size(); ++i) unique[i] = i;
+  EXPECT_EQ(hilbert_sort_unique(P, unique), expected);
+  ASSERT_EQ(unique.size(), first.size());
+  for (std::uint32_t id : unique) EXPECT_EQ(first.at({P[id].x, P[id].y}), id);
   const auto a = brio_order_of_sorted(ids, 42), b = brio_order_of_sorted(ids, 42), c = brio_order_of_sorted(ids, 43);
   EXPECT_EQ(a, b);
   EXPECT_NE(a, c);
