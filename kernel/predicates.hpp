@@ -87,19 +87,23 @@ inline Sign insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
 namespace uncounted {
 inline Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
   if (const FilteredSign s = stage::orient2d_semistatic(a, b, c)) return *s;
-  return detail::orient2d_slow(a, b, c);
+  if (const FilteredSign s = stage::orient2d_adaptive(a, b, c)) return *s;
+  return stage::orient2d_exact(a, b, c);
 }
 inline Sign incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
   if (const FilteredSign s = stage::incircle_semistatic(a, b, c, d)) return *s;
-  return detail::incircle_slow(a, b, c, d);
+  if (const FilteredSign s = stage::incircle_adaptive(a, b, c, d)) return *s;
+  return stage::incircle_exact(a, b, c, d);
 }
 inline Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
   if (const FilteredSign s = stage::orient3d_semistatic(a, b, c, d)) return *s;
-  return detail::orient3d_slow(a, b, c, d);
+  if (const FilteredSign s = stage::orient3d_adaptive(a, b, c, d)) return *s;
+  return stage::orient3d_exact(a, b, c, d);
 }
 inline Sign insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept {
   if (const FilteredSign s = stage::insphere_semistatic(a, b, c, d, e)) return *s;
-  return detail::insphere_slow(a, b, c, d, e);
+  if (const FilteredSign s = stage::insphere_adaptive(a, b, c, d, e)) return *s;
+  return stage::insphere_exact(a, b, c, d, e);
 }
 }  // namespace uncounted
 
