@@ -5,6 +5,8 @@
 // divide_conquer_mesh.hpp. Every in-circle decision is incircle_perturbed, so ties resolve as in
 // every other variant; the result is converted to Triangulation2 (ghosts and twins) at the end.
 #include <algorithm>
+#include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,6 +45,11 @@ struct Node {
   int axis;
 };
 
+// Nodes of at most this many points keep their parent's axis all the way down: their points
+// are simply sorted, and no hull walk re-expresses their children's ends. Dwyer's gain (no
+// long thin strips) comes from the upper levels.
+constexpr std::uint32_t kSameAxisBelow = 32;
+
 class DivideConquer {
  public:
   DivideConquer(const Vec2* points, std::uint32_t n) : p_(points), n_(n), mesh_(n) {}
@@ -64,6 +71,10 @@ class DivideConquer {
     }
     if (count == 3) return triangle(lo);
     const std::uint32_t mid = lo + count / 2;
+    if (count <= kSameAxisBelow) {
+      const HullEnds left = solve(lo, mid, axis, depth + 1);
+      return merge(left, solve(mid, hi, axis, depth + 1), count);
+    }
     HullEnds left = solve(lo, mid, 1 - axis, depth + 1);
     HullEnds right = solve(mid, hi, 1 - axis, depth + 1);
     left = reframe(left, axis);
@@ -130,7 +141,9 @@ class DivideConquer {
 
     // A candidate's far end is above the base line r -> l (on its right).
     const auto above = [&](std::uint32_t e) {
-      return orient2d(p_[mesh_.dest(e)], p_[mesh_.dest(base)], p_[mesh_.org(base)]) == Sign::Positive;
+      const std::uint32_t v = mesh_.dest(e);
+      if (v == mesh_.org(base) || v == mesh_.dest(base)) return false;
+      return orient2d(p_[v], p_[mesh_.dest(base)], p_[mesh_.org(base)]) == Sign::Positive;
     };
     // Each pass adds one cross edge or deletes one edge of a half: bounded by 3 * count each.
     const std::size_t bound = 6 * static_cast<std::size_t>(count) + 6;
@@ -184,9 +197,9 @@ struct Item {
 };
 
 // Arranges items so that every node of the recursion (halves of floor / ceil size, alternating
-// axes) finds its half below its median in its axis' order: a k-d tree layout, built with an
-// explicit stack by selection (O(n log n)).
-void arrange(std::vector<Item>& items) {
+// axes down to kSameAxisBelow points) finds its first half below its median in its axis' order:
+// a k-d tree layout, built with an explicit stack by selection (O(n log n)), sorted leaves.
+void arrange(std::span<Item> items) {
   std::vector<Node> stack;
   stack.push_back({0, static_cast<std::uint32_t>(items.size()), 0});
   while (!stack.empty()) {
@@ -194,7 +207,7 @@ void arrange(std::vector<Item>& items) {
     stack.pop_back();
     const std::uint32_t count = node.hi - node.lo;
     const auto less = [axis = node.axis](const Item& a, const Item& b) { return before(a.p, b.p, axis); };
-    if (count <= 3) {
+    if (count <= kSameAxisBelow) {
       std::sort(items.begin() + node.lo, items.begin() + node.hi, less);
       continue;
     }
@@ -208,20 +221,23 @@ void arrange(std::vector<Item>& items) {
 }  // namespace
 
 void delaunay2d_divide_conquer(const PreparedPoints2& input, Triangulation2& triangulation) {
-  DTLAB_ASSERT(triangulation.points().size() == input.points.size());
+  std::vector<Vec2>& points = triangulation.mutable_points();
+  DTLAB_ASSERT(points.size() == input.points.size());
   const std::size_t m = input.distinct.size();
   DTLAB_ASSERT(m >= 3);
-  std::vector<Item> items(m);
-  for (std::size_t k = 0; k < m; ++k) items[k] = {input.points[input.distinct[k]], input.distinct[k]};
-  arrange(items);
-  std::vector<Vec2> points(m);
   std::vector<std::uint32_t> ids(m);
-  for (std::size_t k = 0; k < m; ++k) points[k] = items[k].p, ids[k] = items[k].id;
-  items = {};
-
+  {
+    const auto items = std::make_unique_for_overwrite<Item[]>(m);
+    advise_huge_pages(items.get(), m * sizeof(Item));
+    for (std::size_t k = 0; k < m; ++k) items[k] = {input.points[input.distinct[k]], input.distinct[k]};
+    arrange(std::span<Item>(items.get(), m));
+    // The points in recursion order, in the triangulation's point array (restored at the end).
+    for (std::size_t k = 0; k < m; ++k) points[k] = items[k].p, ids[k] = items[k].id;
+  }
   DivideConquer dc(points.data(), static_cast<std::uint32_t>(m));
   const HullEnds ends = dc.run();
-  dc::to_triangulation(dc.mesh(), EdgeMesh::sym(ends.low), ids, triangulation);
+  dc.mesh().to_triangulation(EdgeMesh::sym(ends.low), ids, triangulation);
+  std::copy(input.points.begin(), input.points.end(), points.begin());
 }
 
 }  // namespace dtlab

@@ -16,8 +16,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
-#include <vector>
 
 #include "mesh/triangulation2.hpp"
 
@@ -37,9 +37,6 @@ class EdgeMesh {
   std::uint32_t oprev(std::uint32_t h) const noexcept { return h_[h].oprev; }
   std::uint32_t lnext(std::uint32_t h) const noexcept { return h_[h ^ 1u].oprev; }
   std::uint32_t rprev(std::uint32_t h) const noexcept { return h_[h ^ 1u].onext; }
-  // Half-edge slots ever handed out (live or freed): handles are below this.
-  std::uint32_t half_edge_slots() const noexcept { return 2 * used_; }
-  bool alive(std::uint32_t h) const noexcept { return h_[h].org != kNone; }
 
   // A new edge a -> b alone in both rings; returns the half-edge a -> b.
   std::uint32_t make_edge(std::uint32_t a, std::uint32_t b);
@@ -51,22 +48,24 @@ class EdgeMesh {
   // Removes the edge of h from both rings and frees it.
   void delete_edge(std::uint32_t h) noexcept;
 
+  // Writes the triangulated subdivision into `out` (which holds the input points) and leaves
+  // the mesh unusable (its rings hold output handles then). Every face but the outer one must
+  // be a counter-clockwise triangle, and `outer` a half-edge with the outer face on its left.
+  // Vertex v of the mesh becomes input id ids[v]; one ghost per outer half-edge. Throws
+  // InternalError if a face is not a triangle or the count is not 2m - 2 for m = ids.size().
+  void to_triangulation(std::uint32_t outer, std::span<const std::uint32_t> ids, Triangulation2& out);
+
  private:
   struct HalfEdge {
     std::uint32_t org, onext, oprev;
   };
   void unlink(std::uint32_t h) noexcept;
 
-  std::vector<HalfEdge> h_;
+  // Left uninitialised: only the first 2 * used_ slots are ever read.
+  std::unique_ptr<HalfEdge[]> h_;
+  std::size_t capacity_;         // edges
   std::uint32_t used_ = 0;       // edges handed out from the end of the arrays
   std::uint32_t free_ = kNone;   // freed edges, chained through onext of their even half-edge
 };
-
-// Writes the triangulated subdivision into `out` (which holds the input points): every face
-// but the outer one is a counter-clockwise triangle, and `outer` is a half-edge with the outer
-// face on its left. Vertex v of the mesh becomes input id ids[v]; one ghost per outer half-edge.
-// Throws InternalError if a face is not a triangle or the count is not 2m - 2.
-void to_triangulation(const EdgeMesh& mesh, std::uint32_t outer, std::span<const std::uint32_t> ids,
-                      Triangulation2& out);
 
 }  // namespace dtlab::dc

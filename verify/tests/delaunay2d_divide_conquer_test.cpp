@@ -36,6 +36,10 @@ std::string compare_with_incremental(const std::vector<Vec2>& points) {
   const Delaunay2dResult reference = delaunay2d(points, {.algorithm = "incremental"});
   if (mine.degenerate_message != reference.degenerate_message) return "degenerate messages differ";
   if (mine.duplicates != reference.duplicates) return "duplicates differ";
+  const auto out = mine.triangulation.points();
+  if (!std::equal(out.begin(), out.end(), points.begin(), points.end(),
+                  [](const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }))
+    return "points not restored to the input";
   if (!mine.degenerate_message.empty()) {
     return mine.triangulation.triangle_count() == 0 ? "" : "triangles on degenerate input";
   }
