@@ -162,26 +162,27 @@ class Inserter {
   }
 
   // For each boundary edge u -> v, the boundary edge that starts at v: the boundary is one cycle,
-  // so each vertex starts exactly one edge.
+  // so each vertex starts exactly one edge. Small cavities (nearly all) search a short array.
   void chain_boundary() {
     const std::size_t k = boundary_.size();
-    if (k <= 16) {
+    origins_.resize(k);
+    for (std::size_t j = 0; j < k; ++j) origins_[j] = boundary_[j].u;
+    if (k <= 32) {
       for (BoundaryEdge& e : boundary_) {
-        std::size_t j = 0;
-        while (j < k && boundary_[j].u != e.v) ++j;
-        DTLAB_ASSERT(j < k);
-        e.next = static_cast<std::uint32_t>(j);
+        const auto it = std::find(origins_.begin(), origins_.end(), e.v);
+        DTLAB_ASSERT(it != origins_.end());
+        e.next = static_cast<std::uint32_t>(it - origins_.begin());
       }
       return;
     }
     by_origin_.resize(k);
     for (std::size_t j = 0; j < k; ++j) by_origin_[j] = static_cast<std::uint32_t>(j);
     std::sort(by_origin_.begin(), by_origin_.end(),
-              [this](std::uint32_t a, std::uint32_t b) { return boundary_[a].u < boundary_[b].u; });
+              [this](std::uint32_t a, std::uint32_t b) { return origins_[a] < origins_[b]; });
     for (BoundaryEdge& e : boundary_) {
       const auto it = std::lower_bound(by_origin_.begin(), by_origin_.end(), e.v,
-                                       [this](std::uint32_t j, std::uint32_t v) { return boundary_[j].u < v; });
-      DTLAB_ASSERT(it != by_origin_.end() && boundary_[*it].u == e.v);
+                                       [this](std::uint32_t j, std::uint32_t v) { return origins_[j] < v; });
+      DTLAB_ASSERT(it != by_origin_.end() && origins_[*it] == e.v);
       e.next = *it;
     }
   }
@@ -235,7 +236,7 @@ class Inserter {
   std::uint32_t last_ = 0;
   std::vector<std::uint32_t> cavity_, outside_;
   std::vector<BoundaryEdge> boundary_;
-  std::vector<std::uint32_t> by_origin_;
+  std::vector<std::uint32_t> origins_, by_origin_;
 };
 
 }  // namespace

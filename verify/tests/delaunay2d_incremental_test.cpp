@@ -264,6 +264,28 @@ TEST(Delaunay2dIncremental, PointsOnACircle) {
   EXPECT_EQ(r.triangulation.finite_triangle_count(), static_cast<std::size_t>(n - 2));
 }
 
+TEST(Delaunay2dIncremental, ExactlyCocircularLatticePointsAndTheirCentre) {
+  // x^2 + y^2 = (5*13*17*29)^2 has 324 integer solutions: exactly cocircular doubles. The centre
+  // conflicts with every triangle present when it arrives: a cavity far above the usual size.
+  const std::int64_t r = 5 * 13 * 17 * 29;
+  std::vector<Vec2> P;
+  for (std::int64_t x = -r; x <= r; ++x) {
+    const std::int64_t y2 = r * r - x * x;
+    const auto y = static_cast<std::int64_t>(std::llround(std::sqrt(static_cast<double>(y2))));
+    if (y * y != y2) continue;
+    P.push_back({static_cast<double>(x), static_cast<double>(y)});
+    if (y != 0) P.push_back({static_cast<double>(x), static_cast<double>(-y)});
+  }
+  ASSERT_EQ(P.size(), 324u);
+  const auto ring = run(P);
+  expect_delaunay(ring);
+  EXPECT_EQ(ring.triangulation.finite_triangle_count(), P.size() - 2);
+  P.push_back({0, 0});
+  const auto r2 = run(P);
+  expect_delaunay(r2);
+  EXPECT_EQ(r2.triangulation.finite_triangle_count(), P.size() - 1);  // 2V - 2 - h, h = V - 1
+}
+
 TEST(Delaunay2dIncremental, CollinearInputGivesAMessage) {
   std::vector<Vec2> P;
   for (int k = 0; k < 50; ++k) P.push_back({1.0 + 3 * k, -2.0 + 7 * k});
