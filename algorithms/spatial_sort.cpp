@@ -52,9 +52,8 @@ constexpr HilbertTable2 make_hilbert_table2() {
 
 constexpr HilbertTable2 kHilbertTable2 = make_hilbert_table2();
 
-constexpr int kGridBits = 16;
-constexpr std::size_t kLeaf = 8;            // below this, a lexicographic sort is as good
-constexpr std::size_t kRadixThreshold = 2048;  // below this, std::sort on the packed keys
+constexpr int kGridBits2 = 16;  // 2D cells: 2^16 x 2^16
+constexpr int kGridBits3 = 10;  // 3D cells: 2^10 x 2^10 x 2^10
 
 // Resizes v to n, with fresh storage advised onto huge pages when it has to grow.
 template <class T>
@@ -67,6 +66,12 @@ void resize_for_bulk(std::vector<T>& v, std::size_t n) {
   }
   v.resize(n);
 }
+
+inline double coordinate(const Vec2& p, int k) noexcept { return k == 0 ? p.x : p.y; }
+inline double coordinate(const Vec3& p, int k) noexcept { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
+
+// Marks an id to drop, in hilbert_sort_unique: ids stay below 2^31.
+constexpr std::uint32_t kDroppedId = 0x80000000u;
 
 // Stable LSD radix sort of (key << 32 | position) words by their upper 32 bits, 11 bits a pass.
 void radix_sort_upper32(std::vector<std::uint64_t>& a, std::vector<std::uint64_t>& scratch) {
@@ -92,13 +97,16 @@ void radix_sort_upper32(std::vector<std::uint64_t>& a, std::vector<std::uint64_t
   }
 }
 
-constexpr std::uint32_t kDropped = 0x80000000u;  // marks an id to drop, in hilbert_sort_unique
-
-class HilbertSorter2 {
+// The recursive Hilbert sort, for any dimension: points are quantised on a grid over their
+// bounding box, sorted by the Hilbert index of their cell (CellIndex, Dim * GridBits <= 32 bits),
+// and every run of points sharing a cell is sorted again on its own bounding box.
+template <class Point, int Dim, int GridBits, std::uint32_t (*CellIndex)(const std::array<std::uint32_t, Dim>&)>
+class HilbertSorter {
  public:
+  static_assert(Dim * GridBits <= 32);
   // With `duplicates`, every id whose point equals that of a smaller id is recorded there as
-  // (id, smallest id) and marked with kDropped in place.
-  HilbertSorter2(std::span<const Vec2> points, std::vector<std::pair<std::uint32_t, std::uint32_t>>* duplicates)
+  // (id, smallest id) and marked with kDroppedId in place.
+  HilbertSorter(std::span<const Point> points, std::vector<std::pair<std::uint32_t, std::uint32_t>>* duplicates)
       : points_(points), duplicates_(duplicates) {}
 
   void sort(std::span<std::uint32_t> ids) {
@@ -106,54 +114,45 @@ class HilbertSorter2 {
     if (n <= 1) return;
     if (n <= kLeaf) {
       std::sort(ids.begin(), ids.end(), [this](std::uint32_t i, std::uint32_t j) {
-        const Vec2& p = points_[i];
-        const Vec2& q = points_[j];
-        if (p.x != q.x) return p.x < q.x;
-        if (p.y != q.y) return p.y < q.y;
-        return i < j;
+        const auto c = points_[i] <=> points_[j];
+        return c < 0 || (c == 0 && i < j);
       });
-      if (duplicates_ != nullptr) {
-        // Equal points meet only in a leaf or in an all-equal run: both are handled here.
-        std::size_t first = 0;
-        for (std::size_t k = 1; k < n; ++k) {
-          if (points_[ids[k]] == points_[ids[first]]) {
-            duplicates_->emplace_back(ids[k], ids[first]);
-            ids[k] |= kDropped;
-          } else {
-            first = k;
-          }
+      // Equal points meet only in a leaf or in an all-equal run: both are handled here.
+      std::size_t first = 0;
+      for (std::size_t k = 1; k < n; ++k) {
+        if (points_[ids[k]] == points_[ids[first]]) {
+          drop(ids[k], ids[first]);
+        } else {
+          first = k;
         }
       }
       return;
     }
-    double xmin = points_[ids[0]].x, xmax = xmin, ymin = points_[ids[0]].y, ymax = ymin;
-    for (const std::uint32_t i : ids) {
-      xmin = std::min(xmin, points_[i].x), xmax = std::max(xmax, points_[i].x);
-      ymin = std::min(ymin, points_[i].y), ymax = std::max(ymax, points_[i].y);
-    }
-    if (xmin == xmax && ymin == ymax) {  // all duplicates of one point
-      std::sort(ids.begin(), ids.end());
-      if (duplicates_ != nullptr) {
-        for (std::size_t k = 1; k < n; ++k) {
-          duplicates_->emplace_back(ids[k], ids[0]);
-          ids[k] |= kDropped;
-        }
+    std::array<double, Dim> lo, hi;
+    for (int d = 0; d < Dim; ++d) lo[d] = hi[d] = coordinate(points_[ids[0]], d);
+    for (const std::uint32_t i : ids)
+      for (int d = 0; d < Dim; ++d) {
+        const double c = coordinate(points_[i], d);
+        lo[d] = std::min(lo[d], c), hi[d] = std::max(hi[d], c);
       }
+    if (lo == hi) {  // all duplicates of one point
+      std::sort(ids.begin(), ids.end());
+      for (std::size_t k = 1; k < n; ++k) drop(ids[k], ids[0]);
       return;
     }
     // Each axis scaled on its own, so that the points fill the grid. The quantisation is a
     // heuristic (no decision depends on it) but a function of the coordinates: equal points
     // get equal keys at every level of the recursion.
-    constexpr double kCells = 1 << kGridBits;
-    const double sx = xmax > xmin ? kCells / (xmax - xmin) : 0.0;
-    const double sy = ymax > ymin ? kCells / (ymax - ymin) : 0.0;
+    constexpr double kCells = 1u << GridBits;
     constexpr double kLast = kCells - 1;
+    std::array<double, Dim> scale;
+    for (int d = 0; d < Dim; ++d) scale[d] = hi[d] > lo[d] ? kCells / (hi[d] - lo[d]) : 0.0;
     resize_for_bulk(keys_, n);
     for (std::size_t k = 0; k < n; ++k) {
-      const Vec2& p = points_[ids[k]];
-      const auto qx = static_cast<std::uint32_t>(std::min((p.x - xmin) * sx, kLast));
-      const auto qy = static_cast<std::uint32_t>(std::min((p.y - ymin) * sy, kLast));
-      keys_[k] = std::uint64_t{hilbert_index2(qx, qy)} << 32 | k;
+      std::array<std::uint32_t, Dim> q;
+      for (int d = 0; d < Dim; ++d)
+        q[d] = static_cast<std::uint32_t>(std::min((coordinate(points_[ids[k]], d) - lo[d]) * scale[d], kLast));
+      keys_[k] = std::uint64_t{CellIndex(q)} << 32 | k;
     }
     if (n < kRadixThreshold) {
       std::sort(keys_.begin(), keys_.end());  // positions are unique: stable by construction
@@ -178,11 +177,27 @@ class HilbertSorter2 {
   }
 
  private:
-  std::span<const Vec2> points_;
+  static constexpr std::size_t kLeaf = 8;            // below this, a lexicographic sort is as good
+  static constexpr std::size_t kRadixThreshold = 2048;  // below this, std::sort on the packed keys
+
+  void drop(std::uint32_t& id, std::uint32_t kept) {
+    if (duplicates_ == nullptr) return;
+    duplicates_->emplace_back(id, kept);
+    id |= kDroppedId;
+  }
+
+  std::span<const Point> points_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>>* duplicates_;
   std::vector<std::uint64_t> keys_, scratch_;
   std::vector<std::uint32_t> copy_;
 };
+
+std::uint32_t cell_index2(const std::array<std::uint32_t, 2>& q) { return hilbert_index2(q[0], q[1]); }
+std::uint32_t cell_index3(const std::array<std::uint32_t, 3>& q) {
+  return hilbert_index3(q[0], q[1], q[2], kGridBits3);
+}
+using HilbertSorter2 = HilbertSorter<Vec2, 2, kGridBits2, &cell_index2>;
+using HilbertSorter3 = HilbertSorter<Vec3, 3, kGridBits3, &cell_index3>;
 
 // SplitMix64 finaliser (Steele, Lea, Flood, OOPSLA 2014): a well-mixed 64-bit hash of (seed, id).
 constexpr std::uint64_t mix64(std::uint64_t z) noexcept {
@@ -196,7 +211,7 @@ constexpr std::uint64_t mix64(std::uint64_t z) noexcept {
 std::uint32_t hilbert_index2(std::uint32_t x, std::uint32_t y) noexcept {
   std::uint32_t index = 0;
   unsigned state = 0;
-  for (int shift = kGridBits - 4; shift >= 0; shift -= 4) {
+  for (int shift = kGridBits2 - 4; shift >= 0; shift -= 4) {
     const unsigned cell = ((x >> shift) & 15u) << 4 | ((y >> shift) & 15u);
     const std::uint16_t e = kHilbertTable2.entry[state * 256 + cell];
     index = index << 8 | (e >> 2);
@@ -205,21 +220,70 @@ std::uint32_t hilbert_index2(std::uint32_t x, std::uint32_t y) noexcept {
   return index;
 }
 
+std::uint32_t hilbert_index3(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits) noexcept {
+  // Skilling's transposition ("Programming the Hilbert curve", AIP Conf. Proc. 707, 2004).
+  std::uint32_t X[3] = {x, y, z};
+  // Undo the excess work of the Gray code level by level, top down: where the level's bit of a
+  // coordinate is set, invert the lower bits of X[0]; where it is clear, exchange the lower bits
+  // of X[0] and that coordinate. Written without branches (the bits are data).
+  for (std::uint32_t q = 1u << (bits - 1); q > 1; q >>= 1) {
+    const std::uint32_t low = q - 1;
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t set = 0u - static_cast<std::uint32_t>((X[i] & q) != 0);
+      const std::uint32_t t = (X[0] ^ X[i]) & low & ~set;
+      X[0] ^= t ^ (low & set);
+      X[i] ^= t;
+    }
+  }
+  // Gray encode.
+  X[1] ^= X[0];
+  X[2] ^= X[1];
+  std::uint32_t t = 0;
+  for (std::uint32_t q = 1u << (bits - 1); q > 1; q >>= 1)
+    if (X[2] & q) t ^= q - 1;
+  X[0] ^= t, X[1] ^= t, X[2] ^= t;
+  // The index interleaves the transposed bits, X[0] most significant within each level.
+  std::uint32_t index = 0;
+  for (int b = bits - 1; b >= 0; --b)
+    index = index << 3 | ((X[0] >> b) & 1u) << 2 | ((X[1] >> b) & 1u) << 1 | ((X[2] >> b) & 1u);
+  return index;
+}
+
+namespace {
+
+template <class Sorter, class Point>
+std::vector<std::pair<std::uint32_t, std::uint32_t>> sort_unique(std::span<const Point> points,
+                                                                 std::vector<std::uint32_t>& ids) {
+  for (const std::uint32_t id : ids)
+    if (id >= kDroppedId) throw InternalError("hilbert_sort_unique: id " + std::to_string(id) + " above 2^31 - 1");
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;
+  Sorter sorter(points, &duplicates);
+  sorter.sort(ids);
+  if (!duplicates.empty()) std::erase_if(ids, [](std::uint32_t id) { return (id & kDroppedId) != 0; });
+  std::sort(duplicates.begin(), duplicates.end());
+  return duplicates;
+}
+
+}  // namespace
+
 void hilbert_sort(std::span<const Vec2> points, std::span<std::uint32_t> ids) {
   HilbertSorter2 sorter(points, nullptr);
   sorter.sort(ids);
 }
 
+void hilbert_sort(std::span<const Vec3> points, std::span<std::uint32_t> ids) {
+  HilbertSorter3 sorter(points, nullptr);
+  sorter.sort(ids);
+}
+
 std::vector<std::pair<std::uint32_t, std::uint32_t>> hilbert_sort_unique(std::span<const Vec2> points,
                                                                         std::vector<std::uint32_t>& ids) {
-  for (const std::uint32_t id : ids)
-    if (id >= kDropped) throw InternalError("hilbert_sort_unique: id " + std::to_string(id) + " above 2^31 - 1");
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;
-  HilbertSorter2 sorter(points, &duplicates);
-  sorter.sort(ids);
-  if (!duplicates.empty()) std::erase_if(ids, [](std::uint32_t id) { return (id & kDropped) != 0; });
-  std::sort(duplicates.begin(), duplicates.end());
-  return duplicates;
+  return sort_unique<HilbertSorter2>(points, ids);
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> hilbert_sort_unique(std::span<const Vec3> points,
+                                                                        std::vector<std::uint32_t>& ids) {
+  return sort_unique<HilbertSorter3>(points, ids);
 }
 
 std::vector<std::uint32_t> brio_order_of_sorted(std::span<const std::uint32_t> ids, std::uint64_t seed,
@@ -243,6 +307,13 @@ std::vector<std::uint32_t> brio_order_of_sorted(std::span<const std::uint32_t> i
 }
 
 std::vector<std::uint32_t> brio_order(std::span<const Vec2> points, std::span<const std::uint32_t> ids,
+                                      std::uint64_t seed, std::size_t first_round) {
+  std::vector<std::uint32_t> sorted(ids.begin(), ids.end());
+  hilbert_sort(points, sorted);
+  return brio_order_of_sorted(sorted, seed, first_round);
+}
+
+std::vector<std::uint32_t> brio_order(std::span<const Vec3> points, std::span<const std::uint32_t> ids,
                                       std::uint64_t seed, std::size_t first_round) {
   std::vector<std::uint32_t> sorted(ids.begin(), ids.end());
   hilbert_sort(points, sorted);

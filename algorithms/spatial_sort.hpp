@@ -8,10 +8,12 @@
 // round r with probability 2^-(r+1) (the last round holds about half the points, each earlier
 // round half the next); rounds are inserted from the smallest up, each in Hilbert order.
 //
+// 3D: the same sort on a 2^10 x 2^10 x 2^10 grid with the 3D Hilbert curve (Skilling's
+// transposition, AIP Conf. Proc. 707, 2004); the recursion on shared cells and BRIO are the
+// same code for both dimensions (spatial_sort.cpp).
+//
 // Everything is deterministic (a seed drives BRIO), O(n log n) at worst, O(n) for bounded
-// clustering, and allocates per call, never per point. 3D: a key function for Vec3 (3 x 21 bits
-// in a 64-bit key) plugs into the same recursive radix sort (spatial_sort.cpp); add overloads
-// taking std::span<const Vec3> beside these.
+// clustering, and allocates per call, never per point.
 #pragma once
 
 #include <cstdint>
@@ -38,6 +40,15 @@ void hilbert_sort(std::span<const Vec2> points, std::span<std::uint32_t> ids);
 std::vector<std::pair<std::uint32_t, std::uint32_t>> hilbert_sort_unique(std::span<const Vec2> points,
                                                                         std::vector<std::uint32_t>& ids);
 
+// Index of cell (x, y, z) of the 2^bits grid per axis (bits <= 10) along the 3D Hilbert curve
+// that starts at cell (0, 0, 0).
+std::uint32_t hilbert_index3(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits = 10) noexcept;
+
+// The same for 3D points.
+void hilbert_sort(std::span<const Vec3> points, std::span<std::uint32_t> ids);
+std::vector<std::pair<std::uint32_t, std::uint32_t>> hilbert_sort_unique(std::span<const Vec3> points,
+                                                                        std::vector<std::uint32_t>& ids);
+
 // BRIO order of ids that are already in Hilbert order (hilbert_sort): a stable partition into
 // rounds keeps each round in Hilbert order. Rounds smaller than `first_round` are merged into
 // the first one.
@@ -46,6 +57,8 @@ std::vector<std::uint32_t> brio_order_of_sorted(std::span<const std::uint32_t> h
 
 // hilbert_sort, then brio_order_of_sorted.
 std::vector<std::uint32_t> brio_order(std::span<const Vec2> points, std::span<const std::uint32_t> ids,
+                                      std::uint64_t seed, std::size_t first_round = 64);
+std::vector<std::uint32_t> brio_order(std::span<const Vec3> points, std::span<const std::uint32_t> ids,
                                       std::uint64_t seed, std::size_t first_round = 64);
 
 }  // namespace dtlab

@@ -1,0 +1,38 @@
+#include "algorithms/delaunay3d/delaunay3d.hpp"
+
+#include <chrono>
+
+#include "algorithms/delaunay3d/prepare.hpp"
+#include "algorithms/delaunay3d/registry.hpp"
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+Delaunay3dResult delaunay3d(std::span<const Vec3> points, const Delaunay3dOptions& options) {
+  const Delaunay3dVariant* variant = find_delaunay3d_variant(options.algorithm);
+  if (variant == nullptr) {
+    std::string known;
+    for (const Delaunay3dVariant& v : delaunay3d_variants()) {
+      if (!known.empty()) known += ", ";
+      known += v.name;
+    }
+    throw InputError("unknown 3D Delaunay algorithm '" + options.algorithm + "' (known: " + known + ")");
+  }
+  if (options.threads == 0) throw InputError("delaunay3d: threads must be at least 1");
+  const PredicateStats before = predicate_stats();
+  const auto start = std::chrono::steady_clock::now();
+
+  PreparedPoints3 prepared = prepare_points3(points, options.seed);
+  Delaunay3dResult result;
+  result.tetrahedralization = Tetrahedralization3(std::vector<Vec3>(points.begin(), points.end()));
+  if (prepared.degenerate_message.empty()) variant->run(prepared, options, result.tetrahedralization);
+  result.duplicates = std::move(prepared.duplicates);
+  result.duplicate_of = std::move(prepared.duplicate_of);
+  result.degenerate_message = std::move(prepared.degenerate_message);
+
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.predicate_stats = predicate_stats() - before;
+  return result;
+}
+
+}  // namespace dtlab

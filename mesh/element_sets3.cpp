@@ -1,0 +1,98 @@
+#include "mesh/element_sets3.hpp"
+
+#include <string>
+#include <unordered_set>
+
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+namespace {
+
+using T3 = Tetrahedralization3;
+
+std::uint32_t index_of(const T3& tet, std::uint32_t t, std::uint32_t v) {
+  for (std::uint32_t i = 0; i < 4; ++i)
+    if (tet.vertex(t, i) == v) return i;
+  return T3::kNone;
+}
+
+// Is (i0, i1, i2, i3), a permutation of 0..3, even?
+bool even_permutation(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, std::uint32_t i3) {
+  const std::uint32_t p[4] = {i0, i1, i2, i3};
+  int inversions = 0;
+  for (int x = 0; x < 4; ++x)
+    for (int y = x + 1; y < 4; ++y) inversions += p[x] > p[y];
+  return inversions % 2 == 0;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet) {
+  std::vector<std::uint32_t> out(tet.point_count(), T3::kNone);
+  const auto count = static_cast<std::uint32_t>(tet.tetrahedron_count());
+  for (int pass = 0; pass < 2; ++pass) {  // finite tetrahedra first, ghosts fill the gaps
+    for (std::uint32_t t = 0; t < count; ++t) {
+      if (tet.is_ghost(t) != (pass == 1)) continue;
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        const std::uint32_t v = tet.vertex(t, i);
+        if (v != T3::kInfinite && v < out.size() && out[v] == T3::kNone) out[v] = t;
+      }
+    }
+  }
+  return out;
+}
+
+std::vector<std::uint32_t> ball(const Tetrahedralization3& tet, std::uint32_t tetrahedron, std::uint32_t v) {
+  if (tetrahedron >= tet.tetrahedron_count() || index_of(tet, tetrahedron, v) == T3::kNone)
+    throw InternalError("ball: tetrahedron " + std::to_string(tetrahedron) + " does not have vertex " +
+                        std::to_string(v));
+  std::vector<std::uint32_t> out{tetrahedron};
+  std::unordered_set<std::uint32_t> seen{tetrahedron};
+  // Each tetrahedron enters once, so the queue is bounded by the tetrahedron count.
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const std::uint32_t t = out[k];
+    const std::uint32_t iv = index_of(tet, t, v);
+    if (iv == T3::kNone)
+      throw InternalError("ball of vertex " + std::to_string(v) + ": tetrahedron " + std::to_string(t) +
+                          " reached through a facet holding it lacks it (broken adjacency)");
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (i == iv) continue;  // the facet opposite v does not contain v
+      const std::uint32_t u = tet.adjacent(t, i);
+      if (seen.insert(u).second) out.push_back(u);
+    }
+    if (out.size() > tet.tetrahedron_count())
+      throw InternalError("ball of vertex " + std::to_string(v) + " exceeds the tetrahedron count");
+  }
+  return out;
+}
+
+std::vector<std::uint32_t> shell(const Tetrahedralization3& tet, std::uint32_t tetrahedron, std::uint32_t a,
+                                 std::uint32_t b) {
+  if (a == b || tetrahedron >= tet.tetrahedron_count() || index_of(tet, tetrahedron, a) == T3::kNone ||
+      index_of(tet, tetrahedron, b) == T3::kNone)
+    throw InternalError("shell: tetrahedron " + std::to_string(tetrahedron) + " does not have edge [" +
+                        std::to_string(a) + ", " + std::to_string(b) + "]");
+  std::vector<std::uint32_t> out;
+  std::uint32_t t = tetrahedron;
+  do {
+    out.push_back(t);
+    if (out.size() > tet.tetrahedron_count())
+      throw InternalError("shell of edge [" + std::to_string(a) + ", " + std::to_string(b) +
+                          "] does not close (broken adjacency)");
+    const std::uint32_t ia = index_of(tet, t, a), ib = index_of(tet, t, b);
+    if (ia == T3::kNone || ib == T3::kNone)
+      throw InternalError("shell of edge [" + std::to_string(a) + ", " + std::to_string(b) + "]: tetrahedron " +
+                          std::to_string(t) + " lacks an endpoint (broken adjacency)");
+    // (a, b, c, d) positive: the next tetrahedron lies across the facet opposite c.
+    std::uint32_t k = 0;
+    while (k == ia || k == ib) ++k;
+    std::uint32_t l = k + 1;
+    while (l == ia || l == ib) ++l;
+    if (!even_permutation(ia, ib, k, l)) std::swap(k, l);
+    t = tet.adjacent(t, k);
+  } while (t != tetrahedron);
+  return out;
+}
+
+}  // namespace dtlab

@@ -1,0 +1,28 @@
+// Element sets of a 3D tetrahedralization (book §1.7): the ball of a vertex, the shell of an edge.
+// Both walk the adjacency of Tetrahedralization3 (mesh/tetrahedralization3.hpp) with loops
+// bounded by the number of tetrahedra; a broken structure gives InternalError, never a hang.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "mesh/tetrahedralization3.hpp"
+
+namespace dtlab {
+
+// For each vertex id, one tetrahedron incident to it (ghosts only if no finite one is), or
+// Tetrahedralization3::kNone for points that no tetrahedron uses (duplicates). One pass, O(size).
+std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet);
+
+// The ball of vertex v: every tetrahedron incident to v, ghosts included, starting with
+// `tetrahedron` (which must have v as a vertex), in breadth-first order over the facets through v.
+std::vector<std::uint32_t> ball(const Tetrahedralization3& tet, std::uint32_t tetrahedron, std::uint32_t v);
+
+// The shell of edge [a, b]: every tetrahedron containing both a and b, ghosts included, in
+// order around the edge, starting with `tetrahedron` (which must have a and b as vertices).
+// The order turns counter-clockwise seen from b looking at a (right-handed about a -> b): the
+// tetrahedron after (a, b, c, d), positively oriented, is the one across facet (a, b, d).
+std::vector<std::uint32_t> shell(const Tetrahedralization3& tet, std::uint32_t tetrahedron, std::uint32_t a,
+                                 std::uint32_t b);
+
+}  // namespace dtlab

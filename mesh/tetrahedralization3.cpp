@@ -1,0 +1,101 @@
+#include "mesh/tetrahedralization3.hpp"
+
+#include <string>
+#include <utility>
+
+#include "kernel/error.hpp"
+#include "mesh/triangulation2.hpp"  // advise_huge_pages
+
+namespace dtlab {
+
+namespace {
+
+using T3 = Tetrahedralization3;
+
+[[noreturn]] void topology_error(std::uint32_t h, const std::string& what) {
+  throw InternalError("Tetrahedralization3::check_topology: facet " + std::to_string(h) + " (tetrahedron " +
+                      std::to_string(h / 4) + ", facet " + std::to_string(h % 4) + "): " + what);
+}
+
+// Same three vertices in opposite cyclic order: g reversed is a rotation of h.
+bool reversed_facets(const std::array<std::uint32_t, 3>& f, const std::array<std::uint32_t, 3>& g) noexcept {
+  for (int r = 0; r < 3; ++r)
+    if (f[0] == g[r] && f[1] == g[(r + 2) % 3] && f[2] == g[(r + 1) % 3]) return true;
+  return false;
+}
+
+}  // namespace
+
+void Tetrahedralization3::reserve_tetrahedra(std::size_t tetrahedra) {
+  const bool fresh = vertices_.capacity() < 4 * tetrahedra;
+  vertices_.reserve(4 * tetrahedra);
+  neighbours_.reserve(4 * tetrahedra);
+  if (fresh) {
+    advise_huge_pages(vertices_.data(), vertices_.capacity() * sizeof(std::uint32_t));
+    advise_huge_pages(neighbours_.data(), neighbours_.capacity() * sizeof(std::uint32_t));
+  }
+}
+
+std::size_t Tetrahedralization3::finite_tetrahedron_count() const noexcept {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < vertices_.size(); i += 4) count += vertices_[i] != kInfinite;
+  return count;
+}
+
+std::vector<std::array<std::uint32_t, 4>> Tetrahedralization3::finite_tetrahedra() const {
+  std::vector<std::array<std::uint32_t, 4>> out;
+  out.reserve(finite_tetrahedron_count());
+  for (std::size_t i = 0; i < vertices_.size(); i += 4) {
+    if (vertices_[i] == kInfinite) continue;
+    out.push_back({vertices_[i], vertices_[i + 1], vertices_[i + 2], vertices_[i + 3]});
+  }
+  return out;
+}
+
+std::uint32_t Tetrahedralization3::add_tetrahedron(std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                                                   std::uint32_t d) {
+  // Two disjoint transpositions are an even permutation: the orientation is kept.
+  if (b == kInfinite) {
+    std::swap(a, b), std::swap(c, d);
+  } else if (c == kInfinite) {
+    std::swap(a, c), std::swap(b, d);
+  } else if (d == kInfinite) {
+    std::swap(a, d), std::swap(b, c);
+  }
+  const auto t = static_cast<std::uint32_t>(tetrahedron_count());
+  vertices_.insert(vertices_.end(), {a, b, c, d});
+  neighbours_.insert(neighbours_.end(), {kNone, kNone, kNone, kNone});
+  return t;
+}
+
+void Tetrahedralization3::check_topology() const {
+  if (vertices_.size() % 4 != 0 || neighbours_.size() != vertices_.size())
+    throw InternalError("Tetrahedralization3::check_topology: " + std::to_string(vertices_.size()) +
+                        " vertex entries and " + std::to_string(neighbours_.size()) +
+                        " neighbour entries (want equal multiples of 4)");
+  if (vertices_.size() / 4 > kMaxTetrahedra)
+    throw InternalError("Tetrahedralization3::check_topology: more than kMaxTetrahedra tetrahedra");
+  const std::size_t n = points_.size();
+  const auto size = static_cast<std::uint32_t>(vertices_.size());
+  for (std::uint32_t h = 0; h < size; ++h) {
+    const std::uint32_t v = vertices_[h];
+    if (v == kInfinite) {
+      if (h % 4 != 0) topology_error(h, "the infinite vertex is not vertex 0 of its tetrahedron");
+    } else if (v >= n) {
+      topology_error(h, "vertex id " + std::to_string(v) + " out of range (" + std::to_string(n) + " points)");
+    }
+    for (std::uint32_t j = h % 4 + 1; j < 4; ++j)
+      if (v == vertices_[h - h % 4 + j])
+        topology_error(h, "vertex " + std::to_string(v) + " repeated in its tetrahedron");
+  }
+  for (std::uint32_t h = 0; h < size; ++h) {
+    const std::uint32_t g = neighbours_[h];
+    if (g >= size) topology_error(h, "no twin (" + std::to_string(g) + ")");
+    if (tetrahedron_of(g) == tetrahedron_of(h)) topology_error(h, "twin in the same tetrahedron");
+    if (neighbours_[g] != h) topology_error(h, "twin " + std::to_string(g) + " does not point back");
+    if (!reversed_facets(facet_vertices(h), facet_vertices(g)))
+      topology_error(h, "twin " + std::to_string(g) + " is not the same facet in opposite orientation");
+  }
+}
+
+}  // namespace dtlab
