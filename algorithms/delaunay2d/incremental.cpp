@@ -22,6 +22,8 @@ constexpr std::uint32_t kInf = Triangulation2::kInfinite;
 constexpr std::uint32_t kNext[3] = {1, 2, 0};
 constexpr std::uint32_t kPrev[3] = {2, 0, 1};
 
+constexpr std::size_t kGrowthChunk = 4096;  // triangles
+
 enum Mark : std::uint8_t { kUnmarked = 0, kInCavity = 1, kOutside = 2 };
 
 // The insertion engine, working on raw views of the triangulation's arrays (reserved once for
@@ -195,8 +197,13 @@ class Inserter {
     cavity_.push_back(static_cast<std::uint32_t>(count_));
     cavity_.push_back(static_cast<std::uint32_t>(count_ + 1));
     count_ += 2;
-    vertices_.resize(3 * count_);  // within the reserved capacity: v_ and n_ stay valid
-    neighbours_.resize(3 * count_);
+    if (3 * count_ > vertices_.size()) {
+      // Grow in chunks within the reserved capacity (v_ and n_ stay valid): the zeroing then
+      // lands on memory about to be written, and costs one call per chunk, not per point.
+      const std::size_t size = 3 * std::min(capacity_, count_ + kGrowthChunk);
+      vertices_.resize(size);
+      neighbours_.resize(size);
+    }
     for (std::size_t j = 0; j < k; ++j) {
       const std::uint32_t t = cavity_[j];
       BoundaryEdge& e = boundary_[j];
@@ -271,7 +278,7 @@ void delaunay2d_incremental(const PreparedPoints2& input, Triangulation2& triang
     inserter.start(0, 2, 1);
   }
   for (std::size_t r = 3; r < m; ++r) inserter.insert(static_cast<std::uint32_t>(r));
-  DTLAB_ASSERT(inserter.triangle_count() == capacity);
+  DTLAB_ASSERT(inserter.triangle_count() == capacity && vertices.size() == 3 * capacity);
 
   // Back to input ids and input order.
   for (std::uint32_t& v : vertices)
