@@ -199,22 +199,35 @@ struct Item {
 // Arranges items so that every node of the recursion (halves of floor / ceil size, alternating
 // axes down to kSameAxisBelow points) finds its first half below its median in its axis' order:
 // a k-d tree layout, built with an explicit stack by selection (O(n log n)), sorted leaves.
+template <int kAxis>
+void split_or_sort(std::span<Item> items, const Node& node, std::vector<Node>& stack) {
+  // Bitwise, not short-circuit: one branch per comparison in the selection loops.
+  const auto less = [](const Item& a, const Item& b) {
+    if constexpr (kAxis == 0) return (a.p.x < b.p.x) | ((a.p.x == b.p.x) & (a.p.y < b.p.y));
+    return (a.p.y < b.p.y) | ((a.p.y == b.p.y) & (a.p.x > b.p.x));
+  };
+  const auto first = items.begin() + node.lo, last = items.begin() + node.hi;
+  if (node.hi - node.lo <= kSameAxisBelow) {
+    std::sort(first, last, less);
+    return;
+  }
+  const std::uint32_t mid = node.lo + (node.hi - node.lo) / 2;
+  std::nth_element(first, items.begin() + mid, last, less);
+  stack.push_back({node.lo, mid, 1 - kAxis});
+  stack.push_back({mid, node.hi, 1 - kAxis});
+}
+
 void arrange(std::span<Item> items) {
   std::vector<Node> stack;
   stack.push_back({0, static_cast<std::uint32_t>(items.size()), 0});
   while (!stack.empty()) {
     const Node node = stack.back();
     stack.pop_back();
-    const std::uint32_t count = node.hi - node.lo;
-    const auto less = [axis = node.axis](const Item& a, const Item& b) { return before(a.p, b.p, axis); };
-    if (count <= kSameAxisBelow) {
-      std::sort(items.begin() + node.lo, items.begin() + node.hi, less);
-      continue;
+    if (node.axis == 0) {
+      split_or_sort<0>(items, node, stack);
+    } else {
+      split_or_sort<1>(items, node, stack);
     }
-    const std::uint32_t mid = node.lo + count / 2;
-    std::nth_element(items.begin() + node.lo, items.begin() + mid, items.begin() + node.hi, less);
-    stack.push_back({node.lo, mid, 1 - node.axis});
-    stack.push_back({mid, node.hi, 1 - node.axis});
   }
 }
 
