@@ -9,7 +9,13 @@
 // Why radial and not lexicographic: the lexicographic sweep (also exact: the largest point is a
 // hull vertex) keeps the hull of a half-plane of points, whose long edges over a flat front leave
 // fans of skinny triangles; on a grid each new point flips about sqrt(n) of them (measured:
-// 310 incircle tests per point on a 10^5 grid, 590 on collinear runs), Theta(n^1.5) in all.
+// 310 incircle tests per point on a 10^5 grid), Theta(n^1.5) in all.
+// Slow cases that remain (the Delaunay triangulation of each prefix must be kept, and a fixed
+// order cannot avoid them as a random one does): collinear runs swept along their line (each new
+// end point takes over the fan of a neighbouring run: ~530 incircle tests per point on the
+// "collinear" set of 10^5), and cocircular points off the centre (the perturbed triangulation of
+// a cocircular prefix is rebuilt unless points come in (x, y) order: quadratic on exact_circle
+// subsets). Near-ties in the order ("circle") cost exact comparisons in the sort.
 #include <algorithm>
 #include <cmath>
 #include <string>

@@ -11,13 +11,10 @@ namespace dtlab {
 
 namespace {
 
-// A point with its squared distance to the centre rounded to a double, and whether that rounding
-// was exact (common on integer grids, where ties abound and then cost nothing).
+// A point id with its squared distance to the centre rounded to a double.
 struct RadialKey {
   double key;
-  double x, y;
   std::uint32_t id;
-  bool exact;
 };
 
 // Each of the four roundings in fl(fl(dx)^2 + fl(dy)^2) has relative error at most u = 2^-53 and
@@ -37,6 +34,31 @@ expansion::Expansion<16> exact_squared_distance(double x, double y, const Vec2& 
   return expansion::sum(expansion::product(dx, dx), expansion::product(dy, dy));
 }
 
+// The squared distance of p to c in k, and whether the double is exact (as on integer grids,
+// where ties abound and then cost no expansion).
+bool rounded_exactly(const Vec2& p, const Vec2& c, double& k) noexcept {
+  double dx, dy, ex, ey, sx, sy, fx, fy, e;
+  expansion::two_diff(p.x, c.x, dx, ex);
+  expansion::two_diff(p.y, c.y, dy, ey);
+  expansion::two_product(dx, dx, sx, fx);
+  expansion::two_product(dy, dy, sy, fy);
+  expansion::two_sum(sx, sy, k, e);
+  return ex == 0.0 && ey == 0.0 && fx == 0.0 && fy == 0.0 && e == 0.0;
+}
+
+// Exact order of two points by distance to c, ties by (x, y).
+bool exactly_nearer(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
+  double ka, kb;
+  Sign s;
+  if (rounded_exactly(a, c, ka) && rounded_exactly(b, c, kb)) {
+    s = ka < kb ? Sign::Negative : ka > kb ? Sign::Positive : Sign::Zero;
+  } else {
+    s = expansion::difference(exact_squared_distance(a.x, a.y, c), exact_squared_distance(b.x, b.y, c)).sign();
+  }
+  if (s != Sign::Zero) return s == Sign::Negative;
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> radial_sweep_order(std::span<const Vec2> points, std::span<const std::uint32_t> ids,
@@ -44,27 +66,21 @@ std::vector<std::uint32_t> radial_sweep_order(std::span<const Vec2> points, std:
   std::vector<RadialKey> keys(ids.size());
   for (std::size_t k = 0; k < ids.size(); ++k) {
     const Vec2& p = points[ids[k]];
-    double dx, dy, ex, ey, sx, sy, fx, fy, d, e;
-    expansion::two_diff(p.x, center.x, dx, ex);
-    expansion::two_diff(p.y, center.y, dy, ey);
-    expansion::two_product(dx, dx, sx, fx);
-    expansion::two_product(dy, dy, sy, fy);
-    expansion::two_sum(sx, sy, d, e);
-    keys[k] = {d, p.x, p.y, ids[k], ex == 0.0 && ey == 0.0 && fx == 0.0 && fy == 0.0 && e == 0.0};
+    const double dx = p.x - center.x, dy = p.y - center.y;
+    keys[k] = {dx * dx + dy * dy, ids[k]};
   }
-  const Vec2 c = center;
-  std::sort(keys.begin(), keys.end(), [c](const RadialKey& a, const RadialKey& b) {
-    Sign s;
-    if (a.exact && b.exact) {
-      s = a.key < b.key ? Sign::Negative : a.key > b.key ? Sign::Positive : Sign::Zero;
-    } else if (std::fabs(a.key - b.key) > kRelativeError * (a.key + b.key)) {
-      s = a.key < b.key ? Sign::Negative : Sign::Positive;
-    } else {
-      s = expansion::difference(exact_squared_distance(a.x, a.y, c), exact_squared_distance(b.x, b.y, c)).sign();
-    }
-    if (s != Sign::Zero) return s == Sign::Negative;
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-  });
+  // Sort by the rounded keys, then re-sort exactly each run of keys that are pairwise closer than
+  // the rounding bound: keys farther apart than it are ordered correctly already.
+  std::sort(keys.begin(), keys.end(), [](const RadialKey& a, const RadialKey& b) { return a.key < b.key; });
+  for (std::size_t lo = 0; lo < keys.size();) {
+    std::size_t hi = lo + 1;
+    while (hi < keys.size() && keys[hi].key - keys[hi - 1].key <= kRelativeError * (keys[hi].key + keys[hi - 1].key))
+      ++hi;
+    if (hi - lo > 1)
+      std::sort(keys.begin() + static_cast<std::ptrdiff_t>(lo), keys.begin() + static_cast<std::ptrdiff_t>(hi),
+                [&](const RadialKey& a, const RadialKey& b) { return exactly_nearer(points[a.id], points[b.id], center); });
+    lo = hi;
+  }
   std::vector<std::uint32_t> order(keys.size());
   for (std::size_t k = 0; k < keys.size(); ++k) order[k] = keys[k].id;
   return order;
