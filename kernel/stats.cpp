@@ -48,10 +48,11 @@ std::string PredicateStats::to_json() const {
   std::string out = "{";
   for (std::size_t i = 0; i < kPredicateCount; ++i) {
     const StageCounts& c = counts[i];
-    if (i) out += ",";
-    out += "\"" + std::string(to_string(static_cast<Predicate>(i))) + "\":{\"semistatic\":" +
-           std::to_string(c.semistatic) + ",\"adaptive\":" + std::to_string(c.adaptive) +
-           ",\"exact\":" + std::to_string(c.exact) + ",\"perturbed\":" + std::to_string(c.perturbed) + "}";
+    if (i) out += ',';
+    out.append("\"").append(to_string(static_cast<Predicate>(i))).append("\":{\"semistatic\":");
+    out.append(std::to_string(c.semistatic)).append(",\"adaptive\":").append(std::to_string(c.adaptive));
+    out.append(",\"exact\":").append(std::to_string(c.exact)).append(",\"perturbed\":");
+    out.append(std::to_string(c.perturbed)).append("}");
   }
   return out + "}";
 }

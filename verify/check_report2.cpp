@@ -78,14 +78,17 @@ std::string to_json(const CheckReport2& r) {
     first = false;
   });
   out += "},\"problems\":[";
-  for (std::size_t i = 0; i < r.problems.size(); ++i) out += (i ? "," : "") + json_string(r.problems[i]);
+  for (std::size_t i = 0; i < r.problems.size(); ++i) {
+    if (i) out += ',';
+    out += json_string(r.problems[i]);
+  }
   return out + "]}";
 }
 
 std::string to_text(const CheckReport2& r) {
   std::string out = r.ok ? "ok:" : std::to_string(r.problem_count) + " problems:";
   for_each_count(r, [&](const char* key, std::size_t value) {
-    out += " " + std::string(key) + "=" + std::to_string(value);
+    out.append(" ").append(key).append("=").append(std::to_string(value));
   });
   out += "\n";
   for (const std::string& p : r.problems) out += "  " + p + "\n";
