@@ -27,28 +27,22 @@ bool reversed_facets(const std::array<std::uint32_t, 3>& f, const std::array<std
 }  // namespace
 
 void Tetrahedralization3::reserve_tetrahedra(std::size_t tetrahedra) {
-  const bool fresh = vertices_.capacity() < 4 * tetrahedra;
-  vertices_.reserve(4 * tetrahedra);
-  neighbours_.reserve(4 * tetrahedra);
-  if (fresh) {
-    advise_huge_pages(vertices_.data(), vertices_.capacity() * sizeof(std::uint32_t));
-    advise_huge_pages(neighbours_.data(), neighbours_.capacity() * sizeof(std::uint32_t));
-  }
+  const bool fresh = records_.capacity() < tetrahedra;
+  records_.reserve(tetrahedra);
+  if (fresh) advise_huge_pages(records_.data(), records_.capacity() * sizeof(Record));
 }
 
 std::size_t Tetrahedralization3::finite_tetrahedron_count() const noexcept {
   std::size_t count = 0;
-  for (std::size_t i = 0; i < vertices_.size(); i += 4) count += vertices_[i] != kInfinite;
+  for (const Record& r : records_) count += r.vertex[0] != kInfinite;
   return count;
 }
 
 std::vector<std::array<std::uint32_t, 4>> Tetrahedralization3::finite_tetrahedra() const {
   std::vector<std::array<std::uint32_t, 4>> out;
   out.reserve(finite_tetrahedron_count());
-  for (std::size_t i = 0; i < vertices_.size(); i += 4) {
-    if (vertices_[i] == kInfinite) continue;
-    out.push_back({vertices_[i], vertices_[i + 1], vertices_[i + 2], vertices_[i + 3]});
-  }
+  for (const Record& r : records_)
+    if (r.vertex[0] != kInfinite) out.push_back(r.vertex);
   return out;
 }
 
@@ -63,36 +57,31 @@ std::uint32_t Tetrahedralization3::add_tetrahedron(std::uint32_t a, std::uint32_
     std::swap(a, d), std::swap(b, c);
   }
   const auto t = static_cast<std::uint32_t>(tetrahedron_count());
-  vertices_.insert(vertices_.end(), {a, b, c, d});
-  neighbours_.insert(neighbours_.end(), {kNone, kNone, kNone, kNone});
+  records_.push_back({{a, b, c, d}, {kNone, kNone, kNone, kNone}});
   return t;
 }
 
 void Tetrahedralization3::check_topology() const {
-  if (vertices_.size() % 4 != 0 || neighbours_.size() != vertices_.size())
-    throw InternalError("Tetrahedralization3::check_topology: " + std::to_string(vertices_.size()) +
-                        " vertex entries and " + std::to_string(neighbours_.size()) +
-                        " neighbour entries (want equal multiples of 4)");
-  if (vertices_.size() / 4 > kMaxTetrahedra)
+  if (records_.size() > kMaxTetrahedra)
     throw InternalError("Tetrahedralization3::check_topology: more than kMaxTetrahedra tetrahedra");
   const std::size_t n = points_.size();
-  const auto size = static_cast<std::uint32_t>(vertices_.size());
+  const auto size = static_cast<std::uint32_t>(4 * records_.size());
   for (std::uint32_t h = 0; h < size; ++h) {
-    const std::uint32_t v = vertices_[h];
+    const std::uint32_t v = apex(h);
     if (v == kInfinite) {
       if (h % 4 != 0) topology_error(h, "the infinite vertex is not vertex 0 of its tetrahedron");
     } else if (v >= n) {
       topology_error(h, "vertex id " + std::to_string(v) + " out of range (" + std::to_string(n) + " points)");
     }
     for (std::uint32_t j = h % 4 + 1; j < 4; ++j)
-      if (v == vertices_[h - h % 4 + j])
+      if (v == vertex(h / 4, j))
         topology_error(h, "vertex " + std::to_string(v) + " repeated in its tetrahedron");
   }
   for (std::uint32_t h = 0; h < size; ++h) {
-    const std::uint32_t g = neighbours_[h];
+    const std::uint32_t g = twin(h);
     if (g >= size) topology_error(h, "no twin (" + std::to_string(g) + ")");
     if (tetrahedron_of(g) == tetrahedron_of(h)) topology_error(h, "twin in the same tetrahedron");
-    if (neighbours_[g] != h) topology_error(h, "twin " + std::to_string(g) + " does not point back");
+    if (twin(g) != h) topology_error(h, "twin " + std::to_string(g) + " does not point back");
     if (!reversed_facets(facet_vertices(h), facet_vertices(g)))
       topology_error(h, "twin " + std::to_string(g) + " is not the same facet in opposite orientation");
   }

@@ -1,6 +1,8 @@
 // The 3D tetrahedralization structure every 3D algorithm of dtlab builds and every caller reads
-// (book §1.3, §1.7): flat arrays of 32-bit vertex ids and neighbour facet handles, 32 bytes per
-// tetrahedron, the convex hull closed by an infinite vertex with ghost tetrahedra.
+// (book §1.3, §1.7): one flat array of 32-byte records, each the 4 vertex ids and 4 neighbour
+// facet handles (32-bit) of a tetrahedron, the convex hull closed by an infinite vertex with ghost
+// tetrahedra. Vertices and neighbours share a record, and so a cache line, because every step of
+// point location and cavity search reads both for a tetrahedron it has not seen yet.
 //
 // Numbering, drawn once (every 3D file follows it):
 //
@@ -26,12 +28,12 @@
 //      2    | v0 v3 v1
 //      3    | v0 v1 v2
 //
-//  - Tetrahedron t has vertices v0..v3 = vertices()[4t + 0..3], positively oriented.
+//  - Tetrahedron t has vertices v0..v3 = records()[t].vertex[0..3], positively oriented.
 //  - Facet handle h = 4t + i is facet i of t, opposite vertex i. Listed in kFacetVertex[i] order,
 //    the facet followed by vertex i is again a positive tetrahedron: orient3d(f0, f1, f2, vi) > 0
 //    (seen from outside t, the same facet turns clockwise). Any cyclic rotation of a facet's
 //    three vertices keeps this, and so does any even permutation of a tetrahedron's four.
-//  - neighbours()[h] is the twin of h: the same facet seen from the adjacent tetrahedron, which
+//  - records()[t].neighbour[i] is the twin of h = 4t + i: the same facet seen from the adjacent tetrahedron, which
 //    lists its three vertices in the opposite cyclic order.
 //
 // Convex hull: the infinite vertex kInfinite closes space into a 3-sphere. Across each hull facet
@@ -48,7 +50,7 @@
 // Contract between algorithms and callers. Algorithms build the structure through the mutable
 // accessors; when an algorithm returns, the structure is
 //   - compact: every stored tetrahedron is alive (no holes, no kNone anywhere);
-//   - closed: neighbours()[neighbours()[h]] == h, twins hold the same three vertices in opposite
+//   - closed: twin(twin(h)) == h, twins hold the same three vertices in opposite
 //     cyclic order, ghosts carry kInfinite at index 0 and nowhere else;
 //   - in input numbering: vertex ids are 0-based indices into points() (the input, in input
 //     order); a point that is a duplicate of an earlier one is referenced by no tetrahedron.
@@ -87,6 +89,13 @@ class Tetrahedralization3 {
       {0, 1, 2},
   }};
 
+  // One tetrahedron: vertex[i] is vertex i, neighbour[i] the twin of its facet i.
+  struct Record {
+    std::array<std::uint32_t, 4> vertex;
+    std::array<std::uint32_t, 4> neighbour;
+  };
+  static_assert(sizeof(Record) == 32);
+
   Tetrahedralization3() = default;
   // The input points, in input order (vertex id = index). No tetrahedra yet.
   explicit Tetrahedralization3(std::vector<Vec3> points) : points_(std::move(points)) {}
@@ -100,21 +109,22 @@ class Tetrahedralization3 {
   static constexpr std::uint32_t facet(std::uint32_t t, std::uint32_t i) noexcept { return 4 * t + i; }
 
   // --- Reading ------------------------------------------------------------------------------
-  // Every stored tetrahedron, ghosts included (4 entries per tetrahedron in both arrays).
-  std::size_t tetrahedron_count() const noexcept { return vertices_.size() / 4; }
-  const std::vector<std::uint32_t>& vertices() const noexcept { return vertices_; }
-  const std::vector<std::uint32_t>& neighbours() const noexcept { return neighbours_; }
+  // Every stored tetrahedron, ghosts included.
+  std::size_t tetrahedron_count() const noexcept { return records_.size(); }
+  const std::vector<Record>& records() const noexcept { return records_; }
 
-  std::uint32_t vertex(std::uint32_t t, std::uint32_t i) const noexcept { return vertices_[4 * t + i]; }
-  std::uint32_t twin(std::uint32_t h) const noexcept { return neighbours_[h]; }
+  std::uint32_t vertex(std::uint32_t t, std::uint32_t i) const noexcept { return records_[t].vertex[i]; }
+  std::uint32_t twin(std::uint32_t h) const noexcept { return records_[h >> 2].neighbour[h & 3u]; }
   // The tetrahedron across facet i of t.
   std::uint32_t adjacent(std::uint32_t t, std::uint32_t i) const noexcept {
-    return tetrahedron_of(neighbours_[4 * t + i]);
+    return tetrahedron_of(records_[t].neighbour[i]);
   }
-  bool is_ghost(std::uint32_t t) const noexcept { return vertices_[4 * t] == kInfinite; }
+  bool is_ghost(std::uint32_t t) const noexcept { return records_[t].vertex[0] == kInfinite; }
+  // The vertex opposite facet handle h (the one h's tetrahedron adds to the facet).
+  std::uint32_t apex(std::uint32_t h) const noexcept { return records_[h >> 2].vertex[h & 3u]; }
   // The three vertices of facet handle h, in kFacetVertex order.
   std::array<std::uint32_t, 3> facet_vertices(std::uint32_t h) const noexcept {
-    const std::uint32_t* v = vertices_.data() + 4 * tetrahedron_of(h);
+    const auto& v = records_[tetrahedron_of(h)].vertex;
     const auto& f = kFacetVertex[index_in_tetrahedron(h)];
     return {v[f[0]], v[f[1]], v[f[2]]};
   }
@@ -131,28 +141,23 @@ class Tetrahedralization3 {
 
   // --- Building (for algorithms; see the contract above) -------------------------------------
   std::vector<Vec3>& mutable_points() noexcept { return points_; }
-  std::vector<std::uint32_t>& mutable_vertices() noexcept { return vertices_; }
-  std::vector<std::uint32_t>& mutable_neighbours() noexcept { return neighbours_; }
+  std::vector<Record>& mutable_records() noexcept { return records_; }
   // Appends tetrahedron (a, b, c, d), which must be positive, permuted evenly so that kInfinite
   // (if present) is vertex 0, with no neighbours yet (kNone). Returns its index.
   std::uint32_t add_tetrahedron(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d);
   // Makes facets g and h twins of each other.
   void link(std::uint32_t g, std::uint32_t h) noexcept {
-    neighbours_[g] = h;
-    neighbours_[h] = g;
+    records_[g >> 2].neighbour[g & 3u] = h;
+    records_[h >> 2].neighbour[h & 3u] = g;
   }
   // Reserves room for `tetrahedra` tetrahedra (reserved memory that is never written costs no
   // physical memory on systems with lazy allocation).
   void reserve_tetrahedra(std::size_t tetrahedra);
-  void clear_tetrahedra() noexcept {
-    vertices_.clear();
-    neighbours_.clear();
-  }
+  void clear_tetrahedra() noexcept { records_.clear(); }
 
  private:
   std::vector<Vec3> points_;
-  std::vector<std::uint32_t> vertices_;
-  std::vector<std::uint32_t> neighbours_;
+  std::vector<Record> records_;
 };
 
 }  // namespace dtlab

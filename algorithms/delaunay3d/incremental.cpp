@@ -41,7 +41,13 @@ constexpr std::uint32_t kInf = T3::kInfinite;
 constexpr std::uint32_t kNone = T3::kNone;
 constexpr auto kFacet = T3::kFacetVertex;
 
-enum Mark : std::uint8_t { kUnmarked = 0, kInCavity = 1, kOutside = 2, kDead = 3 };
+// Marks live in the two top bits of vertex 3, which is never kInfinite and, below kMaxPoints,
+// never uses them: the mark is read with the vertices, in the same cache line. A tetrahedron on
+// the free list has vertex 0 = kNone.
+constexpr std::uint32_t kInCavity = 0x80000000u;
+constexpr std::uint32_t kOutside = 0x40000000u;
+constexpr std::uint32_t kMarks = kInCavity | kOutside;
+static_assert(T3::kMaxPoints < kOutside);
 
 // The insertion engine, working on raw views of the tetrahedralization's arrays and on the points
 // in insertion order: vertex ids are insertion ranks while it runs, which keeps consecutive
@@ -49,15 +55,16 @@ enum Mark : std::uint8_t { kUnmarked = 0, kInCavity = 1, kOutside = 2, kDead = 3
 // compacts.
 class Inserter {
  public:
-  Inserter(const Vec3* points, std::size_t point_count, std::vector<std::uint32_t>& vertices,
-           std::vector<std::uint32_t>& neighbours)
-      : p_(points), vertices_(vertices), neighbours_(neighbours), local_(point_count + 1, kNone) {
-    DTLAB_ASSERT(vertices.empty() && neighbours.empty());
+  Inserter(const Vec3* points, std::size_t point_count, std::vector<T3::Record>& records)
+      : p_(points), records_(records) {
+    DTLAB_ASSERT(records.empty() && point_count < kOutside);
+    local_.fill({kNone, 0});
     refresh_views();
     cavity_.reserve(256);
     outside_.reserve(256);
     boundary_.reserve(512);
-    boundary_vertices_.reserve(256);
+    hashed_.reserve(kTableSide);
+    locals_.reserve(512);
     free_.reserve(1024);
   }
 
@@ -96,40 +103,30 @@ class Inserter {
     for (const std::uint32_t hole : free_) {
       if (hole >= live) break;
       do --source;
-      while (mark_[source] == kDead);
+      while (r_[source].vertex[0] == kNone);
       move_tetrahedron(static_cast<std::uint32_t>(source), hole);
     }
     count_ = live;
     free_.clear();
-    vertices_.resize(4 * count_);
-    neighbours_.resize(4 * count_);
-    mark_.resize(count_);
+    records_.resize(count_);
   }
 
   std::size_t tetrahedron_count() const noexcept { return count_ - free_.size(); }
 
  private:
-  void refresh_views() noexcept {
-    v_ = vertices_.data();
-    n_ = neighbours_.data();
-  }
+  void refresh_views() noexcept { r_ = records_.data(); }
+  std::uint32_t& twin(std::uint32_t h) noexcept { return r_[h >> 2].neighbour[h & 3u]; }
 
   // Room for k more tetrahedra at the end. Capacity grows by a quarter when exhausted, so that a
   // regrowth costs little peak memory; the caller reserves the expected size up front.
   void grow(std::size_t k) {
-    const std::size_t need = 4 * (count_ + k);
-    if (need > T3::kMaxTetrahedra * 4)
+    const std::size_t need = count_ + k;
+    if (need > T3::kMaxTetrahedra)
       throw InternalError("incremental 3D Delaunay: more than " + std::to_string(T3::kMaxTetrahedra) +
                           " tetrahedra needed");
-    if (need > vertices_.capacity()) {
-      const std::size_t capacity = std::max(need, vertices_.capacity() + vertices_.capacity() / 4);
-      vertices_.reserve(capacity);
-      neighbours_.reserve(capacity);
-    }
-    vertices_.resize(need);
-    neighbours_.resize(need);
-    mark_.resize(count_ + k, kUnmarked);
-    count_ += k;
+    if (need > records_.capacity()) records_.reserve(std::max(need, records_.capacity() + records_.capacity() / 4));
+    records_.resize(need);
+    count_ = need;
     refresh_views();
   }
 
@@ -145,16 +142,15 @@ class Inserter {
   }
 
   void set_tetrahedron(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) noexcept {
-    std::uint32_t* v = v_ + 4 * t;
-    v[0] = a, v[1] = b, v[2] = c, v[3] = d;
+    r_[t].vertex = {a, b, c, d};
   }
-  void link(std::uint32_t g, std::uint32_t h) noexcept { n_[g] = h, n_[h] = g; }
+  void link(std::uint32_t g, std::uint32_t h) noexcept { twin(g) = h, twin(h) = g; }
 
   bool same_vertices(std::uint32_t g, std::uint32_t h) const noexcept {
     std::array<std::uint32_t, 3> a, b;
     for (std::uint32_t k = 0; k < 3; ++k) {
-      a[k] = v_[4 * (g >> 2) + kFacet[g & 3u][k]];
-      b[k] = v_[4 * (h >> 2) + kFacet[h & 3u][k]];
+      a[k] = r_[g >> 2].vertex[kFacet[g & 3u][k]];
+      b[k] = r_[h >> 2].vertex[kFacet[h & 3u][k]];
     }
     std::sort(a.begin(), a.end());
     std::sort(b.begin(), b.end());
@@ -162,24 +158,20 @@ class Inserter {
   }
 
   void move_tetrahedron(std::uint32_t from, std::uint32_t to) noexcept {
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      v_[4 * to + i] = v_[4 * from + i];
-      const std::uint32_t h = n_[4 * from + i];
-      n_[4 * to + i] = h;
-      n_[h] = 4 * to + i;
-    }
-    mark_[to] = kUnmarked;
-    mark_[from] = kDead;
+    r_[to] = r_[from];
+    for (std::uint32_t i = 0; i < 4; ++i) twin(r_[to].neighbour[i]) = 4 * to + i;
+    r_[from].vertex[0] = kNone;
   }
 
   // See the file comment for the coplanar case.
   bool conflicts(std::uint32_t t, const Vec3& p) const noexcept {
-    const std::uint32_t* v = v_ + 4 * t;
+    const std::uint32_t* v = r_[t].vertex.data();
     if (v[0] != kInf) return insphere_perturbed(p_[v[0]], p_[v[1]], p_[v[2]], p_[v[3]], p) == Sign::Positive;
     const Sign side = orient3d(p, p_[v[1]], p_[v[2]], p_[v[3]]);
     if (side != Sign::Zero) return side == Sign::Positive;
-    const std::uint32_t* w = v_ + 4 * (n_[4 * t] >> 2);  // the finite tetrahedron across the hull facet
-    return insphere_perturbed(p_[w[0]], p_[w[1]], p_[w[2]], p_[w[3]], p) == Sign::Positive;
+    // The finite tetrahedron across the hull facet (it may carry a mark).
+    const std::uint32_t* w = r_[r_[t].neighbour[0] >> 2].vertex.data();
+    return insphere_perturbed(p_[w[0]], p_[w[1]], p_[w[2]], p_[w[3] & ~kMarks], p) == Sign::Positive;
   }
 
   // Visibility walk from the last insertion to a tetrahedron in conflict with p: a finite one
@@ -188,10 +180,10 @@ class Inserter {
   std::uint32_t locate(std::uint32_t pid) const {
     const Vec3& p = p_[pid];
     std::uint32_t t = last_;
-    if (v_[4 * t] == kInf) t = n_[4 * t] >> 2;
+    if (r_[t].vertex[0] == kInf) t = r_[t].neighbour[0] >> 2;
     std::uint32_t entered = 4;  // the facet of t the walk came in through (4: none)
     for (std::size_t steps = 0; steps <= count_; ++steps) {
-      const std::uint32_t* v = v_ + 4 * t;
+      const std::uint32_t* v = r_[t].vertex.data();
       if (v[0] == kInf) return t;  // entered across its hull facet: p is strictly beyond it
       std::uint32_t next = kNone;
       for (std::uint32_t k = 1; k <= 4; ++k) {
@@ -199,7 +191,7 @@ class Inserter {
         if (i == entered) continue;
         const auto& f = kFacet[i];
         if (orient3d(p_[v[f[0]]], p_[v[f[1]]], p_[v[f[2]]], p) == Sign::Negative) {
-          next = n_[4 * t + i];
+          next = r_[t].neighbour[i];
           break;
         }
       }
@@ -218,25 +210,29 @@ class Inserter {
     cavity_.clear();
     outside_.clear();
     boundary_.clear();
-    mark_[base] = kInCavity;
+    r_[base].vertex[3] |= kInCavity;
     cavity_.push_back(base);
     for (std::size_t k = 0; k < cavity_.size(); ++k) {
       const std::uint32_t t = cavity_[k];
+      // The four neighbours are cache misses more often than not: ask for them all at once.
+      for (std::uint32_t i = 0; i < 4; ++i) __builtin_prefetch(r_ + (r_[t].neighbour[i] >> 2));
       for (std::uint32_t i = 0; i < 4; ++i) {
-        const std::uint32_t outer = n_[4 * t + i];
+        const std::uint32_t outer = r_[t].neighbour[i];
         const std::uint32_t u = outer >> 2;
-        if (mark_[u] == kUnmarked) {
+        const std::uint32_t mark = r_[u].vertex[3] & kMarks;
+        if (mark == 0) {
           if (conflicts(u, p)) {
-            mark_[u] = kInCavity;
+            r_[u].vertex[3] |= kInCavity;
             cavity_.push_back(u);
             continue;
           }
-          mark_[u] = kOutside;
+          r_[u].vertex[3] |= kOutside;
           outside_.push_back(u);
-        } else if (mark_[u] == kInCavity) {
+        } else if (mark == kInCavity) {
           continue;
         }
-        const std::uint32_t* v = v_ + 4 * t;
+        const std::uint32_t* w = r_[t].vertex.data();
+        const std::uint32_t v[4] = {w[0], w[1], w[2], w[3] & ~kMarks};
         const auto& f = kFacet[i];
         boundary_.push_back({{v[f[0]], v[f[1]], v[f[2]]}, outer});
       }
@@ -255,83 +251,89 @@ class Inserter {
       const BoundaryFacet& b = boundary_[j];
       set_tetrahedron(t, b.v[0], b.v[1], b.v[2], p);
       link(4 * t + 3, b.outer);
-      mark_[t] = kUnmarked;
       new_tetrahedra_.push_back(t);
     }
     for (std::size_t j = faces; j < cavity_size; ++j) {
-      mark_[cavity_[j]] = kDead;
+      r_[cavity_[j]].vertex[0] = kNone;
       free_.push_back(cavity_[j]);
     }
-    for (const std::uint32_t t : outside_) mark_[t] = kUnmarked;
+    for (const std::uint32_t t : outside_) r_[t].vertex[3] &= ~kMarks;
     link_ball_by_edges();
     last_ = new_tetrahedra_[0];
     for (const std::uint32_t t : new_tetrahedra_)
-      if (v_[4 * t] != kInf) {
+      if (r_[t].vertex[0] != kInf) {
         last_ = t;
         break;
       }
   }
 
-  std::uint32_t local_slot(std::uint32_t v) const noexcept {
-    return v == kInf ? static_cast<std::uint32_t>(local_.size() - 1) : v;
+  // Local number of boundary vertex v, from a small open-addressing hash table (kInfinite is
+  // a key like any other).
+  std::uint8_t local_number(std::uint32_t v) {
+    std::uint32_t h = (v * 0x9E3779B1u) >> (32 - kHashBits);
+    while (local_[h].key != v) {
+      if (local_[h].key == kNone) {
+        local_[h] = {v, static_cast<std::uint32_t>(hashed_.size())};
+        hashed_.push_back(h);
+        break;
+      }
+      h = (h + 1) & (kHashSize - 1);
+    }
+    return static_cast<std::uint8_t>(local_[h].local);
   }
 
   // Links facets 0, 1, 2 of the new tetrahedra (x0, x1, x2, P) among themselves. Facet k holds
   // P and the boundary edge x(k+1) -> x(k+2); the neighbour across it is the new tetrahedron
-  // whose boundary facet holds the same edge reversed. Boundary vertices get small local numbers,
-  // and a table indexed by (from, to) finds the reversed edge.
+  // whose boundary facet holds the same edge reversed. Boundary vertices get small local
+  // numbers, and a table indexed by (from, to) finds the reversed edge.
   void link_ball_by_edges() {
-    boundary_vertices_.clear();
-    for (const std::uint32_t t : new_tetrahedra_) {
-      for (std::uint32_t k = 0; k < 3; ++k) {
-        const std::uint32_t s = local_slot(v_[4 * t + k]);
-        if (local_[s] == kNone) {
-          local_[s] = static_cast<std::uint32_t>(boundary_vertices_.size());
-          boundary_vertices_.push_back(s);
-        }
-      }
-    }
-    const std::size_t vertices = boundary_vertices_.size();
     // The boundary is a triangulated sphere: F = 2V - 4 (Euler).
-    DTLAB_ASSERT(new_tetrahedra_.size() == 2 * vertices - 4);
-    if (vertices <= kTableSide) {
-      for (const std::uint32_t t : new_tetrahedra_) {
-        const std::uint32_t* v = v_ + 4 * t;
-        const std::uint32_t l[3] = {local_[local_slot(v[0])], local_[local_slot(v[1])], local_[local_slot(v[2])]};
-        edge_table_[l[1] * kTableSide + l[2]] = 4 * t + 0;
-        edge_table_[l[2] * kTableSide + l[0]] = 4 * t + 1;
-        edge_table_[l[0] * kTableSide + l[1]] = 4 * t + 2;
-      }
-      for (const std::uint32_t t : new_tetrahedra_) {
-        const std::uint32_t* v = v_ + 4 * t;
-        const std::uint32_t l[3] = {local_[local_slot(v[0])], local_[local_slot(v[1])], local_[local_slot(v[2])]};
-        n_[4 * t + 0] = edge_table_[l[2] * kTableSide + l[1]];
-        n_[4 * t + 1] = edge_table_[l[0] * kTableSide + l[2]];
-        n_[4 * t + 2] = edge_table_[l[1] * kTableSide + l[0]];
-      }
-    } else {
+    const std::size_t faces = new_tetrahedra_.size();
+    if (faces / 2 + 2 > kTableSide) {
       link_large_ball();
+      return;
     }
-    for (const std::uint32_t s : boundary_vertices_) local_[s] = kNone;
+    locals_.clear();
+    for (const std::uint32_t t : new_tetrahedra_) {
+      const std::uint32_t* v = r_[t].vertex.data();
+      const std::array<std::uint8_t, 3> l = {local_number(v[0]), local_number(v[1]), local_number(v[2])};
+      locals_.push_back(l);
+      edge_table_[l[1] * kTableSide + l[2]] = 4 * t + 0;
+      edge_table_[l[2] * kTableSide + l[0]] = 4 * t + 1;
+      edge_table_[l[0] * kTableSide + l[1]] = 4 * t + 2;
+    }
+    DTLAB_ASSERT(faces == 2 * hashed_.size() - 4);
+    for (std::size_t j = 0; j < faces; ++j) {
+      const std::uint32_t t = new_tetrahedra_[j];
+      const auto& l = locals_[j];
+      r_[t].neighbour[0] = edge_table_[l[2] * kTableSide + l[1]];
+      r_[t].neighbour[1] = edge_table_[l[0] * kTableSide + l[2]];
+      r_[t].neighbour[2] = edge_table_[l[1] * kTableSide + l[0]];
+    }
+    for (const std::uint32_t h : hashed_) local_[h].key = kNone;
+    hashed_.clear();
   }
 
-  // The same matching by sorting the directed edges, for balls with many boundary vertices.
+  // The same matching by sorting the directed edges by vertex ids, for large balls.
   void link_large_ball() {
     edges_.clear();
     for (const std::uint32_t t : new_tetrahedra_) {
-      const std::uint32_t* v = v_ + 4 * t;
-      const std::uint64_t l[3] = {local_[local_slot(v[0])], local_[local_slot(v[1])], local_[local_slot(v[2])]};
+      const std::uint32_t* v = r_[t].vertex.data();
       for (std::uint32_t k = 0; k < 3; ++k)
-        edges_.push_back({l[(k + 1) % 3] << 32 | l[(k + 2) % 3], 4 * t + k});
+        edges_.push_back({std::uint64_t{v[(k + 1) % 3]} << 32 | v[(k + 2) % 3], 4 * t + k});
     }
     std::sort(edges_.begin(), edges_.end(), [](const Edge& a, const Edge& b) { return a.key < b.key; });
-    for (const Edge& e : edges_) {
+    std::size_t vertices = 0;
+    for (std::size_t j = 0; j < edges_.size(); ++j) {
+      const Edge& e = edges_[j];
+      vertices += j == 0 || (e.key >> 32) != (edges_[j - 1].key >> 32);
       const std::uint64_t reversed = e.key << 32 | e.key >> 32;
       const auto it = std::lower_bound(edges_.begin(), edges_.end(), reversed,
                                        [](const Edge& x, std::uint64_t key) { return x.key < key; });
       DTLAB_ASSERT(it != edges_.end() && it->key == reversed);
-      n_[e.facet] = it->facet;
+      twin(e.facet) = it->facet;
     }
+    DTLAB_ASSERT(new_tetrahedra_.size() == 2 * vertices - 4);
   }
 
   struct BoundaryFacet {
@@ -339,24 +341,27 @@ class Inserter {
     std::uint32_t outer;             // its twin outside the cavity
   };
   struct Edge {
-    std::uint64_t key;  // local numbers (from << 32 | to)
+    std::uint64_t key;  // vertex ids (from << 32 | to)
     std::uint32_t facet;
   };
-  static constexpr std::size_t kTableSide = 64;
+  struct HashSlot {
+    std::uint32_t key;  // a vertex id, or kNone
+    std::uint32_t local;
+  };
+  static constexpr std::size_t kTableSide = 64;  // balls with at most 64 boundary vertices
+  static constexpr int kHashBits = 8;            // load at most 1/4
+  static constexpr std::size_t kHashSize = std::size_t{1} << kHashBits;
 
   const Vec3* p_;
-  std::vector<std::uint32_t>& vertices_;
-  std::vector<std::uint32_t>& neighbours_;
-  std::uint32_t* v_ = nullptr;
-  std::uint32_t* n_ = nullptr;
-  std::vector<std::uint8_t> mark_;
+  std::vector<T3::Record>& records_;
+  T3::Record* r_ = nullptr;
   std::size_t count_ = 0;  // slots in use, free ones included
   std::uint32_t last_ = 0;
   std::vector<std::uint32_t> cavity_, outside_, new_tetrahedra_, free_;
   std::vector<BoundaryFacet> boundary_;
-  // Local numbers of the boundary vertices, indexed by vertex rank (kInfinite last).
-  std::vector<std::uint32_t> local_;
-  std::vector<std::uint32_t> boundary_vertices_;
+  std::array<HashSlot, kHashSize> local_;
+  std::vector<std::uint32_t> hashed_;  // the used slots of local_
+  std::vector<std::array<std::uint8_t, 3>> locals_;
   std::array<std::uint32_t, kTableSide * kTableSide> edge_table_{};
   std::vector<Edge> edges_;
 };
@@ -380,14 +385,13 @@ void delaunay3d_incremental(const PreparedPoints3& input, const Delaunay3dOption
   const Sign orientation = orient3d(points[0], points[1], points[2], points[3]);
   DTLAB_ASSERT(orientation != Sign::Zero);
 
-  std::vector<std::uint32_t>& vertices = tetrahedralization.mutable_vertices();
-  std::vector<std::uint32_t>& neighbours = tetrahedralization.mutable_neighbours();
+  std::vector<T3::Record>& records = tetrahedralization.mutable_records();
   tetrahedralization.clear_tetrahedra();
   // About 6.7 tetrahedra per point for uniform points; memory reserved but never written costs
   // nothing, so reserve above that.
   tetrahedralization.reserve_tetrahedra(std::min<std::size_t>(7 * m + m / 2 + 64, T3::kMaxTetrahedra));
 
-  Inserter inserter(points.data(), m, vertices, neighbours);
+  Inserter inserter(points.data(), m, records);
   if (orientation == Sign::Positive) {
     inserter.start(0, 1, 2, 3);
   } else {
@@ -397,8 +401,9 @@ void delaunay3d_incremental(const PreparedPoints3& input, const Delaunay3dOption
   inserter.finish();
 
   // Back to input ids and input order.
-  for (std::uint32_t& v : vertices)
-    if (v != kInf) v = order[v];
+  for (T3::Record& r : records)
+    for (std::uint32_t& v : r.vertex)
+      if (v != kInf) v = order[v];
   std::copy(input.points.begin(), input.points.end(), points.begin());
 }
 

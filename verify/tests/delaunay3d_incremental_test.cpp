@@ -222,7 +222,7 @@ TEST(Tetrahedralization3, CheckTopologyNamesTheBrokenFacet) {
   ASSERT_NO_THROW(tet.check_topology());
   EXPECT_EQ(tet.tetrahedron_count(), tet.finite_tetrahedron_count() + 6);  // hull: a bipyramid, 6 facets
   T3 broken = tet;
-  broken.mutable_neighbours()[5] = broken.mutable_neighbours()[6];
+  broken.mutable_records()[1].neighbour[1] = broken.mutable_records()[1].neighbour[2];
   try {
     broken.check_topology();
     FAIL() << "no error";
@@ -230,10 +230,10 @@ TEST(Tetrahedralization3, CheckTopologyNamesTheBrokenFacet) {
     EXPECT_NE(std::string(e.what()).find("facet"), std::string::npos);
   }
   broken = tet;
-  broken.mutable_vertices()[1] = kInf;
+  broken.mutable_records()[0].vertex[1] = kInf;
   EXPECT_THROW(broken.check_topology(), InternalError);
   broken = tet;
-  std::swap(broken.mutable_vertices()[0], broken.mutable_vertices()[1]);  // twins no longer reversed
+  std::swap(broken.mutable_records()[0].vertex[0], broken.mutable_records()[0].vertex[1]);  // twins no longer reversed
   EXPECT_THROW(broken.check_topology(), InternalError);
 }
 
@@ -369,6 +369,23 @@ TEST(Delaunay3dIncremental, IntegerPointsOnASphere) {
     std::mt19937 rng(static_cast<unsigned>(radius));
     std::shuffle(Q.begin(), Q.end(), rng);
     EXPECT_EQ(geometric_set(run(Q).tetrahedralization), geometric_set(r.tetrahedralization)) << "radius " << radius;
+  }
+}
+
+TEST(Delaunay3dIncremental, SphereCentreOpensOneLargeCavity) {
+  // Every tetrahedron of cospherical points has the centre inside its sphere: inserting the centre
+  // replaces all finite tetrahedra at once (a ball with hundreds of boundary vertices).
+  for (const int radius : {21, 45}) {
+    auto P = sphere_points(radius);
+    P.push_back({0, 0, 0});
+    const auto r = run(P);
+    EXPECT_EQ(delaunay_problems(r, true), "") << "radius " << radius;
+    // The centre is joined to every hull facet: the finite tetrahedra are exactly the cones.
+    const auto centre = static_cast<std::uint32_t>(P.size() - 1);
+    std::size_t cones = 0;
+    for (const Tet& t : r.tetrahedralization.finite_tetrahedra())
+      cones += std::find(t.begin(), t.end(), centre) != t.end();
+    EXPECT_EQ(cones, r.tetrahedralization.finite_tetrahedron_count());
   }
 }
 
