@@ -27,6 +27,7 @@ import json
 import os
 import platform
 import resource
+import signal
 import subprocess
 import sys
 
@@ -48,17 +49,19 @@ def list_variants(dtlab):
 
 
 def run_once(cmd, timeout):
-    """(JSON record of the last '{' line of stdout, process CPU seconds) or (None, error text)."""
+    """(JSON record of the last '{' line of stdout, None) or (None, error text)."""
     # Through a shell that forks the program: Linux carries a process's peak RSS across exec,
     # so a program forked from this Python process would report Python's resident size as its
-    # floor (about 14 MB); forked from the shell, its floor is the shell's (about 1 MB).
-    proc = subprocess.Popen(["sh", "-c", '"$@"; exit $?', "sh"] + cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    # floor (about 14 MB); forked from the shell, its floor is the shell's (about 1 MB). A
+    # session of its own, so that a timeout kills the program and not only the shell.
+    proc = subprocess.Popen(["sh", "-c", '"$@"; exit $?', "sh"] + cmd, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, start_new_session=True)
     try:
         out, err = proc.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
-        proc.kill()
+        os.killpg(proc.pid, signal.SIGKILL)
         proc.communicate()
-        return None, f"timed out after {timeout} s"
+        return None, f"timed out after {timeout:g} s"
     if proc.returncode != 0:
         return None, f"exit {proc.returncode}: {err.strip()[-300:]}"
     lines = [line for line in out.splitlines() if line.startswith("{")]
@@ -79,29 +82,37 @@ def command(args, program, n, distribution):
     return [args.dtlab, "delaunay"] + common + ["--algo", program, "--stats"]
 
 
-def measure(args, programs, cases):
-    """Raw records: one per (n, distribution, program, run)."""
+def measure(args, programs, cases, save):
+    """Raw records: one per (n, distribution, program, run). A program that timed out or took
+    more than --slow seconds on a case is not run again on it."""
     records = []
     for n, distribution in cases:
+        done = set()
         for run in range(args.runs):
             for program in programs:
+                if program in done:
+                    continue
                 cmd = command(args, program, n, distribution)
                 # communicate() reaps the child, whose rusage then joins RUSAGE_CHILDREN.
                 cpu_before = children_cpu()
-                result, error = run_once(cmd, args.timeout)
+                result, error = run_once(cmd, args.timeout * max(1.0, n / 1e6))
                 cpu = children_cpu() - cpu_before
                 rec = {"n": n, "distribution": distribution, "program": program, "run": run,
                        "command": " ".join(cmd), "process_cpu_seconds": cpu}
                 if error:
                     rec["error"] = error
+                    done.add(program)
                     progress(f"  n={n} {distribution} {program} run {run + 1}: ERROR {error}")
                 else:
-                    rec.update({k: result.get(k) for k in ("points", "elements", "seconds",
-                                                           "elements_per_minute", "peak_rss_mb",
-                                                           "cgal_version") if k in result})
+                    rec.update({k: result[k] for k in ("points", "elements", "seconds",
+                                                       "elements_per_minute", "peak_rss_mb",
+                                                       "cgal_version") if k in result})
+                    if result["seconds"] > args.slow:
+                        done.add(program)
                     progress(f"  n={n} {distribution} {program} run {run + 1}/{args.runs}: "
                              f"{result['seconds']:.3f} s, {result['peak_rss_mb']:.0f} MB")
                 records.append(rec)
+        save(records)
     return records
 
 
@@ -135,7 +146,7 @@ def size_label(n):
     return f"10^{len(digits) - 1}" if digits[0] == "1" and set(digits[1:]) <= {"0"} else digits
 
 
-def table(summary, programs, cases):
+def table(summary, programs, cases, runs):
     head = ["n", "distribution", "program", "seconds", "Mtriangles/min", "peak MB", "time / CGAL",
             "time / uniform", "process CPU s"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
@@ -159,11 +170,14 @@ def table(summary, programs, cases):
             name = f"**{program}**" if program == CGAL else program
             lines.append("| " + " | ".join([
                 size_label(n),
-                distribution, name, fmt(s["seconds"]), fmt(per_minute), fmt(s["mb"]),
+                distribution, name, fmt(s["seconds"]) + (" †" if s["runs"] < runs else ""), fmt(per_minute), fmt(s["mb"]),
                 fmt(ratio_cgal, 2), fmt(ratio_uniform, 2), fmt(s["cpu"])]) + " |")
             if s["errors"]:
                 notes.append(f"{program} on {distribution} n={n}: {len(s['errors'])} failed run(s): "
                              f"{s['errors'][0]}")
+        short = [p for p in programs if 0 < summary.get((n, distribution, p), {}).get("runs", runs) < runs]
+        if short and not any(note.startswith("†") for note in notes):
+            notes.append(f"† fewer runs than {runs}: a run longer than the --slow limit is not repeated")
         if len(counts) > 1:
             notes.append(f"n={n} {distribution}: the programs disagree on the number of triangles "
                          f"({sorted(counts)})")
@@ -178,7 +192,7 @@ def shell(cmd, cwd=None):
         return "unknown"
 
 
-def machine():
+def machine(dtlab):
     model = "unknown CPU"
     for line in shell(["lscpu"]).splitlines():
         if line.startswith("Model name:"):
@@ -186,13 +200,14 @@ def machine():
     return {"cpu": model, "cpus": os.cpu_count(), "load_average": list(os.getloadavg()),
             "compiler": shell(["g++", "--version"]).splitlines()[0] if shell(["g++", "--version"]) else "unknown",
             "commit": shell(["git", "describe", "--always", "--dirty", "--abbrev=12"], cwd=ROOT),
+            "dtlab_version": shell([dtlab, "--version"]),
             "system": platform.platform()}
 
 
 def machine_line(m, runs, seed):
     load = ", ".join(f"{x:.1f}" for x in m.get("load_average", []))
     return (f"Machine: {m['cpu']}, {m['cpus']} CPUs (load average {load} at the start); "
-            f"compiler {m['compiler']}; dtlab {m['commit']}; CGAL {m.get('cgal', 'unknown')}. "
+            f"compiler {m['compiler']}; `{m.get('dtlab_version', 'dtlab')}` (tree at {m['commit']}); CGAL {m.get('cgal', 'unknown')}. "
             f"One process per run, points seed {seed}; seconds: minimum of {runs} runs, "
             f"peak MB: maximum; ratios of minima from this one invocation.")
 
@@ -201,7 +216,7 @@ def markdown(data):
     programs = data["programs"]
     cases = [tuple(c) for c in data["cases"]]
     summary = summarise(data["records"])
-    body, notes = table(summary, programs, cases)
+    body, notes = table(summary, programs, cases, data["runs"])
     text = machine_line(data["machine"], data["runs"], data["seed"]) + "\n\n" + body + "\n"
     if notes:
         text += "\n" + "\n".join(f"- {note}" for note in notes) + "\n"
@@ -242,7 +257,10 @@ def main():
     ap.add_argument("--no-cgal", action="store_true")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--timeout", type=float, default=900, help="seconds per run")
+    ap.add_argument("--timeout", type=float, default=600,
+                    help="seconds per run of 10^6 points (scaled up with n); a run past it is killed")
+    ap.add_argument("--slow", type=float, default=60,
+                    help="a run longer than this (seconds) is not repeated")
     ap.add_argument("--json", help="write the measurements here (default BUILD/bench_delaunay2d.json)")
     ap.add_argument("--from-json", help="print the table of an earlier run instead of measuring")
     ap.add_argument("--update-readme", action="store_true", help="write the table into README.md")
@@ -264,16 +282,21 @@ def main():
                  for d in args.distributions.split(",") if d]
         if args.large:
             cases.append((10_000_000, "uniform"))
-        m = machine()
+        m = machine(args.dtlab)
         progress(f"{len(cases)} cases x {len(programs)} programs x {args.runs} runs: {', '.join(programs)}")
-        records = measure(args, programs, cases)
-        m["load_average_end"] = list(os.getloadavg())
-        m["cgal"] = next((r["cgal_version"] for r in records if "cgal_version" in r), "not run")
-        data = {"machine": m, "programs": programs, "cases": cases, "runs": args.runs,
-                "seed": args.seed, "records": records}
         path = args.json or os.path.join(args.build, "bench_delaunay2d.json")
-        with open(path, "w") as f:
-            json.dump(data, f, indent=1)
+        data = {"machine": m, "programs": programs, "cases": cases, "runs": args.runs,
+                "seed": args.seed, "records": []}
+
+        def save(records):
+            data["records"] = records
+            data["machine"]["load_average_end"] = list(os.getloadavg())
+            data["machine"]["cgal"] = next((r["cgal_version"] for r in records if "cgal_version" in r),
+                                           "not run")
+            with open(path, "w") as f:
+                json.dump(data, f, indent=1)
+
+        measure(args, programs, cases, save)
         progress(f"wrote {path}")
 
     text = markdown(data)
