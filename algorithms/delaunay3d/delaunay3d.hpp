@@ -44,7 +44,9 @@ struct Delaunay3dResult {
 
 // Throws InputError for an unknown algorithm (the message lists the known ones), for a point
 // with a NaN, infinite or out-of-range coordinate (naming the point), for threads == 0, or for
-// more than Tetrahedralization3::kMaxPoints points.
+// more than Tetrahedralization3::kMaxPoints points, or when the result would need more than
+// Tetrahedralization3::kMaxTetrahedra tetrahedra (possible only for very large, very degenerate
+// inputs such as points on the moment curve).
 Delaunay3dResult delaunay3d(std::span<const Vec3> points, const Delaunay3dOptions& options = {});
 
 }  // namespace dtlab

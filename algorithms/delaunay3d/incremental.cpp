@@ -121,9 +121,9 @@ class Inserter {
   // regrowth costs little peak memory; the caller reserves the expected size up front.
   void grow(std::size_t k) {
     const std::size_t need = count_ + k;
-    if (need > T3::kMaxTetrahedra)
-      throw InternalError("incremental 3D Delaunay: more than " + std::to_string(T3::kMaxTetrahedra) +
-                          " tetrahedra needed");
+    if (need > T3::kMaxTetrahedra)  // a size limit of the input, not a bug
+      throw InputError("the Delaunay tetrahedralization of these points needs more than " +
+                       std::to_string(T3::kMaxTetrahedra) + " tetrahedra (32-bit facet handles)");
     if (need > records_.capacity()) records_.reserve(std::max(need, records_.capacity() + records_.capacity() / 4));
     records_.resize(need);
     count_ = need;
@@ -202,6 +202,14 @@ class Inserter {
                         ") exceeded its bound of " + std::to_string(count_) + " steps");
   }
 
+  // Neighbours are cache misses more often than not: ask for them when t enters the queue, so
+  // that they have arrived when t is processed.
+  void enter_cavity(std::uint32_t t) noexcept {
+    r_[t].vertex[3] |= kInCavity;
+    cavity_.push_back(t);
+    for (std::uint32_t i = 0; i < 4; ++i) __builtin_prefetch(r_ + (r_[t].neighbour[i] >> 2));
+  }
+
   // C_P by breadth-first search from the base over adjacency (the cavity is connected). Every
   // facet of a cavity tetrahedron is looked at once, so the boundary facets come out on the way,
   // each as the cavity tetrahedron lists it (counter-clockwise seen from P).
@@ -210,20 +218,16 @@ class Inserter {
     cavity_.clear();
     outside_.clear();
     boundary_.clear();
-    r_[base].vertex[3] |= kInCavity;
-    cavity_.push_back(base);
+    enter_cavity(base);
     for (std::size_t k = 0; k < cavity_.size(); ++k) {
       const std::uint32_t t = cavity_[k];
-      // The four neighbours are cache misses more often than not: ask for them all at once.
-      for (std::uint32_t i = 0; i < 4; ++i) __builtin_prefetch(r_ + (r_[t].neighbour[i] >> 2));
       for (std::uint32_t i = 0; i < 4; ++i) {
         const std::uint32_t outer = r_[t].neighbour[i];
         const std::uint32_t u = outer >> 2;
         const std::uint32_t mark = r_[u].vertex[3] & kMarks;
         if (mark == 0) {
           if (conflicts(u, p)) {
-            r_[u].vertex[3] |= kInCavity;
-            cavity_.push_back(u);
+            enter_cavity(u);
             continue;
           }
           r_[u].vertex[3] |= kOutside;
