@@ -61,7 +61,6 @@ class Inserter {
     local_.fill({kNone, 0});
     refresh_views();
     cavity_.reserve(256);
-    outside_.reserve(256);
     boundary_.reserve(512);
     hashed_.reserve(kTableSide);
     locals_.reserve(512);
@@ -216,7 +215,6 @@ class Inserter {
   void grow_cavity(std::uint32_t base, std::uint32_t pid) {
     const Vec3& p = p_[pid];
     cavity_.clear();
-    outside_.clear();
     boundary_.clear();
     enter_cavity(base);
     for (std::size_t k = 0; k < cavity_.size(); ++k) {
@@ -230,8 +228,7 @@ class Inserter {
             enter_cavity(u);
             continue;
           }
-          r_[u].vertex[3] |= kOutside;
-          outside_.push_back(u);
+          r_[u].vertex[3] |= kOutside;  // cleared when B_P links to it
         } else if (mark == kInCavity) {
           continue;
         }
@@ -255,13 +252,13 @@ class Inserter {
       const BoundaryFacet& b = boundary_[j];
       set_tetrahedron(t, b.v[0], b.v[1], b.v[2], p);
       link(4 * t + 3, b.outer);
+      r_[b.outer >> 2].vertex[3] &= ~kMarks;  // every tetrahedron marked outside is behind some facet
       new_tetrahedra_.push_back(t);
     }
     for (std::size_t j = faces; j < cavity_size; ++j) {
       r_[cavity_[j]].vertex[0] = kNone;
       free_.push_back(cavity_[j]);
     }
-    for (const std::uint32_t t : outside_) r_[t].vertex[3] &= ~kMarks;
     link_ball_by_edges();
     last_ = new_tetrahedra_[0];
     for (const std::uint32_t t : new_tetrahedra_)
@@ -361,7 +358,7 @@ class Inserter {
   T3::Record* r_ = nullptr;
   std::size_t count_ = 0;  // slots in use, free ones included
   std::uint32_t last_ = 0;
-  std::vector<std::uint32_t> cavity_, outside_, new_tetrahedra_, free_;
+  std::vector<std::uint32_t> cavity_, new_tetrahedra_, free_;
   std::vector<BoundaryFacet> boundary_;
   std::array<HashSlot, kHashSize> local_;
   std::vector<std::uint32_t> hashed_;  // the used slots of local_
