@@ -116,17 +116,21 @@ class Inserter {
   void refresh_views() noexcept { r_ = records_.data(); }
   std::uint32_t& twin(std::uint32_t h) noexcept { return r_[h >> 2].neighbour[h & 3u]; }
 
-  // Room for k more tetrahedra at the end. Capacity grows by a quarter when exhausted, so that a
-  // regrowth costs little peak memory; the caller reserves the expected size up front.
+  // k more slots in use at the end. The array's size runs ahead of count_ by chunks, so that
+  // most calls only count; its capacity grows by a quarter when exhausted, so that a regrowth
+  // costs little peak memory (the caller reserves the expected size up front).
   void grow(std::size_t k) {
     const std::size_t need = count_ + k;
-    if (need > T3::kMaxTetrahedra)  // a size limit of the input, not a bug
-      throw InputError("the Delaunay tetrahedralization of these points needs more than " +
-                       std::to_string(T3::kMaxTetrahedra) + " tetrahedra (32-bit facet handles)");
-    if (need > records_.capacity()) records_.reserve(std::max(need, records_.capacity() + records_.capacity() / 4));
-    records_.resize(need);
+    if (need > records_.size()) {
+      if (need > T3::kMaxTetrahedra)  // a size limit of the input, not a bug
+        throw InputError("the Delaunay tetrahedralization of these points needs more than " +
+                         std::to_string(T3::kMaxTetrahedra) + " tetrahedra (32-bit facet handles)");
+      const std::size_t size = std::min<std::size_t>(need + kChunk, T3::kMaxTetrahedra);
+      if (size > records_.capacity()) records_.reserve(std::max(size, records_.capacity() + records_.capacity() / 4));
+      records_.resize(size);
+      refresh_views();
+    }
     count_ = need;
-    refresh_views();
   }
 
   // A slot for a new tetrahedron: a recycled one, else a new one at the end.
@@ -349,6 +353,7 @@ class Inserter {
     std::uint32_t key;  // a vertex id, or kNone
     std::uint32_t local;
   };
+  static constexpr std::size_t kChunk = 4096;     // records added to the array at a time
   static constexpr std::size_t kTableSide = 64;  // balls with at most 64 boundary vertices
   static constexpr int kHashBits = 8;            // load at most 1/4
   static constexpr std::size_t kHashSize = std::size_t{1} << kHashBits;
