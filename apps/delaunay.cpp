@@ -63,7 +63,10 @@ int run_delaunay(const DelaunayArgs& args) {
   Delaunay2dOptions options;
   options.algorithm = args.algorithm;
   Delaunay2dResult result = delaunay2d(points, options);
-  const std::vector<std::array<std::uint32_t, 3>> triangles = result.triangulation.finite_triangles();
+  // Canonical order (each triangle from its smallest id, then sorted): every variant writes the
+  // same bytes for the same triangles.
+  const std::vector<std::array<std::uint32_t, 3>> triangles =
+      canonical_triangle_set(result.triangulation.finite_triangles());
 
   if (!result.duplicates.empty()) {
     std::cerr << "dtlab: " << result.duplicates.size()
