@@ -17,81 +17,6 @@ namespace dtlab::reference {
 
 namespace {
 
-constexpr int kMaxOrder = 5;
-
-// A square rational matrix of order n <= 5; the elimination destroys it.
-class Matrix {
- public:
-  explicit Matrix(int n) : n_(n) {
-    DTLAB_ASSERT(n >= 1 && n <= kMaxOrder);
-    for (int i = 0; i < n_; ++i)
-      for (int j = 0; j < n_; ++j) mpq_init(m_[i][j]);
-  }
-  ~Matrix() {
-    for (int i = 0; i < n_; ++i)
-      for (int j = 0; j < n_; ++j) mpq_clear(m_[i][j]);
-  }
-  Matrix(const Matrix&) = delete;
-  Matrix& operator=(const Matrix&) = delete;
-
-  void set(int i, int j, double v) {
-    if (!std::isfinite(v))
-      throw InputError("exact reference: coordinate " + std::to_string(v) + " of row " + std::to_string(i) +
-                           " is not finite",
-                       {static_cast<std::uint64_t>(i)});
-    mpq_set_d(m_[i][j], v);  // exact: a finite double is a dyadic rational
-  }
-  void set_one(int i, int j) { mpq_set_ui(m_[i][j], 1, 1); }
-
-  // Column j of row i := sum of squares of columns 0..dim-1 of row i.
-  void set_lift(int i, int j, int dim) {
-    mpq_t sq;
-    mpq_init(sq);
-    mpq_set_ui(m_[i][j], 0, 1);
-    for (int k = 0; k < dim; ++k) {
-      mpq_mul(sq, m_[i][k], m_[i][k]);
-      mpq_add(m_[i][j], m_[i][j], sq);
-    }
-    mpq_clear(sq);
-  }
-
-  // The sign of the determinant, by elimination (destroys the matrix).
-  Sign determinant_sign() {
-    int sign = 1;
-    mpq_t factor, t;
-    mpq_init(factor);
-    mpq_init(t);
-    for (int k = 0; k < n_ && sign != 0; ++k) {
-      int pivot = k;
-      while (pivot < n_ && mpq_sgn(m_[pivot][k]) == 0) ++pivot;
-      if (pivot == n_) {
-        sign = 0;
-        break;
-      }
-      if (pivot != k) {
-        for (int j = 0; j < n_; ++j) mpq_swap(m_[pivot][j], m_[k][j]);
-        sign = -sign;
-      }
-      sign *= mpq_sgn(m_[k][k]);
-      for (int i = k + 1; i < n_; ++i) {
-        if (mpq_sgn(m_[i][k]) == 0) continue;
-        mpq_div(factor, m_[i][k], m_[k][k]);
-        for (int j = k + 1; j < n_; ++j) {
-          mpq_mul(t, factor, m_[k][j]);
-          mpq_sub(m_[i][j], m_[i][j], t);
-        }
-      }
-    }
-    mpq_clear(factor);
-    mpq_clear(t);
-    return sign > 0 ? Sign::Positive : (sign < 0 ? Sign::Negative : Sign::Zero);
-  }
-
- private:
-  int n_;
-  std::array<std::array<mpq_t, kMaxOrder>, kMaxOrder> m_;
-};
-
 double coord(const Vec2& p, int k) { return k == 0 ? p.x : p.y; }
 double coord(const Vec3& p, int k) { return k == 0 ? p.x : (k == 1 ? p.y : p.z); }
 
@@ -100,13 +25,24 @@ template <class P>
 Sign homogeneous_sign(std::span<const P> points, int dim, bool lifted) {
   const int n = dim + (lifted ? 2 : 1);
   DTLAB_ASSERT(static_cast<int>(points.size()) == n);
-  Matrix m(n);
+  std::vector<std::vector<Rational>> m(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < dim; ++k) m.set(i, k, coord(points[static_cast<std::size_t>(i)], k));
-    if (lifted) m.set_lift(i, dim, dim);
-    m.set_one(i, n - 1);
+    std::vector<Rational>& row = m[static_cast<std::size_t>(i)];
+    Rational lift;
+    for (int k = 0; k < dim; ++k) {
+      const double v = coord(points[static_cast<std::size_t>(i)], k);
+      if (!std::isfinite(v)) {
+        throw InputError("exact reference: coordinate " + std::to_string(v) + " of point " + std::to_string(i) +
+                             " is not finite",
+                         {static_cast<std::uint64_t>(i)});
+      }
+      row.emplace_back(v);  // exact: a finite double is a dyadic rational
+      lift += row.back() * row.back();
+    }
+    if (lifted) row.push_back(lift);
+    row.emplace_back(1);
   }
-  return m.determinant_sign();
+  return determinant_sign(std::move(m));
 }
 
 template <class P, std::size_t N>
@@ -149,6 +85,27 @@ Sign perturbed_sign(const std::array<P, N>& points, int dim, int sign) {
 }
 
 }  // namespace
+
+Sign determinant_sign(std::vector<std::vector<Rational>> m) {
+  const std::size_t n = m.size();
+  int sign = 1;
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t pivot = k;
+    while (pivot < n && m[pivot][k].sign() == Sign::Zero) ++pivot;
+    if (pivot == n) return Sign::Zero;
+    if (pivot != k) {
+      std::swap(m[pivot], m[k]);
+      sign = -sign;
+    }
+    if (m[k][k].sign() == Sign::Negative) sign = -sign;
+    for (std::size_t i = k + 1; i < n; ++i) {
+      if (m[i][k].sign() == Sign::Zero) continue;
+      const Rational factor = m[i][k] / m[k][k];
+      for (std::size_t j = k + 1; j < n; ++j) m[i][j] -= factor * m[k][j];
+    }
+  }
+  return sign > 0 ? Sign::Positive : Sign::Negative;
+}
 
 Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
   return homogeneous_sign(std::array<Vec2, 3>{a, b, c}, 2, false);

@@ -15,7 +15,9 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
+#include "kernel/exact_rational.hpp"
 #include "kernel/sign.hpp"
 #include "kernel/vec.hpp"
 
@@ -39,5 +41,9 @@ Sign insphere_perturbed(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
 // are trivially so.
 bool all_collinear(std::span<const Vec2> points);
 bool all_coplanar(std::span<const Vec3> points);
+
+// The sign of the determinant of a square rational matrix, by Gaussian elimination with exact
+// pivots: the engine of every function above, for tests that build their own matrices.
+Sign determinant_sign(std::vector<std::vector<Rational>> m);
 
 }  // namespace dtlab::reference

@@ -3,7 +3,6 @@
 // permutations; (2) it is the sign of a real perturbation, checked against GMP rationals with
 // eps = 2^-60; (3) on cocircular and cospherical sets, the simplices it calls empty form exactly
 // one triangulation of the convex hull, whatever the order of the points or the arguments.
-#include <gmp.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,7 +14,9 @@
 #include <set>
 #include <vector>
 
+#include "kernel/exact_rational.hpp"
 #include "kernel/predicates.hpp"
+#include "verify/exact_reference.hpp"
 
 namespace dtlab {
 namespace {
@@ -196,78 +197,15 @@ TEST(Perturbation, CountsOnlyResolvedZeros) {
 
 // ---------------------------------------------------------------- (2) a real perturbation
 
-class Rat {
- public:
-  Rat() { mpq_init(v_); }
-  explicit Rat(double d) {
-    mpq_init(v_);
-    mpq_set_d(v_, d);
-  }
-  Rat(const Rat& o) {
-    mpq_init(v_);
-    mpq_set(v_, o.v_);
-  }
-  Rat& operator=(const Rat& o) {
-    mpq_set(v_, o.v_);
-    return *this;
-  }
-  ~Rat() { mpq_clear(v_); }
-  friend Rat operator+(const Rat& a, const Rat& b) {
-    Rat r;
-    mpq_add(r.v_, a.v_, b.v_);
-    return r;
-  }
-  friend Rat operator-(const Rat& a, const Rat& b) {
-    Rat r;
-    mpq_sub(r.v_, a.v_, b.v_);
-    return r;
-  }
-  friend Rat operator*(const Rat& a, const Rat& b) {
-    Rat r;
-    mpq_mul(r.v_, a.v_, b.v_);
-    return r;
-  }
-  friend Rat operator/(const Rat& a, const Rat& b) {
-    Rat r;
-    mpq_div(r.v_, a.v_, b.v_);
-    return r;
-  }
-  int sign() const { return mpq_sgn(v_); }
-
- private:
-  mpq_t v_;
-};
-
-Sign determinant_sign(std::vector<std::vector<Rat>> m) {
-  const std::size_t n = m.size();
-  int sign = 1;
-  for (std::size_t col = 0; col < n; ++col) {
-    std::size_t pivot = col;
-    while (pivot < n && m[pivot][col].sign() == 0) ++pivot;
-    if (pivot == n) return Sign::Zero;
-    if (pivot != col) {
-      std::swap(m[pivot], m[col]);
-      sign = -sign;
-    }
-    if (m[col][col].sign() < 0) sign = -sign;
-    for (std::size_t r = col + 1; r < n; ++r) {
-      if (m[r][col].sign() == 0) continue;
-      const Rat f = m[r][col] / m[col][col];
-      for (std::size_t k = col; k < n; ++k) m[r][k] = m[r][k] - f * m[col][k];
-    }
-  }
-  return static_cast<Sign>(sign);
-}
-
 // delta^rank, rank 1 for the lexicographically largest of the points.
 template <class Point, std::size_t N>
-std::array<Rat, N> perturbations(const std::array<Point, N>& p) {
-  const Rat delta(0x1p-60);
-  std::array<Rat, N> out;
+std::array<Rational, N> perturbations(const std::array<Point, N>& p) {
+  const Rational delta(0x1p-60);
+  std::array<Rational, N> out;
   for (std::size_t i = 0; i < N; ++i) {
     int rank = 1;
     for (std::size_t j = 0; j < N; ++j) rank += p[i] < p[j];
-    Rat power(1.0);
+    Rational power(1.0);
     for (int k = 0; k < rank; ++k) power = power * delta;
     out[i] = power;
   }
@@ -277,22 +215,22 @@ std::array<Rat, N> perturbations(const std::array<Point, N>& p) {
 // Rows (x, y, x^2 + y^2 + delta^rank, 1): positive iff d is inside circle(a, b, c) for a, b, c
 // counter-clockwise, like incircle.
 Sign real_perturbed(const std::array<Vec2, 4>& p) {
-  const std::array<Rat, 4> eps = perturbations(p);
-  std::vector<std::vector<Rat>> m;
+  const std::array<Rational, 4> eps = perturbations(p);
+  std::vector<std::vector<Rational>> m;
   for (std::size_t i = 0; i < 4; ++i) {
-    const Rat x(p[i].x), y(p[i].y);
-    m.push_back({x, y, x * x + y * y + eps[i], Rat(1.0)});
+    const Rational x(p[i].x), y(p[i].y);
+    m.push_back({x, y, x * x + y * y + eps[i], Rational(1.0)});
   }
-  return determinant_sign(m);
+  return reference::determinant_sign(m);
 }
 
 // Rows (x, y, z, |p|^2 + delta^rank, 1), negated: insphere's convention.
 Sign real_perturbed(const std::array<Vec3, 5>& p) {
-  const std::array<Rat, 5> eps = perturbations(p);
-  std::vector<std::vector<Rat>> m;
+  const std::array<Rational, 5> eps = perturbations(p);
+  std::vector<std::vector<Rational>> m;
   for (std::size_t i = 0; i < 5; ++i) {
-    const Rat x(p[i].x), y(p[i].y), z(p[i].z);
-    m.push_back({x, y, z, x * x + y * y + z * z + eps[i], Rat(1.0)});
+    const Rational x(p[i].x), y(p[i].y), z(p[i].z);
+    m.push_back({x, y, z, x * x + y * y + z * z + eps[i], Rational(1.0)});
   }
   return -determinant_sign(m);
 }

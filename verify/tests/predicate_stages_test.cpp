@@ -1,7 +1,6 @@
 // Each stage of the predicates on its own (semi-static, expansion, GMP), the counted slow path,
 // and the expansion arithmetic underneath, checked against a reference that shares no code with
 // them: the determinant of the lifted matrix by Gaussian elimination over GMP rationals.
-#include <gmp.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,117 +11,25 @@
 #include <string>
 #include <vector>
 
+#include "kernel/exact_rational.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/expansion.hpp"
+#include "verify/exact_reference.hpp"
 
 namespace dtlab {
 namespace {
 
-// ---------------------------------------------------------------- rational reference
-
-class Rat {
- public:
-  Rat() { mpq_init(v_); }
-  explicit Rat(double d) {
-    mpq_init(v_);
-    mpq_set_d(v_, d);
-  }
-  Rat(const Rat& o) {
-    mpq_init(v_);
-    mpq_set(v_, o.v_);
-  }
-  Rat& operator=(const Rat& o) {
-    mpq_set(v_, o.v_);
-    return *this;
-  }
-  ~Rat() { mpq_clear(v_); }
-  friend Rat operator+(const Rat& a, const Rat& b) {
-    Rat r;
-    mpq_add(r.v_, a.v_, b.v_);
-    return r;
-  }
-  friend Rat operator-(const Rat& a, const Rat& b) {
-    Rat r;
-    mpq_sub(r.v_, a.v_, b.v_);
-    return r;
-  }
-  friend Rat operator*(const Rat& a, const Rat& b) {
-    Rat r;
-    mpq_mul(r.v_, a.v_, b.v_);
-    return r;
-  }
-  friend Rat operator/(const Rat& a, const Rat& b) {
-    Rat r;
-    mpq_div(r.v_, a.v_, b.v_);
-    return r;
-  }
-  int sign() const { return mpq_sgn(v_); }
-
- private:
-  mpq_t v_;
-};
-
-// Sign of det(m), m square, by Gaussian elimination with row swaps.
-Sign determinant_sign(std::vector<std::vector<Rat>> m) {
-  const std::size_t n = m.size();
-  int sign = 1;
-  for (std::size_t col = 0; col < n; ++col) {
-    std::size_t pivot = col;
-    while (pivot < n && m[pivot][col].sign() == 0) ++pivot;
-    if (pivot == n) return Sign::Zero;
-    if (pivot != col) {
-      std::swap(m[pivot], m[col]);
-      sign = -sign;
-    }
-    if (m[col][col].sign() < 0) sign = -sign;
-    for (std::size_t r = col + 1; r < n; ++r) {
-      if (m[r][col].sign() == 0) continue;
-      const Rat f = m[r][col] / m[col][col];
-      for (std::size_t k = col; k < n; ++k) m[r][k] = m[r][k] - f * m[col][k];
-    }
-  }
-  return static_cast<Sign>(sign);
-}
-
-// Rows (p, |p|^2, 1) for the in-tests, (p, 1) for the orientations: the textbook matrices.
-Sign ref_orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
-  std::vector<std::vector<Rat>> m;
-  for (const Vec2* p : {&a, &b, &c}) m.push_back({Rat(p->x), Rat(p->y), Rat(1.0)});
-  return determinant_sign(m);
-}
-
-Sign ref_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  // det(b - a, c - a, d - a) = -det[(p, 1)] over the rows a, b, c, d.
-  std::vector<std::vector<Rat>> m;
-  for (const Vec3* p : {&a, &b, &c, &d}) m.push_back({Rat(p->x), Rat(p->y), Rat(p->z), Rat(1.0)});
-  return -determinant_sign(m);
-}
-
-Rat lift(const Vec2& p) { return Rat(p.x) * Rat(p.x) + Rat(p.y) * Rat(p.y); }
-Rat lift(const Vec3& p) { return Rat(p.x) * Rat(p.x) + Rat(p.y) * Rat(p.y) + Rat(p.z) * Rat(p.z); }
-
-Sign ref_incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  std::vector<std::vector<Rat>> m;
-  for (const Vec2* p : {&a, &b, &c, &d}) m.push_back({Rat(p->x), Rat(p->y), lift(*p), Rat(1.0)});
-  return determinant_sign(m);
-}
-
-Sign ref_insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) {
-  std::vector<std::vector<Rat>> m;
-  for (const Vec3* p : {&a, &b, &c, &d, &e}) {
-    m.push_back({Rat(p->x), Rat(p->y), Rat(p->z), lift(*p), Rat(1.0)});
-  }
-  return -determinant_sign(m);
-}
+// The rational reference (verify/exact_reference.hpp): textbook homogeneous determinants over
+// GMP rationals, a different road from the scaled-integer exact stage.
 
 // The reference's conventions are those of predicates.hpp.
 TEST(Reference, SignConventions) {
-  EXPECT_EQ(ref_orient2d({0, 0}, {1, 0}, {0, 1}), Sign::Positive);
-  EXPECT_EQ(ref_incircle({0, 0}, {1, 0}, {0, 1}, {0.25, 0.25}), Sign::Positive);
-  EXPECT_EQ(ref_incircle({0, 0}, {1, 0}, {0, 1}, {2, 2}), Sign::Negative);
-  EXPECT_EQ(ref_orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}), Sign::Positive);
-  EXPECT_EQ(ref_insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.25, 0.25, 0.25}), Sign::Positive);
-  EXPECT_EQ(ref_insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 2, 2}), Sign::Negative);
+  EXPECT_EQ(reference::orient2d({0, 0}, {1, 0}, {0, 1}), Sign::Positive);
+  EXPECT_EQ(reference::incircle({0, 0}, {1, 0}, {0, 1}, {0.25, 0.25}), Sign::Positive);
+  EXPECT_EQ(reference::incircle({0, 0}, {1, 0}, {0, 1}, {2, 2}), Sign::Negative);
+  EXPECT_EQ(reference::orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}), Sign::Positive);
+  EXPECT_EQ(reference::insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.25, 0.25, 0.25}), Sign::Positive);
+  EXPECT_EQ(reference::insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2, 2, 2}), Sign::Negative);
 }
 
 // ---------------------------------------------------------------- all stages on one input
@@ -135,19 +42,19 @@ struct Verdicts {
 
 Verdicts judge(const Vec2& a, const Vec2& b, const Vec2& c) {
   return {stage::orient2d_semistatic(a, b, c), stage::orient2d_adaptive(a, b, c),
-          stage::orient2d_exact(a, b, c), orient2d(a, b, c), ref_orient2d(a, b, c)};
+          stage::orient2d_exact(a, b, c), orient2d(a, b, c), reference::orient2d(a, b, c)};
 }
 Verdicts judge(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
   return {stage::incircle_semistatic(a, b, c, d), stage::incircle_adaptive(a, b, c, d),
-          stage::incircle_exact(a, b, c, d), incircle(a, b, c, d), ref_incircle(a, b, c, d)};
+          stage::incircle_exact(a, b, c, d), incircle(a, b, c, d), reference::incircle(a, b, c, d)};
 }
 Verdicts judge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return {stage::orient3d_semistatic(a, b, c, d), stage::orient3d_adaptive(a, b, c, d),
-          stage::orient3d_exact(a, b, c, d), orient3d(a, b, c, d), ref_orient3d(a, b, c, d)};
+          stage::orient3d_exact(a, b, c, d), orient3d(a, b, c, d), reference::orient3d(a, b, c, d)};
 }
 Verdicts judge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) {
   return {stage::insphere_semistatic(a, b, c, d, e), stage::insphere_adaptive(a, b, c, d, e),
-          stage::insphere_exact(a, b, c, d, e), insphere(a, b, c, d, e), ref_insphere(a, b, c, d, e)};
+          stage::insphere_exact(a, b, c, d, e), insphere(a, b, c, d, e), reference::insphere(a, b, c, d, e)};
 }
 
 // How often each stage was the first to decide, over a family of inputs.
@@ -221,22 +128,22 @@ TEST(Stage2, DecidesExactZeroWithLongMantissas) {
   const double s = 0x1.3c5a7e91d2b40p-3, t = 0x1.9e2d4b7c1a3f0p-3, w = 0x1.7a3b9c2d4e5f0p-4;
   const double p = 1.0, q = 1.0 + 0x1.5p-5, r = 1.0 + 0x1.9p-4;
   const Vec2 a{p, q}, b{p + s, q + t}, c{p + 2 * s, q + 2 * t};
-  ASSERT_EQ(ref_orient2d(a, b, c), Sign::Zero);
+  ASSERT_EQ(reference::orient2d(a, b, c), Sign::Zero);
   EXPECT_EQ(stage::orient2d_adaptive(a, b, c), Sign::Zero);
   // A rectangle is cocircular; a box's vertices are cospherical; a box face is coplanar.
   const Vec2 r0{p, q}, r1{p + s, q}, r2{p + s, q + t}, r3{p, q + t};
-  ASSERT_EQ(ref_incircle(r0, r1, r2, r3), Sign::Zero);
+  ASSERT_EQ(reference::incircle(r0, r1, r2, r3), Sign::Zero);
   EXPECT_FALSE(stage::incircle_semistatic(r0, r1, r2, r3));
   EXPECT_EQ(stage::incircle_adaptive(r0, r1, r2, r3), Sign::Zero);
   const Vec3 o{p, q, r}, x{p + s, q, r}, y{p, q + t, r}, z{p, q, r + w}, xy{p + s, q + t, r};
   const Vec3 xyz{p + s, q + t, r + w};
   EXPECT_EQ(stage::orient3d_adaptive(o, x, y, xy), Sign::Zero);
-  ASSERT_EQ(ref_insphere(o, x, y, z, xyz), Sign::Zero);
+  ASSERT_EQ(reference::insphere(o, x, y, z, xyz), Sign::Zero);
   EXPECT_FALSE(stage::insphere_semistatic(o, x, y, z, xyz));
   EXPECT_EQ(stage::insphere_adaptive(o, x, y, z, xyz), Sign::Zero);
   // One ulp off the sphere: the estimate decides, with the exact sign.
   const Vec3 off{p + s, q + t, std::nextafter(r + w, 2.0)};
-  EXPECT_EQ(stage::insphere_adaptive(o, x, y, z, off), ref_insphere(o, x, y, z, off));
+  EXPECT_EQ(stage::insphere_adaptive(o, x, y, z, off), reference::insphere(o, x, y, z, off));
   EXPECT_TRUE(stage::insphere_adaptive(o, x, y, z, off));
 }
 
@@ -513,7 +420,7 @@ TEST(AllStages, ExtremeMagnitudes) {
     // Octahedron around (2,2,2) of radius 1, and points inside / outside its sphere.
     const Vec3 a = map(1, 2, 2), b = map(3, 2, 2), c = map(2, 1, 2), d = map(2, 2, 1);
     const Vec3 on = map(2, 2, 3), inside = map(2, 2, 2), outside = map(3, 3, 3);
-    const Sign orientation = ref_orient3d(a, b, c, d);
+    const Sign orientation = reference::orient3d(a, b, c, d);
     ASSERT_NE(orientation, Sign::Zero);
     Tally t;
     t.add(judge(a, b, c, d, on), "on");
@@ -556,9 +463,9 @@ TEST(AllStages, ExtremeMagnitudes) {
 
 // ---------------------------------------------------------------- expansion arithmetic
 
-Rat value(const double* c, int n) {
-  Rat v(0.0);
-  for (int i = 0; i < n; ++i) v = v + Rat(c[i]);
+Rational value(const double* c, int n) {
+  Rational v(0.0);
+  for (int i = 0; i < n; ++i) v = v + Rational(c[i]);
   return v;
 }
 
@@ -587,21 +494,21 @@ TEST(Expansion, ProductsAndSumsAreExactAndNonoverlapping) {
     double v[6];
     for (double& x : v) x = std::ldexp(unit(rng), expo(rng));
     const auto p = expansion::product(v[0], v[1]);
-    EXPECT_EQ((value(p.c, p.size) - Rat(v[0]) * Rat(v[1])).sign(), 0);
+    EXPECT_EQ((value(p.c, p.size) - Rational(v[0]) * Rational(v[1])).sign(), Sign::Zero);
     const auto m = expansion::cross_difference(v[0], v[1], v[2], v[3]);
     ASSERT_TRUE(nonoverlapping(m.c, m.size));
-    EXPECT_EQ((value(m.c, m.size) - (Rat(v[0]) * Rat(v[1]) - Rat(v[2]) * Rat(v[3]))).sign(), 0);
+    EXPECT_EQ((value(m.c, m.size) - (Rational(v[0]) * Rational(v[1]) - Rational(v[2]) * Rational(v[3]))).sign(), Sign::Zero);
     const auto l = expansion::sum(expansion::square(v[4]), expansion::square(v[5]));
     const auto lm = expansion::product(l, m);
     ASSERT_TRUE(nonoverlapping(lm.c, lm.size));
-    EXPECT_EQ((value(lm.c, lm.size) - value(l.c, l.size) * value(m.c, m.size)).sign(), 0);
+    EXPECT_EQ((value(lm.c, lm.size) - value(l.c, l.size) * value(m.c, m.size)).sign(), Sign::Zero);
     const auto s = expansion::scale(lm, v[2]);
     ASSERT_TRUE(nonoverlapping(s.c, s.size));
-    EXPECT_EQ((value(s.c, s.size) - value(lm.c, lm.size) * Rat(v[2])).sign(), 0);
+    EXPECT_EQ((value(s.c, s.size) - value(lm.c, lm.size) * Rational(v[2])).sign(), Sign::Zero);
     const auto z = expansion::difference(lm, lm);
     EXPECT_EQ(z.size, 0);
     EXPECT_EQ(z.sign(), Sign::Zero);
-    EXPECT_EQ(s.sign(), static_cast<Sign>(value(s.c, s.size).sign()));
+    EXPECT_EQ(s.sign(), value(s.c, s.size).sign());
   }
 }
 
