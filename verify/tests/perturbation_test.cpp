@@ -232,7 +232,7 @@ Sign real_perturbed(const std::array<Vec3, 5>& p) {
     const Rational x(p[i].x), y(p[i].y), z(p[i].z);
     m.push_back({x, y, z, x * x + y * y + z * z + eps[i], Rational(1.0)});
   }
-  return -determinant_sign(m);
+  return -reference::determinant_sign(m);
 }
 
 TEST(Perturbation, IncircleIsTheSignOfARealPerturbation) {
