@@ -8,6 +8,7 @@
 #include "algorithms/delaunay2d/delaunay2d.hpp"
 #include "algorithms/delaunay2d/registry.hpp"
 #include "apps/cli_util.hpp"
+#include "apps/delaunay3d.hpp"
 #include "apps/input_files.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
@@ -49,9 +50,11 @@ int run_delaunay(const DelaunayArgs& args) {
   if (args.input.empty() == (args.random == 0)) {
     throw InputError("give either an INPUT file or --random N");
   }
-  if (args.dim != 2 || (!args.input.empty() && input_dimension(args.input) != 2)) {
-    throw InputError("3D Delaunay is not available yet in this build (2D inputs only)");
+  if (args.dim == 3 || (!args.input.empty() && input_dimension(args.input) == 3)) {
+    return run_delaunay3d({args.input, args.output, args.algorithm, args.stats, args.verify, args.random,
+                           args.distribution, args.seed});
   }
+  if (args.dim != 2) throw InputError("--dim must be 2 or 3, not " + std::to_string(args.dim));
   const std::string source = args.input.empty()
                                  ? "random " + args.distribution + " n=" + std::to_string(args.random) +
                                        " seed=" + std::to_string(args.seed)
