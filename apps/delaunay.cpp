@@ -66,10 +66,15 @@ int run_delaunay(const DelaunayArgs& args) {
   Delaunay2dOptions options;
   options.algorithm = args.algorithm;
   Delaunay2dResult result = delaunay2d(points, options);
+  // Memory of reading and triangulating, before any output is materialised.
+  const double peak_triangulation_mb = peak_rss_mb();
+  const std::size_t element_count = result.triangulation.finite_triangle_count();
   // Canonical order (each triangle from its smallest id, then sorted): every variant writes the
-  // same bytes for the same triangles.
-  const std::vector<std::array<std::uint32_t, 3>> triangles =
-      canonical_triangle_set(result.triangulation.finite_triangles());
+  // same bytes for the same triangles. Only built when written or verified.
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  if (!args.output.empty() || args.verify) {
+    triangles = canonical_triangle_set(result.triangulation.finite_triangles());
+  }
 
   if (!result.duplicates.empty()) {
     std::cerr << "dtlab: " << result.duplicates.size()
@@ -100,13 +105,14 @@ int run_delaunay(const DelaunayArgs& args) {
 
   if (args.stats) {
     const double seconds = result.seconds;
-    const double per_minute = seconds > 0 ? static_cast<double>(triangles.size()) * 60.0 / seconds : 0.0;
+    const double per_minute = seconds > 0 ? static_cast<double>(element_count) * 60.0 / seconds : 0.0;
     std::ostringstream json;
     json << "{\"input\":" << json_string(source) << ",\"dim\":2,\"algo\":" << json_string(args.algorithm)
          << ",\"points\":" << points.size() << ",\"distinct_points\":" << points.size() - result.duplicates.size()
-         << ",\"duplicates\":" << result.duplicates.size() << ",\"elements\":" << triangles.size()
+         << ",\"duplicates\":" << result.duplicates.size() << ",\"elements\":" << element_count
          << ",\"seconds\":" << json_number(seconds) << ",\"elements_per_minute\":" << json_number(per_minute)
-         << ",\"peak_rss_mb\":" << json_number(peak_rss_mb())
+         << ",\"peak_rss_mb\":" << json_number(peak_triangulation_mb)
+         << ",\"peak_rss_total_mb\":" << json_number(peak_rss_mb())
          << ",\"predicates\":" << result.predicate_stats.to_json() << "}";
     std::cout << json.str() << "\n";
   }
