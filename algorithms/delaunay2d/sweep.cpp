@@ -10,12 +10,26 @@
 // hull vertex) keeps the hull of a half-plane of points, whose long edges over a flat front leave
 // fans of skinny triangles; on a grid each new point flips about sqrt(n) of them (measured:
 // 310 incircle tests per point on a 10^5 grid), Theta(n^1.5) in all.
-// Slow cases that remain (the Delaunay triangulation of each prefix must be kept, and a fixed
-// order cannot avoid them as a random one does): collinear runs swept along their line (each new
-// end point takes over the fan of a neighbouring run: ~530 incircle tests per point on the
-// "collinear" set of 10^5), and cocircular points off the centre (the perturbed triangulation of
-// a cocircular prefix is rebuilt unless points come in (x, y) order: quadratic on exact_circle
-// subsets). Near-ties in the order ("circle") cost exact comparisons in the sort.
+// Cocircular points: the perturbed triangulation (perturbation.hpp) cuts off the lexicographically
+// largest point as an ear, then the next, so points added in increasing (x, y) order each join as
+// an ear without a flip, and points added against it rebuild a fan each time (quadratic: 68 s for
+// 2*10^4 exact_circle points, when the centre was the bounding box's middle, a rounding away from
+// the circle's, and the sweep ran round the circle from one side). The centre is therefore the
+// circumcentre of a seed triangle, correctly rounded (sweep_order.hpp): on a circle whose centre is
+// a pair of doubles every point ties and ties go in (x, y) order. Cocircular input whose centre is
+// not a double keeps the quadratic case: the distances to the rounded centre order the points
+// round the circle from the side the rounding points to, against (x, y) order unless that is the
+// leftmost point, and near-ties may not be reordered (a point nearer by a rounding may lie inside
+// the hull of one behind it). Measured: 19,683 integer points on the circle of centre (1, 4/3)
+// through (2, 0): 32 s and 97 million in-circle tests (incremental: 0.17 s).
+// Slow case that remains (the Delaunay triangulation of each prefix must be kept, and a fixed
+// order cannot avoid it as a random one does): collinear runs swept along their line (each new end
+// point takes over the fan of a neighbouring run: ~530 incircle tests per point on the
+// "collinear" set of 10^5). On "circle" the seed's circumcentre is off the circle's (by the
+// points' rounding over the seed's spacing squared), so the points run round the circle from one
+// side until the hull holds the centre; each new point faces a chord across the circle, and the
+// in-circle tests on such spread, near-cocircular quadruples need the exact stage (about one per
+// point: 3x incremental's time at 10^6).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -70,6 +84,7 @@ class SweepHull {
       hull_out_[v[kNext[i]]] = 1 + i;
       hash_[bucket(p_[v[i]])] = v[i];
     }
+    hull_size_ = 3;
     for (std::uint32_t i = 0; i < 3; ++i) link(3 * (1 + i) + 1, 3 * (1 + kPrev[i]) + 2);
     count_ = 4;
   }
@@ -95,14 +110,19 @@ class SweepHull {
 
     // Each visible ghost (inf, b, a) becomes the finite triangle (p, b, a): counter-clockwise as
     // p is strictly right of a -> b, and its links inside the chain stay right. The chain's inner
-    // vertices leave the hull.
+    // vertices leave the hull; p takes over their hash buckets, being their hull neighbour now.
     stack_.clear();
     for (std::uint32_t g = first;; g = next_ghost(g)) {
       v_[3 * g] = p;
       stack_.push_back(3 * g);  // edge 0, the old hull edge, opposite p
       if (g == last) break;
-      hull_out_[to(g)] = kNone;
+      const std::uint32_t inner = to(g);
+      hull_out_[inner] = kNone;
+      std::uint32_t& slot = hash_[bucket(p_[inner])];
+      if (slot == inner) slot = p;
+      --hull_size_;
     }
+    ++hull_size_;
     DTLAB_ASSERT(count_ + 2 <= capacity_);
     const std::uint32_t g1 = static_cast<std::uint32_t>(count_), g2 = g1 + 1;
     count_ += 2;
@@ -117,6 +137,7 @@ class SweepHull {
     hull_out_[p] = g2;
     hash_[bucket(q)] = p;
     hash_[bucket(p_[a0])] = a0;
+    if (2 * hull_size_ > hash_.size()) rehash(g2);
 
     legalize(p);
   }
@@ -154,26 +175,47 @@ class SweepHull {
     return std::min(b, hash_.size() - 1);
   }
 
-  // A hull ghost that p strictly sees. Start from a hull vertex hashed at p's angle or just
-  // counter-clockwise of it and walk the hull counter-clockwise from the edge ending there.
-  // Once the centre is inside the hull, the edge crossed by the ray from the centre to p is
-  // visible and close; before that the walk may go further, but never more than once around.
+  // A hull ghost that p strictly sees: from a live hull vertex hashed at or near p's angle, the
+  // two hull edges at it, then outwards in both directions at once until one is visible (a point
+  // outside the hull sees at least one edge, so the walks meet only after finding it). The walk
+  // is short when the hull vertices nearest p's angle are near the edges p sees: always once the
+  // centre is inside the hull, and on circles whenever the centre is inside the circle. A walk in
+  // one direction only goes around the hull each time the hashed vertex is on the wrong side
+  // (on "circle", where nearly all points stay on the hull: 340 orient2d calls per point at 10^5).
   std::uint32_t visible_ghost(std::uint32_t p) const {
     const Vec2& q = p_[p];
-    std::uint32_t start = kNone;
-    const std::size_t b = bucket(q);
-    for (std::size_t k = 0; k < hash_.size() && start == kNone; ++k) {
-      const std::uint32_t v = hash_[(b + k) % hash_.size()];
-      if (v != kNone && hull_out_[v] != kNone) start = prev_ghost(hull_out_[v]);
-    }
-    if (start == kNone) throw InternalError("sweep Delaunay: no hull vertex in the angle hash");
-    std::uint32_t g = start;
-    for (std::size_t steps = 0; !sees(g, q); ++steps) {
-      g = next_ghost(g);
-      if (g == start || steps > count_)
+    const std::uint32_t v = hashed_hull_vertex(q);
+    std::uint32_t ccw = hull_out_[v], cw = prev_ghost(ccw);
+    for (std::size_t steps = 0;; ++steps) {
+      if (sees(ccw, q)) return ccw;
+      if (sees(cw, q)) return cw;
+      if (steps > hull_size_)
         throw InternalError("sweep Delaunay: point (rank " + std::to_string(p) + ") sees no hull edge");
+      ccw = next_ghost(ccw), cw = prev_ghost(cw);
     }
-    return g;
+  }
+
+  // The live hull vertex in the bucket nearest q's (both ways round). The vertices hashed last,
+  // p and a0 of the latest insertion, are live, so the scan ends within one round.
+  std::uint32_t hashed_hull_vertex(const Vec2& q) const {
+    const std::size_t size = hash_.size(), b = bucket(q);
+    for (std::size_t k = 0; k <= size / 2; ++k) {
+      const std::uint32_t up = hash_[(b + k) % size], down = hash_[(b + size - k) % size];
+      if (up != kNone && hull_out_[up] != kNone) return up;
+      if (down != kNone && hull_out_[down] != kNone) return down;
+    }
+    throw InternalError("sweep Delaunay: no hull vertex in the angle hash");
+  }
+
+  // A fresh hash of four times as many buckets as the hull has vertices (refilled once it has
+  // fewer than twice as many), filled from the hull, which `ghost` is on: on near-cocircular
+  // input the hull holds most points, and with a fixed number of buckets the walk from the hashed
+  // vertex would grow with it. The sizes grow geometrically, so the refills cost O(n) in all.
+  void rehash(std::uint32_t ghost) {
+    hash_.assign(4 * hull_size_, kNone);
+    std::uint32_t g = ghost;
+    for (std::size_t k = 0; k < hull_size_; ++k, g = next_ghost(g)) hash_[bucket(p_[from(g)])] = from(g);
+    if (g != ghost) throw InternalError("sweep Delaunay: the hull is not a cycle of its size");
   }
 
   // Lawson flips of the edges opposite p (the half-edges on stack_) until each is locally
@@ -214,6 +256,7 @@ class SweepHull {
   std::size_t count_ = 0;
   Vec2 center_;
   std::vector<std::uint32_t> hull_out_;
+  std::size_t hull_size_ = 0;
   std::vector<std::uint32_t> hash_;  // a vertex per angle bucket, possibly no longer on the hull
   std::vector<std::uint32_t> stack_;
 };
