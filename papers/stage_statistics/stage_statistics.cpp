@@ -8,6 +8,7 @@
 //   stage_statistics            n = 10^5
 //   stage_statistics --large    n = 10^5 and 10^6
 //   stage_statistics --quick    n = 2000: the consistency checks only (CTest)
+//   --n N, --variant NAME, --distribution NAME: one size, one variant, one distribution.
 //
 // Exit status 1 if a check fails: all variants return the same triangles, the first variant's are
 // the Delaunay triangulation (verify/checks2d.hpp), an in-circle zero that the perturbation
@@ -16,8 +17,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,14 +58,15 @@ void print_header() {
   std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
 }
 
-void print_row(std::string_view variant, const char* distribution, std::size_t n, const Delaunay2dResult& r) {
+void print_row(std::string_view variant, const std::string& distribution, std::size_t n, const Delaunay2dResult& r) {
   const StageCounts& o = r.predicate_stats[Predicate::Orient2d];
   const StageCounts& c = r.predicate_stats[Predicate::Incircle];
   std::printf("| %.*s | %s | %zu | %.2f | %.4f | %.4f | %.4f | %.2f | %.4f | %.4f | %.4f | %.4f | %.3f |\n",
-              int(variant.size()), variant.data(), distribution, n, per_point(o.calls(), n),
+              int(variant.size()), variant.data(), distribution.c_str(), n, per_point(o.calls(), n),
               percent(o.semistatic, o.calls()), percent(o.adaptive, o.calls()), percent(o.exact, o.calls()),
               per_point(c.calls(), n), percent(c.semistatic, c.calls()), percent(c.adaptive, c.calls()),
               percent(c.exact, c.calls()), percent(c.perturbed, c.calls()), r.seconds);
+  std::fflush(stdout);  // a row at a time: some runs at 10^6 take minutes
 }
 
 // The checks that hold for any one run.
@@ -79,11 +83,13 @@ void check_run(std::string_view variant, std::string_view distribution, std::siz
     fail(variant, distribution, n, "a 3D predicate was called");
 }
 
-void run_distribution(const char* distribution, std::size_t n) {
+void run_distribution(const std::string& distribution, std::size_t n,
+                      const std::vector<const Delaunay2dVariant*>& variants) {
   const std::vector<Vec2> points = generate_points2d(distribution, n, kSeed);
   std::vector<TriangleIds> reference;  // the first variant's triangles
   std::string_view reference_variant;
-  for (const Delaunay2dVariant& variant : delaunay2d_variants()) {
+  for (const Delaunay2dVariant* v : variants) {
+    const Delaunay2dVariant& variant = *v;
     const Delaunay2dResult r = delaunay2d(points, {.algorithm = std::string(variant.name)});
     print_row(variant.name, distribution, n, r);
     check_run(variant.name, distribution, n, r);
@@ -106,15 +112,37 @@ void run_distribution(const char* distribution, std::size_t n) {
 int main(int argc, char** argv) {
   using namespace dtlab::papers;
   std::vector<std::size_t> sizes = {100'000};
+  std::vector<std::string> distributions(std::begin(kDistributions), std::end(kDistributions));
+  std::vector<const dtlab::Delaunay2dVariant*> variants;
+  for (const dtlab::Delaunay2dVariant& v : dtlab::delaunay2d_variants()) variants.push_back(&v);
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
+    const bool has_value = i + 1 < argc;
     if (std::strcmp(argv[i], "--quick") == 0) {
       quick = true;
       sizes = {2000};
     } else if (std::strcmp(argv[i], "--large") == 0) {
       sizes = {100'000, 1'000'000};
+    } else if (std::strcmp(argv[i], "--n") == 0 && has_value) {
+      sizes = {static_cast<std::size_t>(std::strtoull(argv[++i], nullptr, 10))};
+      if (sizes[0] < 3) {
+        std::fprintf(stderr, "--n needs at least 3 points\n");
+        return 2;
+      }
+    } else if (std::strcmp(argv[i], "--variant") == 0 && has_value) {
+      const dtlab::Delaunay2dVariant* v = dtlab::find_delaunay2d_variant(argv[++i]);
+      if (v == nullptr) {
+        std::fprintf(stderr, "unknown variant '%s'\n", argv[i]);
+        return 2;
+      }
+      variants = {v};
+    } else if (std::strcmp(argv[i], "--distribution") == 0 && has_value) {
+      distributions = {argv[++i]};
     } else {
-      std::fprintf(stderr, "usage: %s [--quick | --large]\n", argv[0]);
+      std::fprintf(stderr,
+                   "usage: %s [--quick | --large | --n N] [--variant NAME] [--distribution NAME]\n"
+                   "  --quick   n = 2000 (the CTest mode)\n  --large   n = 10^5 and 10^6 (default: 10^5)\n",
+                   argv[0]);
       return 2;
     }
   }
@@ -126,7 +154,7 @@ int main(int argc, char** argv) {
   print_header();
   try {
     for (const std::size_t n : sizes)
-      for (const char* distribution : kDistributions) run_distribution(distribution, n);
+      for (const std::string& distribution : distributions) run_distribution(distribution, n, variants);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
