@@ -39,7 +39,7 @@ for target in build-fuzz/fuzz/*_fuzz; do
   [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
   echo "-- $name"
   rc=0
-  "$target" -max_total_time="$fuzz_seconds" -print_final_stats=1 "$work" >"$work.log" 2>&1 || rc=$?
+  "$target" -max_total_time="$fuzz_seconds" -timeout=60 -print_final_stats=1 "$work" >"$work.log" 2>&1 || rc=$?
   grep -E "^(stat::number_of_executed_units|stat::average_exec_per_sec|Done)" "$work.log" || true
   if [ "$rc" -ne 0 ]; then tail -n 60 "$work.log"; echo "fuzz target $name failed"; exit 1; fi
   rm -rf "$work" "$work.log"
