@@ -12,6 +12,11 @@ bash scripts/install-deps.sh
 jobs=$(nproc)
 fuzz_seconds=${DTLAB_FUZZ_SECONDS:-60}
 export CCACHE_DIR=${CCACHE_DIR:-$HOME/.cache/dtlab-ccache}
+# RapidCheck draws a fresh seed per run unless told otherwise: CI uses a fixed one so that a run
+# is reproducible; set DTLAB_RC_SEED=random to explore new cases.
+if [ "${DTLAB_RC_SEED:-20261123}" != random ]; then
+  export RC_PARAMS="seed=${DTLAB_RC_SEED:-20261123}"
+fi
 step() { printf '\n==== %s (%s)\n' "$1" "$(date +%T)"; }
 
 step "Release build"
