@@ -128,6 +128,25 @@ def machine_line(data, repetitions):
             f"ns per call, CPU time, min / median of {repetitions} repetitions; ratios of minima.")
 
 
+def update_readme(path, text):
+    """Replaces what lies between the perf-predicates markers, inserting them first (inside the
+    perf-table block) if absent."""
+    with open(path) as f:
+        readme = f.read()
+    block_end = "<!-- perf-table:end -->"
+    begin, end = "<!-- perf-predicates:begin -->", "<!-- perf-predicates:end -->"
+    if begin not in readme:
+        if block_end not in readme:
+            raise SystemExit(f"{path}: marker {block_end} not found")
+        at = readme.index(block_end)
+        readme = readme[:at] + f"### Predicates\n\n{begin}\n{end}\n" + readme[at:]
+    head = readme[:readme.index(begin) + len(begin)]
+    tail = readme[readme.index(end):]
+    command = "Produced by `scripts/bench_predicates_table.py --update-readme` (bench/predicates_bench)."
+    with open(path, "w") as f:
+        f.write(head + "\n" + command + "\n\n" + text + "\n" + tail)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--binary", default=os.path.join(ROOT, "build", "bench", "predicates_bench"))
@@ -137,6 +156,8 @@ def main():
     ap.add_argument("--min-time", type=float, default=0.2, help="seconds per repetition")
     ap.add_argument("--filter", default="", help="--benchmark_filter for the run")
     ap.add_argument("--dists", default="random,near,degenerate", help="distributions shown in the caller tables")
+    ap.add_argument("--update-readme", action="store_true",
+                    help="also write the tables between <!-- perf-predicates:begin/end --> in README.md")
     args = ap.parse_args()
 
     if args.json:
@@ -151,15 +172,19 @@ def main():
     runs = collect(data)
     repetitions = max((len(e["ns"]) for e in runs.values()), default=0)
     dists = [d for d in args.dists.split(",") if d]
-    print(machine_line(data, repetitions) + "\n")
+    out = [machine_line(data, repetitions) + "\n"]
     for consumer, what in (("sum", "sign summed, no branch on it: the predicate's own cost"),
                            ("branch", "caller branches on the sign, as a walk or cavity search does")):
-        print(f"**Predicates as called** ({what}); ns per call, min / median:\n")
-        print(caller_table(runs, dists, consumer) + "\n")
+        out.append(f"**Predicates as called** ({what}); ns per call, min / median:\n")
+        out.append(caller_table(runs, dists, consumer) + "\n")
     all_dists = ["random", "near", "degenerate"]
-    print("**Stages alone** (sign summed); ns per call, min / median, and the share of cases each "
-          "filter stage leaves undecided:\n")
-    print(stage_table(runs, all_dists))
+    out.append("**Stages alone** (sign summed); ns per call, min / median, and the share of cases each "
+               "filter stage leaves undecided:\n")
+    out.append(stage_table(runs, all_dists))
+    text = "\n".join(out)
+    print(text)
+    if args.update_readme:
+        update_readme(os.path.join(ROOT, "README.md"), text)
     return 0
 
 
