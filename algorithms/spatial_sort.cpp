@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <numeric>
 #include <string>
 #include <utility>
 
@@ -318,6 +319,31 @@ std::vector<std::uint32_t> brio_order(std::span<const Vec3> points, std::span<co
   std::vector<std::uint32_t> sorted(ids.begin(), ids.end());
   hilbert_sort(points, sorted);
   return brio_order_of_sorted(sorted, seed, first_round);
+}
+
+namespace {
+template <class P>
+DistinctPoints distinct_in_hilbert_order_impl(std::span<const P> points) {
+  DistinctPoints out;
+  out.distinct.resize(points.size());
+  std::iota(out.distinct.begin(), out.distinct.end(), 0u);
+  const auto dropped = hilbert_sort_unique(points, out.distinct);
+  out.duplicates.reserve(dropped.size());
+  out.duplicate_of.reserve(dropped.size());
+  for (const auto& [duplicate, original] : dropped) {
+    out.duplicates.push_back(duplicate);
+    out.duplicate_of.push_back(original);
+  }
+  return out;
+}
+}  // namespace
+
+DistinctPoints distinct_in_hilbert_order(std::span<const Vec2> points) {
+  return distinct_in_hilbert_order_impl(points);
+}
+
+DistinctPoints distinct_in_hilbert_order(std::span<const Vec3> points) {
+  return distinct_in_hilbert_order_impl(points);
 }
 
 }  // namespace dtlab

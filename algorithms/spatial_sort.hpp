@@ -49,6 +49,17 @@ void hilbert_sort(std::span<const Vec3> points, std::span<std::uint32_t> ids);
 std::vector<std::pair<std::uint32_t, std::uint32_t>> hilbert_sort_unique(std::span<const Vec3> points,
                                                                         std::vector<std::uint32_t>& ids);
 
+// Every input index once: the distinct points (the smallest index of each coordinate tuple) in
+// Hilbert order, and the dropped duplicates (ascending) with the kept index each repeats. The
+// shared first step of the Delaunay variants' preparation, 2D and 3D.
+struct DistinctPoints {
+  std::vector<std::uint32_t> distinct;
+  std::vector<std::uint32_t> duplicates;
+  std::vector<std::uint32_t> duplicate_of;
+};
+DistinctPoints distinct_in_hilbert_order(std::span<const Vec2> points);
+DistinctPoints distinct_in_hilbert_order(std::span<const Vec3> points);
+
 // BRIO order of ids that are already in Hilbert order (hilbert_sort): a stable partition into
 // rounds keeps each round in Hilbert order. Rounds smaller than `first_round` are merged into
 // the first one.

@@ -21,16 +21,11 @@ PreparedPoints2 prepare_points2(std::span<const Vec2> points, std::uint64_t seed
   PreparedPoints2 out;
   out.points = points;
   out.seed = seed;
+  DistinctPoints split = distinct_in_hilbert_order(points);
+  out.distinct = std::move(split.distinct);
+  out.duplicates = std::move(split.duplicates);
+  out.duplicate_of = std::move(split.duplicate_of);
   std::vector<std::uint32_t>& ids = out.distinct;
-  ids.resize(points.size());
-  std::iota(ids.begin(), ids.end(), 0u);
-  const auto dropped = hilbert_sort_unique(points, ids);
-  out.duplicates.reserve(dropped.size());
-  out.duplicate_of.reserve(dropped.size());
-  for (const auto& [duplicate, original] : dropped) {
-    out.duplicates.push_back(duplicate);
-    out.duplicate_of.push_back(original);
-  }
 
   if (ids.size() < 3) {
     out.degenerate_message = "fewer than 3 distinct points (" + std::to_string(ids.size()) + " distinct among " +

@@ -51,16 +51,11 @@ PreparedPoints3 prepare_points3(std::span<const Vec3> points, std::uint64_t seed
   PreparedPoints3 out;
   out.points = points;
   out.seed = seed;
+  DistinctPoints split = distinct_in_hilbert_order(points);
+  out.distinct = std::move(split.distinct);
+  out.duplicates = std::move(split.duplicates);
+  out.duplicate_of = std::move(split.duplicate_of);
   std::vector<std::uint32_t>& ids = out.distinct;
-  ids.resize(points.size());
-  std::iota(ids.begin(), ids.end(), 0u);
-  const auto dropped = hilbert_sort_unique(points, ids);
-  out.duplicates.reserve(dropped.size());
-  out.duplicate_of.reserve(dropped.size());
-  for (const auto& [duplicate, original] : dropped) {
-    out.duplicates.push_back(duplicate);
-    out.duplicate_of.push_back(original);
-  }
 
   const std::size_t m = ids.size();
   if (m < 4) {
