@@ -18,6 +18,7 @@
 #include "bench/predicate_inputs.hpp"
 #include "dtlab/build_info.hpp"
 #include "kernel/predicates.hpp"
+#include "kernel/predicates/plain.hpp"
 
 #if DTLAB_BENCH_WITH_CGAL
 #include "bench/predicates_cgal.hpp"
@@ -26,52 +27,6 @@
 namespace dtlab::bench {
 namespace {
 
-// The baseline: semistatic.hpp's evaluation trees, with the sign of the rounded value taken as
-// is, and taken without a branch: on random input the sign is a coin flip, and a branch on it
-// would cost a misprediction that the baseline should not be charged with.
-Sign sign_without_branch(double v) { return static_cast<Sign>(int(v > 0.0) - int(v < 0.0)); }
-
-Sign plain_orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
-  const double d1x = b.x - a.x, d1y = b.y - a.y;
-  const double d2x = c.x - a.x, d2y = c.y - a.y;
-  return sign_without_branch(d1x * d2y - d1y * d2x);
-}
-
-Sign plain_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const double r0x = b.x - a.x, r0y = b.y - a.y, r0z = b.z - a.z;
-  const double r1x = c.x - a.x, r1y = c.y - a.y, r1z = c.z - a.z;
-  const double r2x = d.x - a.x, r2y = d.y - a.y, r2z = d.z - a.z;
-  return sign_without_branch((r0x * (r1y * r2z - r1z * r2y) - r1x * (r0y * r2z - r0z * r2y)) +
-                 r2x * (r0y * r1z - r0z * r1y));
-}
-
-Sign plain_incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  const double ax = a.x - d.x, ay = a.y - d.y;
-  const double bx = b.x - d.x, by = b.y - d.y;
-  const double cx = c.x - d.x, cy = c.y - d.y;
-  const double la = ax * ax + ay * ay;
-  const double lb = bx * bx + by * by;
-  const double lc = cx * cx + cy * cy;
-  return sign_without_branch((la * (bx * cy - by * cx) - lb * (ax * cy - ay * cx)) + lc * (ax * by - ay * bx));
-}
-
-Sign plain_insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) {
-  const double ax = a.x - e.x, ay = a.y - e.y, az = a.z - e.z;
-  const double bx = b.x - e.x, by = b.y - e.y, bz = b.z - e.z;
-  const double cx = c.x - e.x, cy = c.y - e.y, cz = c.z - e.z;
-  const double dx = d.x - e.x, dy = d.y - e.y, dz = d.z - e.z;
-  const double ab = ay * bz - az * by, ac = ay * cz - az * cy, ad = ay * dz - az * dy;
-  const double bc = by * cz - bz * cy, bd = by * dz - bz * dy, cd = cy * dz - cz * dy;
-  const double mbcd = (bx * cd - cx * bd) + dx * bc;
-  const double macd = (ax * cd - cx * ad) + dx * ac;
-  const double mabd = (ax * bd - bx * ad) + dx * ab;
-  const double mabc = (ax * bc - bx * ac) + cx * ab;
-  const double la = (ax * ax + ay * ay) + az * az;
-  const double lb = (bx * bx + by * by) + bz * bz;
-  const double lc = (cx * cx + cy * cy) + cz * cz;
-  const double ld = (dx * dx + dy * dy) + dz * dz;
-  return sign_without_branch(((la * mbcd - lb * macd) + lc * mabd) - ld * mabc);
-}
 
 // The predicates as a caller uses them get both consumers; the stages alone only Sum.
 template <class Case, class F>
@@ -90,7 +45,7 @@ void register_orient2d(Dist d) {
   const auto& cs = orient2d_cases(d);
   using C = Orient2dCase;
   const char* p = "orient2d";
-  add(p, "plain", d, cs, [](const C& t) { return plain_orient2d(t[0], t[1], t[2]); });
+  add(p, "plain", d, cs, [](const C& t) { return plain::orient2d(t[0], t[1], t[2]); });
   add(p, "filtered", d, cs, [](const C& t) { return orient2d(t[0], t[1], t[2]); });
   add(p, "uncounted", d, cs, [](const C& t) { return uncounted::orient2d(t[0], t[1], t[2]); });
   add(p, "semistatic", d, cs, [](const C& t) { return stage::orient2d_semistatic(t[0], t[1], t[2]); });
@@ -102,7 +57,7 @@ void register_incircle(Dist d) {
   const auto& cs = incircle_cases(d);
   using C = IncircleCase;
   const char* p = "incircle";
-  add(p, "plain", d, cs, [](const C& t) { return plain_incircle(t[0], t[1], t[2], t[3]); });
+  add(p, "plain", d, cs, [](const C& t) { return plain::incircle(t[0], t[1], t[2], t[3]); });
   add(p, "filtered", d, cs, [](const C& t) { return incircle(t[0], t[1], t[2], t[3]); });
   add(p, "uncounted", d, cs, [](const C& t) { return uncounted::incircle(t[0], t[1], t[2], t[3]); });
   add(p, "semistatic", d, cs,
@@ -115,7 +70,7 @@ void register_orient3d(Dist d) {
   const auto& cs = orient3d_cases(d);
   using C = Orient3dCase;
   const char* p = "orient3d";
-  add(p, "plain", d, cs, [](const C& t) { return plain_orient3d(t[0], t[1], t[2], t[3]); });
+  add(p, "plain", d, cs, [](const C& t) { return plain::orient3d(t[0], t[1], t[2], t[3]); });
   add(p, "filtered", d, cs, [](const C& t) { return orient3d(t[0], t[1], t[2], t[3]); });
   add(p, "uncounted", d, cs, [](const C& t) { return uncounted::orient3d(t[0], t[1], t[2], t[3]); });
   add(p, "semistatic", d, cs,
@@ -128,7 +83,7 @@ void register_insphere(Dist d) {
   const auto& cs = insphere_cases(d);
   using C = InsphereCase;
   const char* p = "insphere";
-  add(p, "plain", d, cs, [](const C& t) { return plain_insphere(t[0], t[1], t[2], t[3], t[4]); });
+  add(p, "plain", d, cs, [](const C& t) { return plain::insphere(t[0], t[1], t[2], t[3], t[4]); });
   add(p, "filtered", d, cs, [](const C& t) { return insphere(t[0], t[1], t[2], t[3], t[4]); });
   add(p, "uncounted", d, cs,
       [](const C& t) { return uncounted::insphere(t[0], t[1], t[2], t[3], t[4]); });

@@ -21,6 +21,7 @@
 
 #include "dtlab/build_info.hpp"
 #include "kernel/predicates.hpp"
+#include "kernel/predicates/plain.hpp"
 #include "kernel/stats.hpp"
 #include "papers/shewchuk1997/cases.hpp"
 #include "papers/shewchuk1997/timing.hpp"
@@ -28,47 +29,6 @@
 namespace dtlab::papers {
 namespace {
 
-// --- the baseline: semistatic.hpp's evaluation trees, sign of the rounded value, no filter ------
-
-Sign sign_without_branch(double v) { return static_cast<Sign>(int(v > 0.0) - int(v < 0.0)); }
-
-Sign plain_orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
-  const double d1x = b.x - a.x, d1y = b.y - a.y;
-  const double d2x = c.x - a.x, d2y = c.y - a.y;
-  return sign_without_branch(d1x * d2y - d1y * d2x);
-}
-
-Sign plain_incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  const double ax = a.x - d.x, ay = a.y - d.y;
-  const double bx = b.x - d.x, by = b.y - d.y;
-  const double cx = c.x - d.x, cy = c.y - d.y;
-  const double la = ax * ax + ay * ay, lb = bx * bx + by * by, lc = cx * cx + cy * cy;
-  return sign_without_branch((la * (bx * cy - by * cx) - lb * (ax * cy - ay * cx)) + lc * (ax * by - ay * bx));
-}
-
-Sign plain_orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const double r0x = b.x - a.x, r0y = b.y - a.y, r0z = b.z - a.z;
-  const double r1x = c.x - a.x, r1y = c.y - a.y, r1z = c.z - a.z;
-  const double r2x = d.x - a.x, r2y = d.y - a.y, r2z = d.z - a.z;
-  return sign_without_branch((r0x * (r1y * r2z - r1z * r2y) - r1x * (r0y * r2z - r0z * r2y)) +
-                             r2x * (r0y * r1z - r0z * r1y));
-}
-
-Sign plain_insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) {
-  const double ax = a.x - e.x, ay = a.y - e.y, az = a.z - e.z;
-  const double bx = b.x - e.x, by = b.y - e.y, bz = b.z - e.z;
-  const double cx = c.x - e.x, cy = c.y - e.y, cz = c.z - e.z;
-  const double dx = d.x - e.x, dy = d.y - e.y, dz = d.z - e.z;
-  const double ab = ay * bz - az * by, ac = ay * cz - az * cy, ad = ay * dz - az * dy;
-  const double bc = by * cz - bz * cy, bd = by * dz - bz * dy, cd = cy * dz - cz * dy;
-  const double mbcd = (bx * cd - cx * bd) + dx * bc;
-  const double macd = (ax * cd - cx * ad) + dx * ac;
-  const double mabd = (ax * bd - bx * ad) + dx * ab;
-  const double mabc = (ax * bc - bx * ac) + cx * ab;
-  const double la = (ax * ax + ay * ay) + az * az, lb = (bx * bx + by * by) + bz * bz;
-  const double lc = (cx * cx + cy * cy) + cz * cz, ld = (dx * dx + dy * dy) + dz * dz;
-  return sign_without_branch(((la * mbcd - lb * macd) + lc * mabd) - ld * mabc);
-}
 
 // --- one predicate on one input ----------------------------------------------------------------
 
@@ -174,26 +134,26 @@ std::vector<Row> measure_everything(const Settings& settings) {
   using O3 = std::array<Vec3, 4>;
   using IS = std::array<Vec3, 5>;
   measure_all<O2>(rows, "orient2d", Predicate::Orient2d, settings,
-                  implementations([](const O2& t) { return plain_orient2d(t[0], t[1], t[2]); },
+                  implementations([](const O2& t) { return plain::orient2d(t[0], t[1], t[2]); },
                                   [](const O2& t) { return orient2d(t[0], t[1], t[2]); },
                                   [](const O2& t) { return stage::orient2d_semistatic(t[0], t[1], t[2]); },
                                   [](const O2& t) { return stage::orient2d_adaptive(t[0], t[1], t[2]); },
                                   [](const O2& t) { return stage::orient2d_exact(t[0], t[1], t[2]); }));
   measure_all<IC>(rows, "incircle", Predicate::Incircle, settings,
-                  implementations([](const IC& t) { return plain_incircle(t[0], t[1], t[2], t[3]); },
+                  implementations([](const IC& t) { return plain::incircle(t[0], t[1], t[2], t[3]); },
                                   [](const IC& t) { return incircle(t[0], t[1], t[2], t[3]); },
                                   [](const IC& t) { return stage::incircle_semistatic(t[0], t[1], t[2], t[3]); },
                                   [](const IC& t) { return stage::incircle_adaptive(t[0], t[1], t[2], t[3]); },
                                   [](const IC& t) { return stage::incircle_exact(t[0], t[1], t[2], t[3]); }));
   measure_all<O3>(rows, "orient3d", Predicate::Orient3d, settings,
-                  implementations([](const O3& t) { return plain_orient3d(t[0], t[1], t[2], t[3]); },
+                  implementations([](const O3& t) { return plain::orient3d(t[0], t[1], t[2], t[3]); },
                                   [](const O3& t) { return orient3d(t[0], t[1], t[2], t[3]); },
                                   [](const O3& t) { return stage::orient3d_semistatic(t[0], t[1], t[2], t[3]); },
                                   [](const O3& t) { return stage::orient3d_adaptive(t[0], t[1], t[2], t[3]); },
                                   [](const O3& t) { return stage::orient3d_exact(t[0], t[1], t[2], t[3]); }));
   measure_all<IS>(
       rows, "insphere", Predicate::Insphere, settings,
-      implementations([](const IS& t) { return plain_insphere(t[0], t[1], t[2], t[3], t[4]); },
+      implementations([](const IS& t) { return plain::insphere(t[0], t[1], t[2], t[3], t[4]); },
                       [](const IS& t) { return insphere(t[0], t[1], t[2], t[3], t[4]); },
                       [](const IS& t) { return stage::insphere_semistatic(t[0], t[1], t[2], t[3], t[4]); },
                       [](const IS& t) { return stage::insphere_adaptive(t[0], t[1], t[2], t[3], t[4]); },
