@@ -7,6 +7,12 @@ namespace dtlab {
 // Each variant's run function lives in its own file.
 void delaunay3d_incremental(const PreparedPoints3& input, const Delaunay3dOptions& options,
                             Tetrahedralization3& tetrahedralization);
+void delaunay3d_flip(const PreparedPoints3& input, const Delaunay3dOptions& options,
+                     Tetrahedralization3& tetrahedralization);
+void delaunay3d_divide_conquer(const PreparedPoints3& input, const Delaunay3dOptions& options,
+                               Tetrahedralization3& tetrahedralization);
+void delaunay3d_parallel(const PreparedPoints3& input, const Delaunay3dOptions& options,
+                         Tetrahedralization3& tetrahedralization);
 
 namespace {
 
@@ -16,6 +22,16 @@ constexpr std::array kVariants = {
                       "visibility walk from the last insertion, cavity grown by adjacency, ball joined to its "
                       "boundary, deleted tetrahedra recycled",
                       &delaunay3d_incremental},
+    Delaunay3dVariant{"flip",
+                      "insertion by 1->4 split (4->... on a facet, edge) followed by 2->3 / 3->2 / 4->4 flips on "
+                      "the perturbed in-sphere test (Joe 1991; Edelsbrunner-Shah 1996)",
+                      &delaunay3d_flip},
+    Delaunay3dVariant{"divide-conquer", "divide and conquer (DeWall, Cignoni-Montani-Scopigno 1998)",
+                      &delaunay3d_divide_conquer},
+    Delaunay3dVariant{"parallel",
+                      "multi-threaded Delaunay kernel (--threads): Hilbert slices owned by threads, "
+                      "insertions whose cavity leaves the slice deferred (Marot-Pellerin-Remacle 2019)",
+                      &delaunay3d_parallel},
 };
 
 }  // namespace
