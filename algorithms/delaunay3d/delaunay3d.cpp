@@ -9,6 +9,10 @@
 namespace dtlab {
 
 Delaunay3dResult delaunay3d(std::span<const Vec3> points, const Delaunay3dOptions& options) {
+  return delaunay3d(std::vector<Vec3>(points.begin(), points.end()), options);
+}
+
+Delaunay3dResult delaunay3d(std::vector<Vec3>&& points, const Delaunay3dOptions& options) {
   const Delaunay3dVariant* variant = find_delaunay3d_variant(options.algorithm);
   if (variant == nullptr) {
     std::string known;
@@ -22,9 +26,9 @@ Delaunay3dResult delaunay3d(std::span<const Vec3> points, const Delaunay3dOption
   const PredicateStats before = predicate_stats();
   const auto start = std::chrono::steady_clock::now();
 
-  PreparedPoints3 prepared = prepare_points3(points, options.seed);
   Delaunay3dResult result;
-  result.tetrahedralization = Tetrahedralization3(std::vector<Vec3>(points.begin(), points.end()));
+  result.tetrahedralization = Tetrahedralization3(std::move(points));
+  PreparedPoints3 prepared = prepare_points3(result.tetrahedralization.points(), options.seed);
   if (prepared.degenerate_message.empty()) variant->run(prepared, options, result.tetrahedralization);
   result.duplicates = std::move(prepared.duplicates);
   result.duplicate_of = std::move(prepared.duplicate_of);

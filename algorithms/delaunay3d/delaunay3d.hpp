@@ -48,5 +48,8 @@ struct Delaunay3dResult {
 // Tetrahedralization3::kMaxTetrahedra tetrahedra (possible only for very large, very degenerate
 // inputs such as points on the moment curve).
 Delaunay3dResult delaunay3d(std::span<const Vec3> points, const Delaunay3dOptions& options = {});
+// The same, taking the points over instead of copying them (they come back as
+// result.tetrahedralization.points()): for large inputs, one copy fewer of the coordinates.
+Delaunay3dResult delaunay3d(std::vector<Vec3>&& points, const Delaunay3dOptions& options = {});
 
 }  // namespace dtlab

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "algorithms/delaunay3d/prepare.hpp"
+#include "algorithms/permute_in_place.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/error.hpp"
@@ -387,7 +388,12 @@ void delaunay3d_incremental(const PreparedPoints3& input, const Delaunay3dOption
   DTLAB_ASSERT(m >= 4 && simplex[3] < m);
   std::swap(order[2], order[simplex[2]]);
   std::swap(order[3], order[simplex[3]]);
-  for (std::size_t r = 0; r < m; ++r) points[r] = input.points[order[r]];
+  // The coordinates in insertion order, in place (input.points may be this very array, see
+  // registry.hpp); the duplicates, never inserted, go after the distinct points.
+  if (input.duplicates.size() + m != points.size())
+    throw InternalError("incremental 3D Delaunay: distinct and duplicate points do not partition the input");
+  order.insert(order.end(), input.duplicates.begin(), input.duplicates.end());
+  permute_in_place(std::span<Vec3>(points), order);
   const Sign orientation = orient3d(points[0], points[1], points[2], points[3]);
   DTLAB_ASSERT(orientation != Sign::Zero);
 
@@ -410,7 +416,7 @@ void delaunay3d_incremental(const PreparedPoints3& input, const Delaunay3dOption
   for (T3::Record& r : records)
     for (std::uint32_t& v : r.vertex)
       if (v != kInf) v = order[v];
-  std::copy(input.points.begin(), input.points.end(), points.begin());
+  unpermute_in_place(std::span<Vec3>(points), order);
 }
 
 }  // namespace dtlab

@@ -10,8 +10,11 @@
 // tetrahedra decide conflicts as tetrahedralization3.hpp says: strictly beyond the hull facet's
 // plane, or on it and inside the facet's circle under the same perturbation (the cofactors
 // that insphere_perturbed(a, b, c, d, p) uses for a coplanar p, with d the finite tetrahedron
-// across the hull facet; see incremental.cpp). A variant may reorder or overwrite
-// tetrahedralization.mutable_points() while it runs but must leave it equal to input.points.
+// across the hull facet; see incremental.cpp). input.points is the very array
+// tetrahedralization.points() holds (delaunay3d moves the caller's points there rather than
+// copy them): a variant may reorder tetrahedralization.mutable_points() in place while it runs
+// (input.points then shows the reordered coordinates: read what you need first) but must
+// restore input order before it returns.
 // It honours options.threads if it is parallel (predicate counts of worker threads are added to
 // the caller's thread, stats.hpp), throws InternalError on a broken invariant, never loops
 // without bound, never exits.
