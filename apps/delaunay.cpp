@@ -30,6 +30,7 @@ struct DelaunayArgs {
   int dim = 2;
   std::string distribution = "uniform";
   std::uint64_t seed = 1;
+  unsigned threads = 1;
 };
 
 std::string list_items(const std::vector<std::uint32_t>& items, const std::vector<std::uint32_t>& of,
@@ -44,6 +45,7 @@ std::string list_items(const std::vector<std::uint32_t>& items, const std::vecto
 
 int run_delaunay(const DelaunayArgs& args) {
   if (args.list) {
+    if (args.dim == 3) return list_delaunay3d_variants();
     for (const Delaunay2dVariant& v : delaunay2d_variants()) std::cout << v.name << "\t" << v.description << "\n";
     return 0;
   }
@@ -52,9 +54,10 @@ int run_delaunay(const DelaunayArgs& args) {
   }
   if (args.dim == 3 || (!args.input.empty() && input_dimension(args.input) == 3)) {
     return run_delaunay3d({args.input, args.output, args.algorithm, args.stats, args.verify, args.random,
-                           args.distribution, args.seed});
+                           args.distribution, args.seed, args.threads});
   }
   if (args.dim != 2) throw InputError("--dim must be 2 or 3, not " + std::to_string(args.dim));
+  if (args.threads != 1) throw InputError("--threads: the 2D variants are sequential (give --threads 1 or leave it out)");
   const std::string source = args.input.empty()
                                  ? "random " + args.distribution + " n=" + std::to_string(args.random) +
                                        " seed=" + std::to_string(args.seed)
@@ -132,7 +135,10 @@ void add_delaunay(CLI::App& app) {
   cmd->add_flag("--stats", args->stats,
                 "Print one JSON object with points, elements, seconds, elements_per_minute, peak_rss_mb, "
                 "algo and predicate stage counts as the last line");
-  cmd->add_flag("--list-algos", args->list, "List the registered variants (name, tab, description) and exit");
+  cmd->add_flag("--list-algos", args->list,
+                "List the registered variants (name, tab, description) and exit; with --dim 3 the 3D ones");
+  cmd->add_option("--threads", args->threads, "Threads for the 3D variant 'parallel' (others are sequential)")
+      ->capture_default_str();
   cmd->add_flag("--verify", args->verify, "Check the result with exact predicates and print the report");
   cmd->add_option("--random", args->random, "Triangulate N generated points instead of a file");
   cmd->add_option("--dim", args->dim, "Dimension of the generated points")->capture_default_str();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "algorithms/delaunay3d/delaunay3d.hpp"
+#include "algorithms/delaunay3d/registry.hpp"
 #include "apps/cli_util.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/point_file.hpp"
@@ -47,6 +48,11 @@ void write_medit3(const std::string& path, const Tetrahedralization3& tet) {
 
 }  // namespace
 
+int list_delaunay3d_variants() {
+  for (const Delaunay3dVariant& v : delaunay3d_variants()) std::cout << v.name << "\t" << v.description << "\n";
+  return 0;
+}
+
 int run_delaunay3d(const Delaunay3dCliArgs& args) {
   if (args.input.empty() == (args.random == 0)) throw InputError("give either an INPUT file or --random N");
   const std::string source = args.input.empty() ? "random " + args.distribution + " n=" + std::to_string(args.random) +
@@ -57,7 +63,8 @@ int run_delaunay3d(const Delaunay3dCliArgs& args) {
 
   const std::size_t point_count = points.size();
   // The points move into the result: one copy of the coordinates fewer at the peak.
-  Delaunay3dResult result = delaunay3d(std::move(points), {.algorithm = args.algorithm});
+  Delaunay3dResult result =
+      delaunay3d(std::move(points), {.algorithm = args.algorithm, .threads = args.threads});
   const std::size_t elements = result.tetrahedralization.finite_tetrahedron_count();
   if (!result.duplicates.empty())
     std::cerr << "dtlab: " << result.duplicates.size()
@@ -82,6 +89,7 @@ int run_delaunay3d(const Delaunay3dCliArgs& args) {
     const double per_minute = seconds > 0 ? static_cast<double>(elements) * 60.0 / seconds : 0.0;
     std::ostringstream json;
     json << "{\"input\":" << json_string(source) << ",\"dim\":3,\"algo\":" << json_string(args.algorithm)
+         << ",\"threads\":" << args.threads
          << ",\"points\":" << point_count << ",\"distinct_points\":" << point_count - result.duplicates.size()
          << ",\"duplicates\":" << result.duplicates.size() << ",\"elements\":" << elements
          << ",\"seconds\":" << json_number(seconds) << ",\"elements_per_minute\":" << json_number(per_minute)

@@ -16,7 +16,11 @@ struct Delaunay3dCliArgs {
   std::size_t random = 0;
   std::string distribution = "uniform";  // only "uniform" (in the unit cube) for now
   std::uint64_t seed = 1;
+  unsigned threads = 1;   // Delaunay3dOptions::threads
 };
+
+// --list-algos --dim 3: one line per registered 3D variant (name, tab, description).
+int list_delaunay3d_variants();
 
 // Returns the exit status: 0 success, 3 a check failed. Throws InputError for bad arguments.
 int run_delaunay3d(const Delaunay3dCliArgs& args);
