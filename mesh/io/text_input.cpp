@@ -1,5 +1,7 @@
 #include "mesh/io/text_input.hpp"
 
+#include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -127,6 +129,106 @@ void LineTokenizer::expect_tokens(std::size_t n, std::string_view what) const {
 void check_coordinate(const LineTokenizer& in, double v, std::string_view what) {
   if (coordinate_in_range(v)) return;
   in.fail(std::string(what) + " is " + coordinate_problem(v));
+}
+
+int int_field(const LineTokenizer& in, std::size_t k, const std::string& what) {
+  const std::int64_t v = in.integer(k, what);
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) {
+    in.fail(what + " " + std::to_string(v) + " does not fit an int");
+  }
+  return static_cast<int>(v);
+}
+
+std::uint32_t vertex_number(const LineTokenizer& in, std::size_t k, std::int64_t first, std::uint64_t count,
+                            const std::string& what) {
+  const std::int64_t v = in.integer(k, what + " vertex");
+  // count < 2^32 (LineTokenizer::count), so first + count cannot overflow.
+  if (v < first || v - first >= static_cast<std::int64_t>(count)) {
+    in.fail(what + ": vertex number " + std::to_string(v) + " out of range " + std::to_string(first) + ".." +
+            std::to_string(first + static_cast<std::int64_t>(count) - 1) +
+            (count == 0 ? " (there are no vertices)" : ""));
+  }
+  return static_cast<std::uint32_t>(v - first);
+}
+
+namespace {
+
+constexpr std::array<std::string_view, 27> kMeditKeywords = {
+    "MeshVersionFormatted", "Dimension",        "Vertices",          "Edges",
+    "Triangles",            "Tetrahedra",       "End",               "Corners",
+    "Ridges",               "RequiredVertices", "RequiredEdges",     "RequiredTriangles",
+    "Quadrilaterals",       "Hexahedra",        "Prisms",            "Pyramids",
+    "Normals",              "NormalAtVertices", "Tangents",          "TangentAtVertices",
+    "Geometry",             "Identifier",       "Crack",             "Polygons",
+    "SubDomainFromMesh",    "VertexOnGeometricVertex", "EdgeOnGeometricEdge"};
+
+bool iequals(std::string_view a, std::string_view b) {
+  auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [&](char x, char y) { return lower(x) == lower(y); });
+}
+
+// The integer after a keyword, on the keyword's line or alone on the next one.
+std::int64_t keyword_integer(LineTokenizer& in, std::string_view kw, const std::string& what, bool is_count) {
+  auto parse = [&](std::size_t k) { return is_count ? static_cast<std::int64_t>(in.count(k, what)) : in.integer(k, what); };
+  if (in.size() >= 2) {
+    in.expect_tokens(2, kw);
+    return parse(1);
+  }
+  const std::uint64_t keyword_line = in.line();
+  if (!in.next_line() || is_medit_keyword(in.token(0))) {
+    in.fail_at(keyword_line, "missing " + std::string(is_count ? "count" : "value") + " after " + std::string(kw));
+  }
+  in.expect_tokens(1, what);
+  return parse(0);
+}
+
+}  // namespace
+
+bool is_medit_keyword(std::string_view t) {
+  return std::find(kMeditKeywords.begin(), kMeditKeywords.end(), t) != kMeditKeywords.end();
+}
+
+std::int64_t medit_keyword_value(LineTokenizer& in, std::string_view kw) {
+  return keyword_integer(in, kw, std::string(kw) + " value", false);
+}
+
+std::uint64_t medit_section_count(LineTokenizer& in, std::string_view kw) {
+  return static_cast<std::uint64_t>(keyword_integer(in, kw, std::string(kw) + " count", true));
+}
+
+void medit_next_entry(LineTokenizer& in, std::string_view kw, std::uint64_t i, std::uint64_t n) {
+  const std::uint64_t last = in.line();
+  if (!in.next_line()) {
+    in.fail_at(std::max<std::uint64_t>(last, 1), "file ends in " + std::string(kw) + " after " + std::to_string(i) +
+                                                     " of " + std::to_string(n) + " entries (truncated?)");
+  }
+  if (is_medit_keyword(in.token(0))) {
+    in.fail(std::string(kw) + " count is " + std::to_string(n) + " but only " + std::to_string(i) +
+            " entries precede " + quote(in.token(0)));
+  }
+}
+
+void medit_refuse_keyword(const LineTokenizer& in, std::string_view kw, std::string_view reader,
+                          std::span<const std::string_view> kept) {
+  if (is_medit_keyword(kw)) {
+    std::string list;
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+      if (i > 0) list += i + 1 == kept.size() ? " and " : ", ";
+      list += kept[i];
+    }
+    in.fail("Medit keyword " + quote(kw) + " is not supported by the " + std::string(reader) + " (it keeps " + list +
+            ")");
+  }
+  for (std::string_view known : kMeditKeywords) {
+    if (iequals(kw, known)) {
+      in.fail("unknown keyword " + quote(kw) + " (keywords are case-sensitive: " + std::string(known) + ")");
+    }
+  }
+  if (!kw.empty() && ((kw[0] >= '0' && kw[0] <= '9') || kw[0] == '-' || kw[0] == '+' || kw[0] == '.')) {
+    in.fail("expected a keyword, found the number " + quote(kw) + " (more entries than the section's count?)");
+  }
+  in.fail("unknown keyword " + quote(kw));
 }
 
 }  // namespace dtlab::io

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <istream>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,5 +54,34 @@ std::string quote(std::string_view token);
 
 // Checks a coordinate read at the tokenizer's current line against coordinate_range.hpp.
 void check_coordinate(const LineTokenizer& in, double v, std::string_view what);
+
+// Token k as an integer that fits an int (references, boundary markers, region numbers).
+int int_field(const LineTokenizer& in, std::size_t k, const std::string& what);
+
+// Token k as the number of one of `count` vertices numbered from `first` (0 or 1), returned
+// 0-based; out of range is "<what>: vertex number V out of range first..first+count-1".
+std::uint32_t vertex_number(const LineTokenizer& in, std::size_t k, std::int64_t first, std::uint64_t count,
+                            const std::string& what);
+
+// --- Medit (.mesh) sections, shared by the 2D and 3D readers ------------------------------------
+//
+// A section is a keyword, its count (on the keyword's line or alone on the next one), then one
+// entry per line. Any Medit keyword ends a section, so a short section is reported as such.
+
+// True for every keyword of the Medit format, kept by a reader or not.
+bool is_medit_keyword(std::string_view t);
+
+// The integer after keyword `kw` ("MeshVersionFormatted", "Dimension"), or a section's count.
+std::int64_t medit_keyword_value(LineTokenizer& in, std::string_view kw);
+std::uint64_t medit_section_count(LineTokenizer& in, std::string_view kw);
+
+// Moves to entry i (0-based) of section `kw` of n entries, with messages for a short section.
+void medit_next_entry(LineTokenizer& in, std::string_view kw, std::uint64_t i, std::uint64_t n);
+
+// Refuses keyword `kw` that the reader does not handle: another Medit keyword ("not supported by
+// the <reader>, which keeps <kept>"), a known keyword in the wrong case, a number (a section with
+// more entries than its count), or an unknown word.
+[[noreturn]] void medit_refuse_keyword(const LineTokenizer& in, std::string_view kw, std::string_view reader,
+                                       std::span<const std::string_view> kept);
 
 }  // namespace dtlab::io

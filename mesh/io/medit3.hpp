@@ -1,0 +1,37 @@
+// Medit ASCII meshes (.mesh, the format of INRIA's Medit viewer and libMeshb), 3D subset:
+//
+//   MeshVersionFormatted 2
+//   Dimension 3
+//   Vertices    n   then n lines  x y z ref
+//   Edges       n   then n lines  v1 v2 ref          (vertex numbers from 1)
+//   Triangles   n   then n lines  v1 v2 v3 ref
+//   Tetrahedra  n   then n lines  v1 v2 v3 v4 ref    (positive: orient3d(v1, v2, v3, v4) > 0)
+//   End
+//
+// The layout rules are the 2D reader's (medit.hpp): a keyword's value on its line or the next,
+// '#' comments and blank lines anywhere, one entry per line, MeshVersionFormatted first,
+// Dimension before Vertices, Vertices before the elements, End last. Anything else is a
+// ParseError naming the line: Dimension 2 (a 2D mesh), another Medit keyword (Corners,
+// Hexahedra, ...), an unknown keyword, a count that does not match the entries, a vertex number
+// out of range, a coordinate outside kernel/coordinate_range.hpp, a tetrahedron that is not
+// positive (negative or flat, decided exactly), text after End, or a file that ends before End.
+#pragma once
+
+#include <istream>
+#include <ostream>
+#include <string>
+
+#include "mesh/io/mesh_data3.hpp"
+
+namespace dtlab {
+
+// `file_name` names the input in error messages.
+MeshData3 read_medit3(std::istream& in, const std::string& file_name);
+MeshData3 read_medit3(const std::string& path);
+
+// Throws InputError naming the element if a vertex number is out of range or a refs vector is
+// neither empty nor the size of its elements. Orientation is not checked here (the reader does).
+void write_medit3(std::ostream& out, const MeshData3& mesh);
+void write_medit3(const std::string& path, const MeshData3& mesh);
+
+}  // namespace dtlab

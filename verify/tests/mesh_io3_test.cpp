@@ -1,0 +1,299 @@
+// The 3D file formats (Medit 3D, TetGen .node/.ele/.face): write/read round trips keep every
+// bit, tetrahedra come out positive whatever the file's orientation, and every kind of
+// malformed input is a ParseError naming the file and the right line.
+#include <bit>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "kernel/coordinate_range.hpp"
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+#include "mesh/io/medit.hpp"
+#include "mesh/io/medit3.hpp"
+
+namespace dtlab {
+namespace {
+
+bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+void expect_same_points(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_TRUE(same_bits(a[i].x, b[i].x) && same_bits(a[i].y, b[i].y) && same_bits(a[i].z, b[i].z))
+        << "point " << i;
+  }
+}
+
+void expect_same_mesh(const MeshData3& a, const MeshData3& b) {
+  expect_same_points(a.vertices, b.vertices);
+  EXPECT_EQ(a.vertex_refs, b.vertex_refs);
+  EXPECT_EQ(a.edges, b.edges);
+  EXPECT_EQ(a.edge_refs, b.edge_refs);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.triangle_refs, b.triangle_refs);
+  EXPECT_EQ(a.tetrahedra, b.tetrahedra);
+  EXPECT_EQ(a.tetrahedron_refs, b.tetrahedron_refs);
+}
+
+// Doubles that a careless writer would not bring back.
+std::vector<double> awkward_doubles() {
+  return {0.1,
+          -0.0,
+          1.0 / 3.0,
+          -2.0 / 3.0,
+          std::nextafter(1.0, 2.0),
+          std::nextafter(1.0, 0.0),
+          1e9 + 0.123456789,
+          kMinCoordinateMagnitude,
+          -kMaxCoordinateMagnitude,
+          std::nextafter(kMinCoordinateMagnitude, 1.0),
+          123456789012345678.0,
+          2.2250738585072014e-18};
+}
+
+bool positive(const MeshData3& m, const std::array<std::uint32_t, 4>& t) {
+  return orient3d(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]], m.vertices[t[3]]) == Sign::Positive;
+}
+
+// Awkward coordinates on the vertices that no tetrahedron uses; a cube split into five positive
+// tetrahedra (the first eight vertices) for the ones that do.
+MeshData3 sample_mesh() {
+  MeshData3 m;
+  for (int i = 0; i < 8; ++i) m.vertices.push_back({0.1 * (i & 1), 0.1 * ((i >> 1) & 1), 0.1 * (i >> 2)});
+  const std::vector<double> v = awkward_doubles();
+  for (std::size_t i = 0; i + 2 < v.size(); ++i) m.vertices.push_back({v[i], v[i + 1], v[i + 2]});
+  for (std::size_t i = 0; i < m.vertices.size(); ++i) m.vertex_refs.push_back(static_cast<int>(i) * 7 - 20);
+  m.edges = {{0, 1}, {1, 2}, {17, 0}};
+  m.edge_refs = {1, -1, std::numeric_limits<int>::max()};
+  m.triangles = {{0, 1, 2}, {2, 3, 4}, {15, 16, 17}};
+  m.triangle_refs = {std::numeric_limits<int>::min(), 0, 42};
+  // Corner 0 and its three neighbours, the other three corners with 7, and the middle one.
+  m.tetrahedra = {{0, 1, 2, 4}, {3, 2, 1, 7}, {5, 4, 7, 1}, {6, 7, 4, 2}, {1, 2, 4, 7}};
+  for (auto& t : m.tetrahedra) {
+    if (!positive(m, t)) std::swap(t[2], t[3]);
+  }
+  m.tetrahedron_refs = {1, 2, 3, -4, 0};
+  return m;
+}
+
+std::filesystem::path temp_path(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "dtlab_mesh_io3_test";
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
+// Runs `read` on `text` and expects a ParseError at `line` whose message contains `what`.
+void expect_parse_error(const std::string& text, const std::function<void(std::istream&)>& read, std::uint64_t line,
+                        const std::string& what) {
+  std::istringstream in(text);
+  try {
+    read(in);
+    ADD_FAILURE() << "no ParseError for:\n" << text;
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), line) << e.what() << "\nfor:\n" << text;
+    EXPECT_EQ(e.file(), "input.txt");
+    EXPECT_NE(std::string(e.what()).find(what), std::string::npos)
+        << "message '" << e.what() << "' lacks '" << what << "'";
+  }
+}
+
+const auto kReadMedit3 = [](std::istream& in) { read_medit3(in, "input.txt"); };
+const std::string kHeader = "MeshVersionFormatted 2\nDimension 3\n";
+// Lines 3-7: four vertices of a positive tetrahedron (1 2 3 4).
+const std::string kTetVertices = kHeader + "Vertices 4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n";
+
+// --- Medit 3D ------------------------------------------------------------------------------------
+
+TEST(Medit3, SampleTetrahedraArePositive) {
+  const MeshData3 m = sample_mesh();
+  for (const auto& t : m.tetrahedra) EXPECT_TRUE(positive(m, t));
+}
+
+TEST(Medit3, RoundTripKeepsEveryBit) {
+  const MeshData3 m = sample_mesh();
+  std::stringstream s;
+  write_medit3(s, m);
+  const MeshData3 back = read_medit3(s, "memory");
+  expect_same_mesh(back, m);
+}
+
+TEST(Medit3, RoundTripThroughFile) {
+  const MeshData3 m = sample_mesh();
+  const std::string path = temp_path("round.mesh").string();
+  write_medit3(path, m);
+  expect_same_mesh(read_medit3(path), m);
+}
+
+TEST(Medit3, WriterFillsEmptyReferencesAndRefusesBadData) {
+  MeshData3 m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  m.tetrahedra = {{0, 1, 2, 3}};
+  std::stringstream s;
+  write_medit3(s, m);
+  const MeshData3 back = read_medit3(s, "memory");
+  EXPECT_EQ(back.vertex_refs, (std::vector<int>{0, 0, 0, 0}));
+  EXPECT_EQ(back.tetrahedron_refs, (std::vector<int>{0}));
+  EXPECT_TRUE(back.triangles.empty());
+
+  m.tetrahedra = {{0, 1, 2, 4}};
+  EXPECT_THROW(write_medit3(s, m), InputError);
+  m.tetrahedra = {{0, 1, 2, 3}};
+  m.tetrahedron_refs = {1, 2};
+  EXPECT_THROW(write_medit3(s, m), InputError);
+  m.tetrahedron_refs.clear();
+  m.vertex_refs = {1};
+  EXPECT_THROW(write_medit3(s, m), InputError);
+}
+
+TEST(Medit3, ReadsTheFreeLayoutMeditAllows) {
+  const std::string text =
+      "# written by hand\r\n"
+      "MeshVersionFormatted\n1\n\n"
+      "Dimension\n 3\n"
+      "Vertices 4\n"
+      "+0.5 -1e-3 0 7   # a comment after data\n"
+      "1 0 0 0\r\n"
+      "\n"
+      "0 1 0 0\n"
+      "0 0 1 0\n"
+      "Tetrahedra\n1\n1 2 3 4 9\n"
+      "Edges\n1\n1 2 5\n"
+      "Triangles\n1\n1 2 3 -4\n"
+      "End\n# trailing comment\n\n";
+  std::istringstream in(text);
+  const MeshData3 m = read_medit3(in, "input.txt");
+  ASSERT_EQ(m.vertices.size(), 4u);
+  EXPECT_EQ(m.vertices[0], (Vec3{0.5, -1e-3, 0}));
+  EXPECT_EQ(m.vertex_refs, (std::vector<int>{7, 0, 0, 0}));
+  EXPECT_EQ(m.edges, (std::vector<std::array<std::uint32_t, 2>>{{0, 1}}));
+  EXPECT_EQ(m.triangle_refs, (std::vector<int>{-4}));
+  EXPECT_EQ(m.tetrahedra, (std::vector<std::array<std::uint32_t, 4>>{{0, 1, 2, 3}}));
+  EXPECT_EQ(m.tetrahedron_refs, (std::vector<int>{9}));
+}
+
+RC_GTEST_PROP(Medit3, RandomMeshesRoundTripBitForBit, ()) {
+  const auto n = *rc::gen::inRange<std::size_t>(0, 40);
+  MeshData3 m;
+  for (std::size_t i = 0; i < n; ++i) {
+    double c[3];
+    for (double& v : c) {
+      // Any double in the supported range: random sign, exponent and 52-bit mantissa, the
+      // exponent one short of the top so that (1 + m) * 2^e < 2^142.
+      const auto mantissa = *rc::gen::arbitrary<std::uint64_t>() & ((std::uint64_t{1} << 52) - 1);
+      const int exponent = *rc::gen::inRange(kMinCoordinateExponent, kMaxCoordinateExponent);
+      v = std::ldexp(1.0 + std::ldexp(static_cast<double>(mantissa), -52), exponent);
+      if (*rc::gen::arbitrary<bool>()) v = -v;
+      RC_ASSERT(coordinate_in_range(v));
+    }
+    m.vertices.push_back({c[0], c[1], c[2]});
+    m.vertex_refs.push_back(*rc::gen::arbitrary<int>());
+  }
+  if (n >= 4) {
+    const auto t = *rc::gen::inRange<std::size_t>(0, 20);
+    for (std::size_t i = 0; i < t; ++i) {
+      std::array<std::uint32_t, 4> tet{};
+      for (auto& v : tet) v = *rc::gen::inRange<std::uint32_t>(0, static_cast<std::uint32_t>(n));
+      const Sign s = orient3d(m.vertices[tet[0]], m.vertices[tet[1]], m.vertices[tet[2]], m.vertices[tet[3]]);
+      if (s == Sign::Zero) continue;  // a flat tetrahedron is not a valid MeshData3
+      if (s == Sign::Negative) std::swap(tet[0], tet[1]);
+      m.tetrahedra.push_back(tet);
+      m.tetrahedron_refs.push_back(*rc::gen::arbitrary<int>());
+      m.triangles.push_back({tet[0], tet[1], tet[2]});
+      m.triangle_refs.push_back(*rc::gen::arbitrary<int>());
+    }
+  }
+  std::stringstream s;
+  write_medit3(s, m);
+  const MeshData3 back = read_medit3(s, "memory");
+  RC_ASSERT(back.vertices.size() == m.vertices.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    RC_ASSERT(same_bits(back.vertices[i].x, m.vertices[i].x));
+    RC_ASSERT(same_bits(back.vertices[i].y, m.vertices[i].y));
+    RC_ASSERT(same_bits(back.vertices[i].z, m.vertices[i].z));
+  }
+  RC_ASSERT(back.vertex_refs == m.vertex_refs);
+  RC_ASSERT(back.triangles == m.triangles);
+  RC_ASSERT(back.triangle_refs == m.triangle_refs);
+  RC_ASSERT(back.tetrahedra == m.tetrahedra);
+  RC_ASSERT(back.tetrahedron_refs == m.tetrahedron_refs);
+}
+
+TEST(Medit3, TwoDimensionalFilesAreRefusedEachWay) {
+  // A 2D file to the 3D reader and a 3D file to the 2D reader: each names the other reader's job.
+  std::stringstream s2;
+  write_medit2(s2, MeshData2{{{0, 0}, {1, 0}, {0, 1}}, {}, {}, {}, {{0, 1, 2}}, {}});
+  expect_parse_error(s2.str(), kReadMedit3, 3, "2D mesh");
+  std::stringstream s3;
+  write_medit3(s3, sample_mesh());
+  expect_parse_error(s3.str(), [](std::istream& in) { read_medit2(in, "input.txt"); }, 3, "3D mesh");
+}
+
+TEST(Medit3Malformed, CountsAndTruncation) {
+  expect_parse_error(kHeader + "Vertices\nEnd\n", kReadMedit3, 3, "missing count after Vertices");
+  expect_parse_error(kHeader + "Vertices -1\nEnd\n", kReadMedit3, 3, "negative");
+  expect_parse_error(kHeader + "Vertices 3\n0 0 0 0\n1 0 0 0\nEnd\n", kReadMedit3, 6, "count is 3 but only 2");
+  expect_parse_error(kHeader + "Vertices 1\n0 0 0 0\n1 0 0 0\nEnd\n", kReadMedit3, 5, "more entries than");
+  expect_parse_error(kHeader + "Vertices 3\n0 0 0 0\n1 0 0 0\n", kReadMedit3, 5, "truncated");
+  expect_parse_error(kTetVertices, kReadMedit3, 7, "ends before End");
+  expect_parse_error(kTetVertices + "Tetrahedra 2\n1 2 3 4 0\nEnd\n", kReadMedit3, 10, "count is 2 but only 1");
+  expect_parse_error("", kReadMedit3, 1, "ends before End");
+}
+
+TEST(Medit3Malformed, Fields) {
+  expect_parse_error(kHeader + "Vertices 1\n0 0 0\nEnd\n", kReadMedit3, 4, "expected 4 fields, found 3");
+  expect_parse_error(kHeader + "Vertices 1\n0 0 0 1 7\nEnd\n", kReadMedit3, 4, "trailing text '7'");
+  expect_parse_error(kHeader + "Vertices 1\n0 0 z 1\nEnd\n", kReadMedit3, 4, "vertex 1 z is not a number");
+  expect_parse_error(kHeader + "Vertices 1\n0 0 nan 1\nEnd\n", kReadMedit3, 4, "not finite");
+  expect_parse_error(kHeader + "Vertices 1\n0 0 1e300 1\nEnd\n", kReadMedit3, 4, "vertex 1 z is too large");
+  expect_parse_error(kHeader + "Vertices 1\n0 0 0 1.5\nEnd\n", kReadMedit3, 4, "not an integer");
+  expect_parse_error(kHeader + "Vertices 1\n0 0 0 3000000000\nEnd\n", kReadMedit3, 4, "does not fit an int");
+  expect_parse_error(kTetVertices + "Tetrahedra 1\n1 2 3 4\nEnd\n", kReadMedit3, 9, "expected 5 fields, found 4");
+  expect_parse_error(kTetVertices + "Tetrahedra 1\n1 2 3 4 0 0\nEnd\n", kReadMedit3, 9, "trailing");
+}
+
+TEST(Medit3Malformed, IndicesOutOfRange) {
+  expect_parse_error(kTetVertices + "Tetrahedra 1\n1 2 3 5 0\nEnd\n", kReadMedit3, 9,
+                     "tetrahedron 1: vertex number 5 out of range 1..4");
+  expect_parse_error(kTetVertices + "Tetrahedra 1\n0 2 3 4 0\nEnd\n", kReadMedit3, 9, "vertex number 0 out of range");
+  expect_parse_error(kTetVertices + "Triangles 1\n1 2 -3 0\nEnd\n", kReadMedit3, 9, "out of range");
+  expect_parse_error(kTetVertices + "Edges 1\n1 9 0\nEnd\n", kReadMedit3, 9, "edge 1: vertex number 9");
+  expect_parse_error(kHeader + "Vertices 0\nEdges 1\n1 1 0\nEnd\n", kReadMedit3, 5, "there are no vertices");
+}
+
+TEST(Medit3Malformed, TetrahedraMustBePositive) {
+  expect_parse_error(kTetVertices + "Tetrahedra 1\n1 2 4 3 0\nEnd\n", kReadMedit3, 9, "negatively oriented");
+  expect_parse_error(kTetVertices + "Tetrahedra 2\n1 2 3 4 0\n2 1 3 4 0\nEnd\n", kReadMedit3, 10,
+                     "tetrahedron 2 is negatively oriented");
+  expect_parse_error(kTetVertices + "Tetrahedra 1\n1 2 3 3 0\nEnd\n", kReadMedit3, 9, "flat");
+  // Coplanar but distinct: decided exactly, not with a tolerance.
+  const std::string coplanar = kHeader + "Vertices 4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0.5 0.5 0 0\n";
+  expect_parse_error(coplanar + "Tetrahedra 1\n1 2 3 4 0\nEnd\n", kReadMedit3, 9, "flat");
+  // The smallest lift off that plane is positive.
+  const std::string lifted =
+      kHeader + "Vertices 4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0.5 0.5 1.793662034335766e-43 0\nTetrahedra 1\n1 2 3 4 0\nEnd\n";
+  std::istringstream in(lifted);
+  EXPECT_EQ(read_medit3(in, "input.txt").tetrahedra.size(), 1u);
+}
+
+TEST(Medit3Malformed, Keywords) {
+  expect_parse_error("Dimension 3\nMeshVersionFormatted 2\nEnd\n", kReadMedit3, 1, "MeshVersionFormatted first");
+  expect_parse_error("MeshVersionFormatted 2\nDimension 4\nEnd\n", kReadMedit3, 2, "Dimension 4 is not 3");
+  expect_parse_error("MeshVersionFormatted 2\nDimension\n2\nEnd\n", kReadMedit3, 3, "2D mesh");
+  expect_parse_error("MeshVersionFormatted 2\nVertices 0\nEnd\n", kReadMedit3, 2, "Vertices before Dimension");
+  expect_parse_error(kHeader + "Tetrahedra 0\nEnd\n", kReadMedit3, 3, "Tetrahedra before Vertices");
+  expect_parse_error(kTetVertices + "Tetrahedra 0\nTetrahedra 0\nEnd\n", kReadMedit3, 9, "second Tetrahedra");
+  expect_parse_error(kHeader + "Hexahedra 0\nEnd\n", kReadMedit3, 3,
+                     "'Hexahedra' is not supported by the 3D reader (it keeps Vertices, Edges, Triangles and Tetrahedra)");
+  expect_parse_error(kHeader + "tetrahedra 0\nEnd\n", kReadMedit3, 3, "case-sensitive: Tetrahedra");
+  expect_parse_error(kHeader + "Foo 3\nEnd\n", kReadMedit3, 3, "unknown keyword 'Foo'");
+  expect_parse_error(kHeader + "End\nVertices 0\n", kReadMedit3, 4, "text after End");
+}
+
+}  // namespace
+}  // namespace dtlab
