@@ -31,11 +31,11 @@ import signal
 import subprocess
 import sys
 
+import readme_tables
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DISTRIBUTIONS = ["uniform", "normal", "grid", "circle", "clustered"]
 CGAL = "cgal"
-README_BLOCK = ("<!-- perf-table:begin -->", "<!-- perf-table:end -->")
-README_OWN = ("<!-- perf-delaunay2d:begin -->", "<!-- perf-delaunay2d:end -->")
 
 
 def progress(msg):
@@ -223,26 +223,13 @@ def markdown(data):
     return text
 
 
-def update_readme(path, text):
-    with open(path) as f:
-        readme = f.read()
-    begin, end = README_BLOCK
-    if begin not in readme or end not in readme:
-        raise SystemExit(f"{path}: markers {begin} / {end} not found")
-    own_begin, own_end = README_OWN
-    if own_begin not in readme:
-        at = readme.index(end)
-        readme = readme[:at] + f"\n### 2D Delaunay\n\n{own_begin}\n{own_end}\n" + readme[at:]
-    if not readme.index(begin) < readme.index(own_begin) < readme.index(own_end) < readme.index(end):
-        raise SystemExit(f"{path}: {own_begin} / {own_end} must lie inside {begin} / {end}")
-    head = readme[:readme.index(own_begin) + len(own_begin)]
-    tail = readme[readme.index(own_end):]
-    command_line = ("Produced by `scripts/bench_delaunay2d.py --update-readme` (dtlab's variants "
-                    "through `dtlab delaunay --stats`, CGAL's Delaunay_triangulation_2 through "
-                    "`bench/cgal_delaunay2d_run_bench`, same points).")
-    with open(path, "w") as f:
-        f.write(head + "\n" + command_line + "\n\n" + text + tail)
-    progress(f"updated {path}")
+PRODUCER = ("Produced by `scripts/bench_delaunay2d.py --update-readme` (dtlab's variants through "
+            "`dtlab delaunay --stats`, CGAL's Delaunay_triangulation_2 through "
+            "`bench/cgal_delaunay2d_run_bench`, same points).")
+
+
+def update_readme(path, text, producer=PRODUCER):
+    readme_tables.write_block(path, "delaunay2d", "2D Delaunay", producer, text)
 
 
 def main():

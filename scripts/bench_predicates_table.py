@@ -23,6 +23,8 @@ import statistics
 import subprocess
 import sys
 
+import readme_tables
+
 PREDICATES = ["orient2d", "incircle", "orient3d", "insphere"]
 CALLER_IMPLS = [("plain", "plain det"), ("filtered", "filtered"), ("uncounted", "uncounted"),
                 ("cgal_epick", "CGAL Epick")]
@@ -128,23 +130,27 @@ def machine_line(data, repetitions):
             f"ns per call, CPU time, min / median of {repetitions} repetitions; ratios of minima.")
 
 
-def update_readme(path, text):
-    """Replaces what lies between the perf-predicates markers, inserting them first (inside the
-    perf-table block) if absent."""
-    with open(path) as f:
-        readme = f.read()
-    block_end = "<!-- perf-table:end -->"
-    begin, end = "<!-- perf-predicates:begin -->", "<!-- perf-predicates:end -->"
-    if begin not in readme:
-        if block_end not in readme:
-            raise SystemExit(f"{path}: marker {block_end} not found")
-        at = readme.index(block_end)
-        readme = readme[:at] + f"### Predicates\n\n{begin}\n{end}\n" + readme[at:]
-    head = readme[:readme.index(begin) + len(begin)]
-    tail = readme[readme.index(end):]
-    command = "Produced by `scripts/bench_predicates_table.py --update-readme` (bench/predicates_bench)."
-    with open(path, "w") as f:
-        f.write(head + "\n" + command + "\n\n" + text + "\n" + tail)
+PRODUCER = "Produced by `scripts/bench_predicates_table.py --update-readme` (bench/predicates_bench)."
+
+
+def update_readme(path, text, producer=PRODUCER):
+    readme_tables.write_block(path, "predicates", "Predicates", producer, text)
+
+
+def markdown(data, dists):
+    """The tables of one predicates_bench JSON output, machine line first."""
+    runs = collect(data)
+    repetitions = max((len(e["ns"]) for e in runs.values()), default=0)
+    out = [machine_line(data, repetitions) + "\n"]
+    for consumer, what in (("sum", "sign summed, no branch on it: the predicate's own cost"),
+                           ("branch", "caller branches on the sign, as a walk or cavity search does")):
+        out.append(f"**Predicates as called** ({what}); ns per call, min / median:\n")
+        out.append(caller_table(runs, dists, consumer) + "\n")
+    all_dists = ["random", "near", "degenerate"]
+    out.append("**Stages alone** (sign summed); ns per call, min / median, and the share of cases each "
+               "filter stage leaves undecided:\n")
+    out.append(stage_table(runs, all_dists))
+    return "\n".join(out)
 
 
 def main():
@@ -158,6 +164,7 @@ def main():
     ap.add_argument("--dists", default="random,near,degenerate", help="distributions shown in the caller tables")
     ap.add_argument("--update-readme", action="store_true",
                     help="also write the tables between <!-- perf-predicates:begin/end --> in README.md")
+    ap.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
     args = ap.parse_args()
 
     if args.json:
@@ -169,22 +176,10 @@ def main():
         with open(args.save_json, "w") as f:
             json.dump(data, f, indent=1)
 
-    runs = collect(data)
-    repetitions = max((len(e["ns"]) for e in runs.values()), default=0)
-    dists = [d for d in args.dists.split(",") if d]
-    out = [machine_line(data, repetitions) + "\n"]
-    for consumer, what in (("sum", "sign summed, no branch on it: the predicate's own cost"),
-                           ("branch", "caller branches on the sign, as a walk or cavity search does")):
-        out.append(f"**Predicates as called** ({what}); ns per call, min / median:\n")
-        out.append(caller_table(runs, dists, consumer) + "\n")
-    all_dists = ["random", "near", "degenerate"]
-    out.append("**Stages alone** (sign summed); ns per call, min / median, and the share of cases each "
-               "filter stage leaves undecided:\n")
-    out.append(stage_table(runs, all_dists))
-    text = "\n".join(out)
+    text = markdown(data, [d for d in args.dists.split(",") if d])
     print(text)
     if args.update_readme:
-        update_readme(os.path.join(ROOT, "README.md"), text)
+        update_readme(args.readme, text)
     return 0
 
 

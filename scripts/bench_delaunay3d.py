@@ -1,0 +1,372 @@
+#!/usr/bin/env python3
+"""Time and peak memory of every 3D Delaunay variant beside CGAL and TetGen, one process per run.
+
+For each size n, runs on the same points (uniform in the unit cube, seed S):
+    build/dtlab delaunay --dim 3 --random N --seed S --algo A --stats [--threads T]   (every variant)
+    build/bench/cgal_delaunay3d_run_bench --random N --seed S                        (CGAL DT3)
+    tetgen -NEFIB points.node    (TetGen 1.5, Debian's binary; the points written once per n by
+                                  cgal_delaunay3d_run_bench --write-node; no output files)
+RUNS times each (interleaved: round 1 of every program, then round 2, ...), and prints a Markdown
+table per (n, program): seconds (the program's own timing of the tetrahedralization: dtlab's and
+CGAL's JSON, TetGen's "Delaunay seconds" line; minimum over the runs), million tetrahedra per
+minute, peak resident MB of the process (maximum over the runs), bytes of peak RSS per
+tetrahedron, time / CGAL and time / TetGen (ratios of this invocation's minima), nanoseconds per
+point, and the process's CPU time. Then, per program, how flat the time per point stays from 10^4
+to the largest n (issue 5 asks for +-20 % from 10^4 to 10^7). A machine, compiler and commit line
+comes first. The raw measurements go to a JSON file.
+
+A variant that is registered but not written yet (dtlab says "not built yet") is left out; a
+variant with "parallel" in its name runs once per --threads value, as "parallel-t1", ...; when
+the dtlab binary has no --threads option, those rows are left out.
+
+TetGen's peak RSS is taken with GNU time (/usr/bin/time, Debian's `time` package): Linux carries
+a process's peak RSS across exec, so a program started from Python would report Python's resident
+size as its floor, and TetGen cannot report its own. Without /usr/bin/time that column is "-".
+
+  scripts/bench_delaunay3d.py --build build                 # 10^4, 10^5, 10^6
+  scripts/bench_delaunay3d.py --build build --large         # and 10^7
+  scripts/bench_delaunay3d.py --sizes 100000 --runs 5 --no-tetgen
+  scripts/bench_delaunay3d.py --from-json build/bench_delaunay3d.json --update-readme
+
+--update-readme writes the table between <!-- perf-delaunay3d:begin --> and
+<!-- perf-delaunay3d:end --> in README.md (scripts/readme_tables.py), inside the perf-table block.
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+
+import readme_tables
+from bench_delaunay2d import children_cpu, fmt, machine, progress, run_once, size_label
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CGAL = "cgal"
+TETGEN = "tetgen"
+PEERS = (CGAL, TETGEN)
+PRODUCER = ("Produced by `scripts/bench_delaunay3d.py --update-readme` (dtlab's variants through "
+            "`dtlab delaunay --dim 3 --stats`, CGAL's Delaunay_triangulation_3 through "
+            "`bench/cgal_delaunay3d_run_bench`, TetGen 1.5 through its Debian binary, same points).")
+
+
+def dtlab_variants(dtlab, threads):
+    """Program names of every 3D variant that runs: a parallel one once per thread count."""
+    out = subprocess.run([dtlab, "delaunay", "--dim", "3", "--list-algos"], check=True,
+                         stdout=subprocess.PIPE, text=True).stdout
+    has_threads = "--threads" in subprocess.run([dtlab, "delaunay", "--help"], stdout=subprocess.PIPE,
+                                                stderr=subprocess.STDOUT, text=True).stdout
+    programs = []
+    for name in (line.split("\t", 1)[0] for line in out.splitlines() if line.strip()):
+        probe = subprocess.run([dtlab, "delaunay", "--dim", "3", "--random", "200", "--algo", name],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+        if "not built yet" in probe.stderr:
+            progress(f"{name}: not built yet, left out")
+            continue
+        if "parallel" not in name:
+            programs.append(name)
+        elif has_threads:
+            programs += [f"{name}-t{t}" for t in threads]
+        else:
+            progress(f"{name}: this dtlab has no --threads option, left out")
+    return programs
+
+
+def split_threads(program):
+    """("parallel", 2) for "parallel-t2"; (program, None) otherwise."""
+    m = re.fullmatch(r"(.*parallel.*)-t(\d+)", program)
+    return (m.group(1), int(m.group(2))) if m else (program, None)
+
+
+def tetgen_once(args, node_file, n, timeout):
+    """TetGen's record (elements, seconds, peak_rss_mb or None) or (None, error text)."""
+    cmd = [args.tetgen, "-NEFIB", node_file]
+    measured = os.access(args.gnu_time, os.X_OK)
+    if measured:
+        cmd = [args.gnu_time, "-f", "dtlab-peak-rss-kb %M"] + cmd
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            start_new_session=True)
+    try:
+        out, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.communicate()
+        return None, f"timed out after {timeout:g} s"
+    if proc.returncode != 0:
+        return None, f"exit {proc.returncode}: {(out + err).strip()[-300:]}"
+    seconds = re.search(r"^Delaunay seconds:\s*([0-9.eE+-]+)", out, re.M)
+    tets = re.search(r"^\s*Mesh tetrahedra:\s*(\d+)", out, re.M)
+    if not seconds or not tets:
+        return None, "no 'Delaunay seconds' / 'Mesh tetrahedra' line in TetGen's output"
+    rss = re.search(r"dtlab-peak-rss-kb (\d+)", err) if measured else None
+    result = {"points": n, "elements": int(tets.group(1)), "seconds": float(seconds.group(1)),
+              "peak_rss_mb": int(rss.group(1)) / 1024.0 if rss else None}
+    result["elements_per_minute"] = result["elements"] * 60.0 / result["seconds"] if result["seconds"] else None
+    return result, None
+
+
+def command(args, program, n):
+    common = ["--random", str(n), "--seed", str(args.seed)]
+    if program == CGAL:
+        return [args.cgal] + common
+    variant, threads = split_threads(program)
+    cmd = [args.dtlab, "delaunay", "--dim", "3"] + common + ["--algo", variant, "--stats"]
+    return cmd + (["--threads", str(threads)] if threads else [])
+
+
+def measure(args, programs, sizes, save):
+    """Raw records: one per (n, program, run). A program that failed, timed out or took more than
+    --slow seconds on a size is not run again on it."""
+    records = []
+    scratch = tempfile.mkdtemp(prefix="dtlab-bench3d-")
+    try:
+        for n in sizes:
+            done = set()
+            node_file = os.path.join(scratch, f"uniform-{n}.node")
+            if TETGEN in programs:
+                subprocess.run([args.cgal, "--random", str(n), "--seed", str(args.seed), "--write-node",
+                                node_file], check=True)
+            for run in range(args.runs):
+                for program in programs:
+                    if program in done:
+                        continue
+                    timeout = args.timeout * max(1.0, n / 1e6)
+                    cpu_before = children_cpu()
+                    if program == TETGEN:
+                        cmd = [args.tetgen, "-NEFIB", node_file]
+                        result, error = tetgen_once(args, node_file, n, timeout)
+                    else:
+                        cmd = command(args, program, n)
+                        result, error = run_once(cmd, timeout)
+                    cpu = children_cpu() - cpu_before
+                    rec = {"n": n, "distribution": "uniform", "program": program, "run": run,
+                           "command": " ".join(cmd), "process_cpu_seconds": cpu}
+                    if error:
+                        rec["error"] = error
+                        done.add(program)
+                        progress(f"  n={n} {program} run {run + 1}: ERROR {error}")
+                    else:
+                        rec.update({k: result[k] for k in ("points", "elements", "seconds", "elements_per_minute",
+                                                           "peak_rss_mb", "cgal_version", "predicates",
+                                                           "threads") if k in result})
+                        if result["seconds"] > args.slow:
+                            done.add(program)
+                        mb = result.get("peak_rss_mb")
+                        progress(f"  n={n} {program} run {run + 1}/{args.runs}: {result['seconds']:.3f} s, "
+                                 + (f"{mb:.0f} MB" if mb is not None else "peak MB not measured"))
+                    records.append(rec)
+            if os.path.exists(node_file):
+                os.remove(node_file)
+            save(records)
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
+    return records
+
+
+def summarise(records):
+    """{(n, program): {"seconds", "cpu", "mb", "elements", "errors", "runs"}}: min seconds and CPU,
+    max MB over the runs."""
+    out = {}
+    for r in records:
+        s = out.setdefault((r["n"], r["program"]), {"seconds": None, "cpu": None, "mb": None,
+                                                    "elements": set(), "errors": [], "runs": 0})
+        if "error" in r:
+            s["errors"].append(r["error"])
+            continue
+        s["runs"] += 1
+        s["seconds"] = r["seconds"] if s["seconds"] is None else min(s["seconds"], r["seconds"])
+        s["cpu"] = r["process_cpu_seconds"] if s["cpu"] is None else min(s["cpu"], r["process_cpu_seconds"])
+        if r.get("peak_rss_mb") is not None:
+            s["mb"] = r["peak_rss_mb"] if s["mb"] is None else max(s["mb"], r["peak_rss_mb"])
+        s["elements"].add(r["elements"])
+    return out
+
+
+def ratio(s, peer):
+    return s["seconds"] / peer["seconds"] if peer.get("seconds") and s["seconds"] else None
+
+
+def table(summary, programs, sizes, runs):
+    head = ["n", "program", "seconds", "Mtets/min", "peak MB", "bytes/tet", "time / CGAL",
+            "time / TetGen", "ns/point", "process CPU s"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    notes = []
+    for n in sizes:
+        cgal = summary.get((n, CGAL), {})
+        tetgen = summary.get((n, TETGEN), {})
+        counts = set()
+        for program in programs:
+            s = summary.get((n, program))
+            if s is None:
+                continue
+            counts |= s["elements"]
+            if s["runs"] == 0:
+                lines.append(f"| {size_label(n)} | {program} | error: {s['errors'][0]} |" + " |" * (len(head) - 3))
+                continue
+            tets = min(s["elements"])
+            per_minute = tets * 60.0 / s["seconds"] / 1e6 if s["seconds"] else None
+            per_tet = s["mb"] * 1024 * 1024 / tets if s["mb"] is not None and tets else None
+            name = f"**{program}**" if program in PEERS else program
+            lines.append("| " + " | ".join([
+                size_label(n), name, fmt(s["seconds"]) + (" †" if s["runs"] < runs else ""), fmt(per_minute),
+                fmt(s["mb"]), fmt(per_tet), fmt(ratio(s, cgal), 2), fmt(ratio(s, tetgen), 2),
+                fmt(s["seconds"] * 1e9 / n), fmt(s["cpu"])]) + " |")
+            if s["errors"]:
+                notes.append(f"{program} on n={n}: {len(s['errors'])} failed run(s): {s['errors'][0]}")
+        if any(0 < summary.get((n, p), {}).get("runs", runs) < runs for p in programs) and \
+                not any(note.startswith("†") for note in notes):
+            notes.append(f"† fewer runs than {runs}: a run longer than the --slow limit is not repeated")
+        if len(counts) > 1:
+            notes.append(f"n={n}: the programs disagree on the number of tetrahedra ({sorted(counts)}): "
+                         f"different points, or a wrong result")
+    return "\n".join(lines), notes
+
+
+def flatness(summary, programs, sizes):
+    """One line per program: ns per point at each n >= 10^4 and the half-width of the band
+    around their middle that holds them all, (max - min) / (max + min)."""
+    lines = []
+    for program in programs:
+        per_point = [(n, summary[(n, program)]["seconds"] * 1e9 / n) for n in sizes
+                     if n >= 10_000 and summary.get((n, program), {}).get("seconds")]
+        if len(per_point) < 2:
+            continue
+        values = [v for _, v in per_point]
+        band = 100.0 * (max(values) - min(values)) / (max(values) + min(values))
+        series = ", ".join(f"{fmt(v)} at {size_label(n)}" for n, v in per_point)
+        lines.append(f"{program}: ns per point {series}: flat within ±{band:.0f} %")
+    return lines
+
+
+def machine_line(m, runs, seed):
+    load = ", ".join(f"{x:.1f}" for x in m.get("load_average", []))
+    return (f"Machine: {m['cpu']}, {m['cpus']} CPUs (load average {load} at the start); "
+            f"compiler {m['compiler']}; `{m.get('dtlab_version', 'dtlab')}` (tree at {m['commit']}); "
+            f"CGAL {m.get('cgal', 'unknown')}; TetGen {m.get('tetgen', 'unknown')}. One process per run, "
+            f"uniform points in the unit cube, seed {seed}; seconds: each program's own timing of the "
+            f"tetrahedralization, minimum of {runs} runs; peak MB: maximum; bytes/tet: peak RSS per "
+            f"finite tetrahedron; ratios of minima from this one invocation.")
+
+
+def markdown(data):
+    programs = data["programs"]
+    sizes = data["sizes"]
+    summary = summarise(data["records"])
+    body, notes = table(summary, programs, sizes, data["runs"])
+    text = machine_line(data["machine"], data["runs"], data["seed"]) + "\n\n" + body + "\n"
+    flat = flatness(summary, programs, sizes)
+    if flat:
+        text += "\nTime per point from 10^4 up:\n\n" + "\n".join(f"- {line}" for line in flat) + "\n"
+    if notes:
+        text += "\n" + "\n".join(f"- {note}" for note in notes) + "\n"
+    return text
+
+
+def update_readme(path, text, producer=PRODUCER):
+    readme_tables.write_block(path, "delaunay3d", "3D Delaunay", producer, text)
+
+
+def tetgen_version(tetgen):
+    """TetGen prints no version; Debian's package does."""
+    try:
+        out = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "tetgen"], stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL, text=True).stdout.strip()
+    except OSError:
+        out = ""
+    return f"{out} (Debian package)" if out else os.path.basename(tetgen)
+
+
+def programs_for(args):
+    """The programs to run, dtlab's variants first, the peers last."""
+    programs = args.variants.split(",") if args.variants else dtlab_variants(args.dtlab, args.threads)
+    if not args.no_cgal:
+        if not os.access(args.cgal, os.X_OK):
+            raise SystemExit(f"{args.cgal} not found (build it with CGAL, or pass --no-cgal)")
+        programs.append(CGAL)
+    if not args.no_tetgen:
+        if shutil.which(args.tetgen) is None:
+            progress(f"{args.tetgen} not found: TetGen left out (Debian package `tetgen`)")
+        elif not os.access(args.cgal, os.X_OK):
+            progress("TetGen needs the CGAL runner to write its points: left out")
+        else:
+            programs.append(TETGEN)
+    return programs
+
+
+def add_arguments(ap):
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"), help="build directory")
+    ap.add_argument("--dtlab", help="the dtlab binary (default BUILD/dtlab)")
+    ap.add_argument("--cgal", help="the CGAL runner (default BUILD/bench/cgal_delaunay3d_run_bench)")
+    ap.add_argument("--tetgen", default="tetgen", help="the TetGen binary")
+    ap.add_argument("--gnu-time", default="/usr/bin/time", help="GNU time, for TetGen's peak RSS")
+    ap.add_argument("--variants", help="comma-separated programs (default: every built variant)")
+    ap.add_argument("--threads", default="1,2", help="thread counts of a parallel variant")
+    ap.add_argument("--no-cgal", action="store_true")
+    ap.add_argument("--no-tetgen", action="store_true")
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--timeout", type=float, default=600,
+                    help="seconds per run of 10^6 points (scaled up with n); a run past it is killed")
+    ap.add_argument("--slow", type=float, default=60, help="a run longer than this (seconds) is not repeated")
+
+
+def resolve(args):
+    args.dtlab = args.dtlab or os.path.join(args.build, "dtlab")
+    args.cgal = args.cgal or os.path.join(args.build, "bench", "cgal_delaunay3d_run_bench")
+    args.threads = [int(t) for t in str(args.threads).split(",") if t]
+
+
+def run(args, sizes, path):
+    """Measures, writes the JSON to `path` after each size, returns the data."""
+    programs = programs_for(args)
+    m = machine(args.dtlab)
+    m["tetgen"] = tetgen_version(args.tetgen) if TETGEN in programs else "not run"
+    progress(f"3D: {len(sizes)} sizes x {len(programs)} programs x {args.runs} runs: {', '.join(programs)}")
+    data = {"machine": m, "programs": programs, "sizes": sizes, "runs": args.runs, "seed": args.seed,
+            "records": []}
+
+    def save(records):
+        data["records"] = records
+        data["machine"]["load_average_end"] = list(os.getloadavg())
+        data["machine"]["cgal"] = next((r["cgal_version"] for r in records if "cgal_version" in r), "not run")
+        with open(path, "w") as f:
+            json.dump(data, f, indent=1)
+
+    measure(args, programs, sizes, save)
+    progress(f"wrote {path}")
+    return data
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    add_arguments(ap)
+    ap.add_argument("--sizes", default="10000,100000,1000000")
+    ap.add_argument("--large", action="store_true", help="also 10^7 points")
+    ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--json", help="write the measurements here (default BUILD/bench_delaunay3d.json)")
+    ap.add_argument("--from-json", help="print the table of an earlier run instead of measuring")
+    ap.add_argument("--update-readme", action="store_true", help="write the table into README.md")
+    ap.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    args = ap.parse_args()
+    resolve(args)
+
+    if args.from_json:
+        with open(args.from_json) as f:
+            data = json.load(f)
+    else:
+        sizes = [int(n) for n in args.sizes.split(",") if n]
+        if args.large and 10_000_000 not in sizes:
+            sizes.append(10_000_000)
+        data = run(args, sizes, args.json or os.path.join(args.build, "bench_delaunay3d.json"))
+
+    text = markdown(data)
+    print(text)
+    if args.update_readme:
+        update_readme(args.readme, text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
