@@ -143,12 +143,35 @@ std::uint32_t vertex_number(const LineTokenizer& in, std::size_t k, std::int64_t
                             const std::string& what) {
   const std::int64_t v = in.integer(k, what + " vertex");
   // count < 2^32 (LineTokenizer::count), so first + count cannot overflow.
+  if (count == 0) in.fail(what + ": vertex number " + std::to_string(v) + ", but there are no vertices");
   if (v < first || v - first >= static_cast<std::int64_t>(count)) {
     in.fail(what + ": vertex number " + std::to_string(v) + " out of range " + std::to_string(first) + ".." +
-            std::to_string(first + static_cast<std::int64_t>(count) - 1) +
-            (count == 0 ? " (there are no vertices)" : ""));
+            std::to_string(first + static_cast<std::int64_t>(count) - 1));
   }
   return static_cast<std::uint32_t>(v - first);
+}
+
+void next_counted_entry(LineTokenizer& in, std::uint64_t i, std::uint64_t n, std::string_view noun) {
+  const std::uint64_t last = in.line();
+  if (!in.next_line()) {
+    in.fail_at(std::max<std::uint64_t>(last, 1), "file ends after " + std::to_string(i) + " of " + std::to_string(n) +
+                                                     " " + std::string(noun) + " (truncated?)");
+  }
+}
+
+int list_entry_number(const LineTokenizer& in, std::uint64_t i, int first, const std::string& what) {
+  const std::int64_t number = in.integer(0, what + " number");
+  if (i == 0) {
+    if (number != 0 && number != 1) {
+      in.fail(what + " is numbered " + std::to_string(number) + "; the first one must be 0 or 1");
+    }
+    return static_cast<int>(number);
+  }
+  if (number != first + static_cast<std::int64_t>(i)) {
+    in.fail(what + " is numbered " + std::to_string(number) + ", expected " +
+            std::to_string(first + static_cast<std::int64_t>(i)) + " (numbers run consecutively)");
+  }
+  return first;
 }
 
 namespace {

@@ -63,6 +63,18 @@ int int_field(const LineTokenizer& in, std::size_t k, const std::string& what);
 std::uint32_t vertex_number(const LineTokenizer& in, std::size_t k, std::int64_t first, std::uint64_t count,
                             const std::string& what);
 
+// --- Counted lists (Triangle's and TetGen's .node, .ele, .poly, .face) --------------------------
+//
+// A header gives a count, then each entry sits on a line of its own, numbered in its first
+// field from 0 or 1 (as the first entry says) and then consecutively.
+
+// Moves to entry i (0-based) of n; at the end of the input, "file ends after i of n <noun>".
+void next_counted_entry(LineTokenizer& in, std::uint64_t i, std::uint64_t n, std::string_view noun);
+
+// Checks the number in field 0 of entry i: 0 or 1 for i = 0, first + i after. Returns the
+// number of the first entry (0 or 1).
+int list_entry_number(const LineTokenizer& in, std::uint64_t i, int first, const std::string& what);
+
 // --- Medit (.mesh) sections, shared by the 2D and 3D readers ------------------------------------
 //
 // A section is a keyword, its count (on the keyword's line or alone on the next one), then one
