@@ -106,7 +106,7 @@ def measure(args, programs, cases, save):
                 else:
                     rec.update({k: result[k] for k in ("points", "elements", "seconds",
                                                        "elements_per_minute", "peak_rss_mb",
-                                                       "cgal_version") if k in result})
+                                                       "cgal_version", "predicates") if k in result})
                     if result["seconds"] > args.slow:
                         done.add(program)
                     progress(f"  n={n} {distribution} {program} run {run + 1}/{args.runs}: "
