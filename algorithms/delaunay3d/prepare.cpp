@@ -8,22 +8,11 @@
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
+#include "kernel/intersections.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
 namespace dtlab {
-
-namespace {
-
-// a, b, c on one line: the cross product (b - a) x (c - a) vanishes, i.e. all three coordinate
-// projections are collinear (exact orient2d).
-bool collinear3(const Vec3& a, const Vec3& b, const Vec3& c) noexcept {
-  return orient2d({a.x, a.y}, {b.x, b.y}, {c.x, c.y}) == Sign::Zero &&
-         orient2d({a.y, a.z}, {b.y, b.z}, {c.y, c.z}) == Sign::Zero &&
-         orient2d({a.z, a.x}, {b.z, b.x}, {c.z, c.x}) == Sign::Zero;
-}
-
-}  // namespace
 
 std::array<std::size_t, 4> first_simplex(std::span<const Vec3> points, std::span<const std::uint32_t> ids) {
   const std::size_t n = ids.size();
