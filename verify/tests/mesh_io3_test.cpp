@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "kernel/predicates.hpp"
 #include "mesh/io/medit.hpp"
 #include "mesh/io/medit3.hpp"
+#include "mesh/io/tetgen_format.hpp"
 
 namespace dtlab {
 namespace {
@@ -293,6 +295,221 @@ TEST(Medit3Malformed, Keywords) {
   expect_parse_error(kHeader + "tetrahedra 0\nEnd\n", kReadMedit3, 3, "case-sensitive: Tetrahedra");
   expect_parse_error(kHeader + "Foo 3\nEnd\n", kReadMedit3, 3, "unknown keyword 'Foo'");
   expect_parse_error(kHeader + "End\nVertices 0\n", kReadMedit3, 4, "text after End");
+}
+
+// --- TetGen .node / .ele / .face ---------------------------------------------------------------
+
+const auto kReadNode = [](std::istream& in) { read_tetgen_node(in, "input.txt"); };
+
+// Four points numbered from 1 (a positive tetrahedron 1 2 3 4) and a fifth above the others.
+TetGenNodes five_nodes(int first_index = 1) {
+  std::istringstream in("5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n");
+  TetGenNodes nodes = read_tetgen_node(in, "nodes");
+  nodes.first_index = first_index;
+  return nodes;
+}
+
+void read_ele_of_five(std::istream& in) { read_tetgen_ele(in, "input.txt", five_nodes()); }
+void read_face_of_five(std::istream& in) { read_tetgen_face(in, "input.txt", five_nodes()); }
+
+TEST(TetGenFormat, NodeRoundTripWithAttributesAndMarkers) {
+  for (int first : {0, 1}) {
+    TetGenNodes nodes = to_tetgen_nodes(sample_mesh());
+    nodes.attribute_count = 2;
+    for (std::size_t i = 0; i < 2 * nodes.points.size(); ++i) nodes.attributes.push_back(1.0 / (3.0 + i));
+    nodes.first_index = first;
+    std::stringstream s;
+    write_tetgen_node(s, nodes);
+    const TetGenNodes back = read_tetgen_node(s, "memory");
+    expect_same_points(back.points, nodes.points);
+    EXPECT_EQ(back.attributes, nodes.attributes);
+    EXPECT_TRUE(back.has_markers);
+    EXPECT_EQ(back.markers, nodes.markers);
+    EXPECT_EQ(back.first_index, first);
+  }
+}
+
+TEST(TetGenFormat, EleAndFaceRoundTripFourAndTenNodes) {
+  TetGenNodes nodes = five_nodes();
+  for (int first : {0, 1}) {
+    nodes.first_index = first;
+    TetGenElements e;
+    e.tetrahedra = {{0, 1, 2, 3}, {1, 2, 3, 4}};
+    ASSERT_EQ(orient3d(nodes.points[1], nodes.points[2], nodes.points[3], nodes.points[4]), Sign::Positive);
+    e.attribute_count = 1;
+    e.attributes = {3.5, -1.0};
+    e.first_index = 1 - first;
+    e.vertex_first_index = first;
+    for (bool ten : {false, true}) {
+      e.midside.clear();
+      if (ten) e.midside = {{4, 4, 4, 4, 4, 4}, {0, 1, 2, 3, 0, 1}};
+      std::stringstream s;
+      write_tetgen_ele(s, e, nodes.points.size());
+      const TetGenElements back = read_tetgen_ele(s, "memory", nodes);
+      EXPECT_EQ(back.tetrahedra, e.tetrahedra);
+      EXPECT_EQ(back.midside, e.midside);
+      EXPECT_EQ(back.attributes, e.attributes);
+      EXPECT_EQ(back.orientation, Sign::Positive);
+      EXPECT_EQ(back.first_index, e.first_index);
+      EXPECT_EQ(back.vertex_first_index, first);
+      if (ten) {
+        EXPECT_THROW(to_mesh_data3(nodes, back), InputError);
+      }
+    }
+    TetGenFaces f;
+    f.triangles = {{0, 1, 2}, {4, 3, 2}};
+    f.has_markers = true;
+    f.markers = {-7, 8};
+    f.vertex_first_index = first;
+    std::stringstream s;
+    write_tetgen_face(s, f, nodes.points.size());
+    const TetGenFaces back = read_tetgen_face(s, "memory", nodes);
+    EXPECT_EQ(back.triangles, f.triangles);
+    EXPECT_EQ(back.markers, f.markers);
+  }
+}
+
+TEST(TetGenFormat, MeshRoundTripThroughFiles) {
+  MeshData3 m = sample_mesh();
+  m.edges.clear();  // .node/.ele/.face carry no edges
+  m.edge_refs.clear();
+  const std::string base = temp_path("round").string();
+  write_tetgen_mesh(base, m);
+  expect_same_mesh(read_tetgen_mesh(base), m);
+
+  // Without a .face file there are no triangles.
+  std::filesystem::remove(base + ".face");
+  const MeshData3 no_faces = read_tetgen_mesh(base);
+  EXPECT_TRUE(no_faces.triangles.empty());
+  EXPECT_EQ(no_faces.tetrahedra, m.tetrahedra);
+}
+
+TEST(TetGenFormat, NegativelyOrientedFilesComeOutPositive) {
+  // The same mesh written with every tetrahedron reversed (TetGen's -R): n3 and n4 swapped back.
+  const MeshData3 m = sample_mesh();
+  TetGenNodes nodes = to_tetgen_nodes(m);
+  TetGenElements reversed = to_tetgen_elements(m);
+  for (auto& t : reversed.tetrahedra) std::swap(t[0], t[1]);
+  std::stringstream s;
+  write_tetgen_ele(s, reversed, nodes.points.size());
+  const TetGenElements back = read_tetgen_ele(s, "memory", nodes);
+  EXPECT_EQ(back.orientation, Sign::Negative);
+  EXPECT_EQ(back.tetrahedra, reversed.tetrahedra);  // the raw record keeps the file's order
+  const MeshData3 converted = to_mesh_data3(nodes, back);
+  ASSERT_EQ(converted.tetrahedra.size(), m.tetrahedra.size());
+  for (std::size_t i = 0; i < m.tetrahedra.size(); ++i) {
+    const auto& t = converted.tetrahedra[i];
+    EXPECT_TRUE(positive(converted, t)) << i;
+    EXPECT_EQ((std::array<std::uint32_t, 4>{m.tetrahedra[i][1], m.tetrahedra[i][0], m.tetrahedra[i][3],
+                                            m.tetrahedra[i][2]}),
+              t);
+  }
+  EXPECT_EQ(converted.tetrahedron_refs, m.tetrahedron_refs);
+}
+
+TEST(TetGenFormat, HeaderDefaultsZeroBasedAndNonIntegralAttributes) {
+  std::istringstream node("# TetGen's defaults: 3D, no attributes, no markers\n4\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
+  const TetGenNodes nodes = read_tetgen_node(node, "input.txt");
+  EXPECT_EQ(nodes.first_index, 0);
+  EXPECT_FALSE(nodes.has_markers);
+  std::istringstream ele("1\n0 0 1 2 3\n");
+  const TetGenElements e = read_tetgen_ele(ele, "input.txt", nodes);
+  EXPECT_EQ(e.tetrahedra, (std::vector<std::array<std::uint32_t, 4>>{{0, 1, 2, 3}}));
+  std::istringstream face("1\n0 0 1 2\n");
+  const TetGenFaces f = read_tetgen_face(face, "input.txt", nodes);
+  const MeshData3 m = to_mesh_data3(nodes, e, &f);
+  EXPECT_EQ(m.vertex_refs, (std::vector<int>{0, 0, 0, 0}));
+  EXPECT_EQ(m.tetrahedron_refs, (std::vector<int>{0}));
+  EXPECT_EQ(m.triangle_refs, (std::vector<int>{0}));
+
+  std::istringstream attr("1 4 1\n0 0 1 2 3 0.5\n");
+  EXPECT_EQ(to_mesh_data3(nodes, read_tetgen_ele(attr, "input.txt", nodes)).tetrahedron_refs, (std::vector<int>{0}));
+  std::istringstream region("1 4 2\n0 0 1 2 3 -12 0.5\n");
+  EXPECT_EQ(to_mesh_data3(nodes, read_tetgen_ele(region, "input.txt", nodes)).tetrahedron_refs,
+            (std::vector<int>{-12}));
+}
+
+TEST(TetGenFormat, WritersRefuseBadData) {
+  std::stringstream s;
+  TetGenElements e;
+  e.tetrahedra = {{0, 1, 2, 5}};
+  EXPECT_THROW(write_tetgen_ele(s, e, 5), InputError);
+  e.tetrahedra = {{0, 1, 2, 3}};
+  e.attribute_count = 1;
+  EXPECT_THROW(write_tetgen_ele(s, e, 5), InputError);
+  TetGenFaces f;
+  f.triangles = {{0, 1, 9}};
+  EXPECT_THROW(write_tetgen_face(s, f, 5), InputError);
+  f.triangles = {{0, 1, 2}};
+  f.has_markers = true;
+  EXPECT_THROW(write_tetgen_face(s, f, 5), InputError);
+  TetGenNodes n = five_nodes();
+  n.first_index = 2;
+  EXPECT_THROW(write_tetgen_node(s, n), InputError);
+}
+
+TEST(TetGenMalformed, NodeFile) {
+  expect_parse_error("", kReadNode, 1, "missing the header");
+  expect_parse_error("3 2 0 0\n", kReadNode, 1, "must be 3D");
+  expect_parse_error("3 3 0 2\n", kReadNode, 1, "not 0 or 1");
+  expect_parse_error("3 3 0 0 1\n", kReadNode, 1, "trailing");
+  expect_parse_error("2 3 0 0\n1 0 0 0\n", kReadNode, 2, "file ends after 1 of 2 points");
+  expect_parse_error("2 3 0 0\n1 0 0 0\n1 1 1 1\n", kReadNode, 3, "expected 2");
+  expect_parse_error("1 3 0 0\n2 0 0 0\n", kReadNode, 2, "first one must be 0 or 1");
+  expect_parse_error("1 3 0 0\n1 0 0\n", kReadNode, 2, "expected 4 fields, found 3");
+  expect_parse_error("1 3 1 1\n1 0 0 0 0.5\n", kReadNode, 2, "expected 6 fields, found 5");
+  expect_parse_error("1 3 0 1\n1 0 0 0 x\n", kReadNode, 2, "not an integer");
+  expect_parse_error("1 3 0 0\n1 0 0 1e-320\n", kReadNode, 2, "point 1 of 1 z is too small");
+  expect_parse_error("1 3 0 0\n1 0 0 0\n2 0 0 0\n", kReadNode, 3, "more lines than");
+}
+
+TEST(TetGenMalformed, EleFile) {
+  expect_parse_error("", read_ele_of_five, 1, "missing the header");
+  expect_parse_error("1 6 0\n", read_ele_of_five, 1, "not 4 or 10");
+  expect_parse_error("1 4 0 0\n", read_ele_of_five, 1, "trailing");
+  expect_parse_error("1 4 0\n1 1 2 3 6\n", read_ele_of_five, 2, "vertex number 6 out of range 1..5");
+  expect_parse_error("1 4 0\n1 0 2 3 4\n", read_ele_of_five, 2, "vertex number 0 out of range 1..5");
+  expect_parse_error("1 4 0\n1 1 2 3\n", read_ele_of_five, 2, "expected 5 fields, found 4");
+  expect_parse_error("1 4 1\n1 1 2 3 4\n", read_ele_of_five, 2, "expected 6 fields, found 5");
+  expect_parse_error("1 10 0\n1 1 2 3 4 5 5 5 5 5\n", read_ele_of_five, 2, "expected 11 fields, found 10");
+  expect_parse_error("2 4 0\n1 1 2 3 4\n", read_ele_of_five, 2, "file ends after 1 of 2 tetrahedra");
+  expect_parse_error("1 4 0\n1 1 2 3 4\n2 1 2 3 4\n", read_ele_of_five, 3, "more lines than");
+  expect_parse_error("1 4 1\n1 1 2 3 4 nan\n", read_ele_of_five, 2, "attribute 1 is not finite");
+}
+
+TEST(TetGenMalformed, EleOrientation) {
+  expect_parse_error("1 4 0\n1 1 2 3 3\n", read_ele_of_five, 2, "flat");
+  expect_parse_error("2 4 0\n1 1 2 3 4\n2 1 2 4 3\n", read_ele_of_five, 3,
+                     "tetrahedron 2 of 2 is negatively oriented, but the first tetrahedron is positively oriented");
+  expect_parse_error("2 4 0\n1 1 2 4 3\n2 2 3 4 5\n", read_ele_of_five, 3, "positively oriented, but the first");
+  expect_parse_error("2 4 0\n1 1 2 3 4\n2 2 3 4 2\n", read_ele_of_five, 3, "flat");
+}
+
+TEST(TetGenMalformed, FaceFile) {
+  expect_parse_error("", read_face_of_five, 1, "missing the header");
+  expect_parse_error("1 2\n", read_face_of_five, 1, "not 0 or 1");
+  expect_parse_error("1 0 0\n", read_face_of_five, 1, "trailing");
+  expect_parse_error("1 1\n1 1 2 3\n", read_face_of_five, 2, "expected 5 fields, found 4");
+  expect_parse_error("1 1\n1 1 2 3 1 7 8\n", read_face_of_five, 2, "trailing text '7'");
+  expect_parse_error("1 0\n1 1 2 6\n", read_face_of_five, 2, "face 1 of 1: vertex number 6 out of range 1..5");
+  expect_parse_error("2 0\n1 1 2 3\n", read_face_of_five, 2, "file ends after 1 of 2 faces");
+  expect_parse_error("1 0\n1 1 2 3\n# end\n2 1 2 3\n", read_face_of_five, 4, "more lines than");
+}
+
+TEST(TetGenMalformed, MissingFilesAreParseErrors) {
+  const std::string base = temp_path("missing_parts").string();
+  std::filesystem::remove(base + ".node");
+  EXPECT_THROW(read_tetgen_mesh(base), ParseError);
+  {
+    std::ofstream(base + ".node") << "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n";
+  }
+  std::filesystem::remove(base + ".ele");
+  try {
+    read_tetgen_mesh(base);
+    ADD_FAILURE() << "no ParseError without a .ele";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.file(), base + ".ele");
+  }
 }
 
 }  // namespace
