@@ -14,6 +14,7 @@
 #include "kernel/error.hpp"
 #include "verify/checks2d.hpp"
 #include "verify/generators/points2d.hpp"
+#include "verify/generators/points3d.hpp"
 
 namespace dtlab::cli {
 
@@ -127,8 +128,8 @@ int run_delaunay(const DelaunayArgs& args) {
 void add_delaunay(CLI::App& app) {
   auto args = std::make_shared<DelaunayArgs>();
   CLI::App* cmd = app.add_subcommand("delaunay", "Delaunay triangulation of a point set");
-  cmd->add_option("input", args->input, "Point file: plain 'x y' lines, Triangle .node, or Medit .mesh");
-  cmd->add_option("-o,--output", args->output, "Write the mesh: OUT.mesh (Medit) or OUT.ele (Triangle .node + .ele)");
+  cmd->add_option("input", args->input, "Point file: plain 'x y' or 'x y z' lines, Triangle .node, or Medit .mesh (2D or 3D)");
+  cmd->add_option("-o,--output", args->output, "Write the mesh: OUT.mesh (Medit), or in 2D OUT.ele (Triangle .node + .ele)");
   std::string names;
   for (const Delaunay2dVariant& v : delaunay2d_variants()) names += (names.empty() ? "" : "|") + std::string(v.name);
   cmd->add_option("--algo", args->algorithm, "Variant: " + names)->capture_default_str();
@@ -144,7 +145,11 @@ void add_delaunay(CLI::App& app) {
   cmd->add_option("--dim", args->dim, "Dimension of the generated points")->capture_default_str();
   std::string dists;
   for (const std::string& d : distribution_names2d()) dists += (dists.empty() ? "" : "|") + d;
-  cmd->add_option("--distribution", args->distribution, "Generated distribution: " + dists)->capture_default_str();
+  std::string dists3;
+  for (const std::string& d : distribution_names3d()) dists3 += (dists3.empty() ? "" : "|") + d;
+  cmd->add_option("--distribution", args->distribution,
+                  "Generated distribution; 2D: " + dists + "; 3D: " + dists3)
+      ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Seed of the generated points")->capture_default_str();
   cmd->callback([args] {
     exit_code() = run_delaunay(*args);

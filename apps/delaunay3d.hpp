@@ -8,13 +8,13 @@
 namespace dtlab::cli {
 
 struct Delaunay3dCliArgs {
-  std::string input;      // a plain "x y z" point file, or empty with random > 0
+  std::string input;      // a plain "x y z" point file or a Medit .mesh, or empty with random > 0
   std::string output;     // empty, or OUT.mesh (Medit, Vertices and Tetrahedra)
   std::string algorithm = "incremental";
   bool stats = false;     // last line: one JSON object, as in 2D
-  bool verify = false;    // combinatorial check (exact 3D checks belong to verify/, not written yet)
+  bool verify = false;    // the exact checks of verify/checks3d.hpp
   std::size_t random = 0;
-  std::string distribution = "uniform";  // only "uniform" (in the unit cube) for now
+  std::string distribution = "uniform";  // verify/generators/points3d.hpp
   std::uint64_t seed = 1;
   unsigned threads = 1;   // Delaunay3dOptions::threads
 };

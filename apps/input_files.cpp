@@ -1,8 +1,12 @@
 #include "apps/input_files.hpp"
 
+#include <fstream>
+#include <sstream>
+
 #include "apps/cli_util.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit.hpp"
+#include "mesh/io/medit3.hpp"
 #include "mesh/io/point_file.hpp"
 #include "mesh/io/triangle_format.hpp"
 
@@ -17,8 +21,24 @@ std::string without_extension(const std::string& path) {
 
 int input_dimension(const std::string& path) {
   const std::string ext = extension_of(path);
-  if (ext == "node" || ext == "mesh") return 2;
-  return point_file_dimension(path);
+  if (ext != "node" && ext != "mesh") return point_file_dimension(path);
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot open '" + path + "'");
+  // The readers check everything else; this only looks for the dimension: a .node header's
+  // second number (absent: 2), a .mesh file's Dimension keyword (absent: 3, Medit's default).
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::string content = line.substr(0, line.find('#'));
+    std::istringstream words(content);
+    std::string first, second;
+    if (!(words >> first)) continue;
+    if (ext == "node") return (words >> second) ? (second == "3" ? 3 : 2) : 2;
+    if (first == "Dimension") {
+      if (!(words >> second) && !(in >> second)) break;
+      return second == "2" ? 2 : 3;
+    }
+  }
+  return ext == "node" ? 2 : 3;
 }
 
 std::vector<Vec2> read_points2(const std::string& path) {
@@ -40,6 +60,21 @@ void write_mesh2(const std::string& path, const MeshData2& mesh) {
   if (ext == "mesh") return write_medit2(path, mesh);
   if (ext == "ele" || ext == "node") return write_triangle_mesh(without_extension(path), mesh);
   throw InputError("cannot write '" + path + "': supported outputs are .mesh (Medit) and .ele (Triangle .node + .ele)");
+}
+
+std::vector<Vec3> read_points3(const std::string& path) {
+  if (extension_of(path) == "mesh") return read_medit3(path).vertices;
+  return read_point_file3(path);
+}
+
+MeshData3 read_mesh3(const std::string& path) {
+  if (extension_of(path) == "mesh") return read_medit3(path);
+  throw InputError("cannot read a 3D mesh from '" + path + "': supported is .mesh (Medit)");
+}
+
+void write_mesh3(const std::string& path, const MeshData3& mesh) {
+  if (extension_of(path) == "mesh") return write_medit3(path, mesh);
+  throw InputError("cannot write '" + path + "': the supported 3D output is .mesh (Medit)");
 }
 
 }  // namespace dtlab::cli

@@ -6,11 +6,12 @@
 
 #include "kernel/vec.hpp"
 #include "mesh/io/mesh_data.hpp"
+#include "mesh/io/mesh_data3.hpp"
 
 namespace dtlab::cli {
 
-// 2 or 3: the dimension of a point input (.node and .mesh files are 2D for now; a plain point
-// file has 2 or 3 numbers per line).
+// 2 or 3: the dimension of a point or mesh input: a .mesh file's Dimension keyword, a .node
+// file's header (Triangle's 2 or TetGen's 3), the numbers per line of a plain point file.
 int input_dimension(const std::string& path);
 
 // Points of a 2D input: Triangle .node, Medit .mesh (its Vertices), or a plain point file.
@@ -22,5 +23,11 @@ MeshData2 read_mesh2(const std::string& path);
 // Writes Medit .mesh, or Triangle .node + .ele for OUT.ele / OUT.node; other extensions are an
 // InputError naming the supported ones.
 void write_mesh2(const std::string& path, const MeshData2& mesh);
+
+// The 3D counterparts: points of a Medit .mesh (its Vertices) or a plain "x y z" file; a 3D mesh
+// from a Medit .mesh; Medit .mesh output.
+std::vector<Vec3> read_points3(const std::string& path);
+MeshData3 read_mesh3(const std::string& path);
+void write_mesh3(const std::string& path, const MeshData3& mesh);
 
 }  // namespace dtlab::cli
