@@ -2,15 +2,15 @@
 // resident memory is that run's: the CGAL column of scripts/bench_delaunay3d.py, beside
 // `dtlab delaunay --dim 3 --random N --seed S --stats` for dtlab's variants.
 //
-//   cgal_delaunay3d_run_bench --random 1000000 --seed 1
-//   cgal_delaunay3d_run_bench --random 1000000 --seed 1 --write-node points.node
+//   cgal_delaunay3d_run_bench --random 1000000 --distribution uniform --seed 1
+//   cgal_delaunay3d_run_bench --random 1000000 --distribution uniform --seed 1 --write-node points.node
 //
 // The first prints one JSON line with the fields of `dtlab delaunay --stats` that the scripts
 // read (points, elements, seconds, elements_per_minute, peak_rss_mb); seconds cover the
 // conversion of the input and the insertion, as dtlab's cover its input copy and
 // tetrahedralization. The second triangulates nothing: it writes the same points as a TetGen
 // .node file (17 significant digits, which read back to the same doubles), so that TetGen runs
-// on them too. The points are those of delaunay3d_points.hpp, bit for bit. Not a Google
+// on them too. The points are dtlab's (verify/generators/points3d.hpp), bit for bit. Not a Google
 // Benchmark: the "_bench" suffix puts it in bench/CMakeLists.txt's glob, and "cgal" in its name
 // builds it only when CGAL is found.
 #include <sys/resource.h>
@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "bench/delaunay3d_cgal_impl.hpp"
-#include "bench/delaunay3d_points.hpp"
+#include "verify/generators/points3d.hpp"
 
 namespace {
 
@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const std::vector<dtlab::Vec3> points = dtlab::bench::generate_points3(args.distribution, args.n, args.seed);
+    const std::vector<dtlab::Vec3> points = dtlab::generate_points3d(args.distribution, args.n, args.seed);
     if (!args.node_file.empty()) {
       write_node(args.node_file, points);
       return 0;
@@ -112,7 +112,8 @@ int main(int argc, char** argv) {
         points.size(), static_cast<std::size_t>(dt.number_of_vertices()), elements, seconds, per_minute,
         peak_rss_mb());
   } catch (const std::exception& e) {
-    // An unknown distribution name, an unwritable .node file, or no memory.
+    // An unknown distribution name (dtlab::InputError lists the known ones), an unwritable .node
+    // file, or no memory.
     std::cerr << "cgal_delaunay3d_run_bench: " << e.what() << "\n";
     return 1;
   }

@@ -1,7 +1,8 @@
 // Tetrahedra per minute of every registered 3D Delaunay variant (registry.hpp) and of CGAL's
 // Delaunay_triangulation_3 (delaunay3d_cgal.cpp, only when CGAL is found), on the same points:
-// n = 10^3 .. 10^6 (10^7 with --large), uniform points in the unit cube (delaunay3d_points.hpp,
-// fixed seed: the points of `dtlab delaunay --dim 3 --random N`). Each benchmark is named
+// n = 10^3 .. 10^6 (10^7 with --large), distributions uniform, normal, grid, sphere, clustered
+// (verify/generators/points3d.hpp, fixed seed: the points of `dtlab delaunay --dim 3 --random N
+// --distribution D`). Each benchmark is named
 // "delaunay3d/<variant or cgal>/<distribution>/<n>"; a parallel variant appears once per thread
 // count, as "<variant>-t1" and "<variant>-t2". E.g.
 //   delaunay3d_bench --benchmark_filter='/uniform/1000000$'
@@ -26,9 +27,9 @@
 
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
-#include "bench/delaunay3d_points.hpp"
 #include "dtlab/build_info.hpp"
 #include "kernel/error.hpp"
+#include "verify/generators/points3d.hpp"
 
 #if DTLAB_BENCH_WITH_CGAL
 #include "bench/delaunay3d_cgal.hpp"
@@ -68,7 +69,7 @@ namespace dtlab::bench {
 namespace {
 
 constexpr std::uint64_t kSeed = 1;  // the seed `dtlab delaunay` uses by default
-const char* const kDistributions[] = {"uniform"};
+const char* const kDistributions[] = {"uniform", "normal", "grid", "sphere", "clustered"};
 constexpr unsigned kParallelThreads[] = {1, 2};
 
 // Builds a tetrahedralization of the points, frees it, returns its tetrahedron count: all stored
@@ -82,7 +83,7 @@ const std::vector<Vec3>& points_for(const std::string& distribution, std::size_t
   static std::vector<Vec3> cached;
   if (cached_distribution != distribution || cached.size() != n) {
     cached = {};
-    cached = generate_points3(distribution, n, kSeed);
+    cached = generate_points3d(distribution, n, kSeed);
     cached_distribution = distribution;
   }
   return cached;
@@ -132,7 +133,7 @@ std::size_t dtlab_tetrahedra(std::span<const Vec3> points, const Delaunay3dOptio
 // other failure on this small input is the benchmark's to report, so the variant stays in.
 bool is_built(const Delaunay3dOptions& options) {
   try {
-    dtlab_tetrahedra(generate_points3("uniform", 64, kSeed), options, false);
+    dtlab_tetrahedra(generate_points3d("uniform", 64, kSeed), options, false);
   } catch (const InternalError& e) {
     if (std::strstr(e.what(), "not built yet") != nullptr) return false;
   } catch (const std::exception&) {

@@ -1,17 +1,18 @@
 #!/usr/bin/env python3
 """Time and peak memory of every 3D Delaunay variant beside CGAL and TetGen, one process per run.
 
-For each size n, runs on the same points (uniform in the unit cube, seed S):
-    build/dtlab delaunay --dim 3 --random N --seed S --algo A --stats [--threads T]   (every variant)
-    build/bench/cgal_delaunay3d_run_bench --random N --seed S                        (CGAL DT3)
-    tetgen -NEFIB points.node    (TetGen 1.5, Debian's binary; the points written once per n by
+For each size n and distribution D (verify/generators/points3d.hpp), runs on the same points:
+    build/dtlab delaunay --dim 3 --random N --distribution D --seed S --algo A --stats [--threads T]
+    build/bench/cgal_delaunay3d_run_bench --random N --distribution D --seed S       (CGAL DT3)
+    tetgen -NEFIB points.node    (TetGen 1.5, Debian's binary; the points written once per case by
                                   cgal_delaunay3d_run_bench --write-node; no output files)
 RUNS times each (interleaved: round 1 of every program, then round 2, ...), and prints a Markdown
-table per (n, program): seconds (the program's own timing of the tetrahedralization: dtlab's and
-CGAL's JSON, TetGen's "Delaunay seconds" line; minimum over the runs), million tetrahedra per
-minute, peak resident MB of the process (maximum over the runs), bytes of peak RSS per
-tetrahedron, time / CGAL and time / TetGen (ratios of this invocation's minima), nanoseconds per
-point, and the process's CPU time. Then, per program, how flat the time per point stays from 10^4
+table row per (n, distribution, program): seconds (the program's own timing of the
+tetrahedralization: dtlab's and CGAL's JSON, TetGen's "Delaunay seconds" line; minimum over the
+runs), million tetrahedra per minute, peak resident MB of the process (maximum over the runs),
+bytes of peak RSS per tetrahedron, time / CGAL, time / TetGen and time / the same program on
+uniform points of the same n (ratios of this invocation's minima), nanoseconds per point, and the
+process's CPU time. Then, per program, how flat the time per point stays from 10^4
 to the largest n (issue 5 asks for +-20 % from 10^4 to 10^7). A machine, compiler and commit line
 comes first. The raw measurements go to a JSON file.
 
@@ -23,8 +24,9 @@ TetGen's peak RSS is taken with GNU time (/usr/bin/time, Debian's `time` package
 a process's peak RSS across exec, so a program started from Python would report Python's resident
 size as its floor, and TetGen cannot report its own. Without /usr/bin/time that column is "-".
 
-  scripts/bench_delaunay3d.py --build build                 # 10^4, 10^5, 10^6
-  scripts/bench_delaunay3d.py --build build --large         # and 10^7
+  scripts/bench_delaunay3d.py --build build                 # uniform 10^4..10^6, the others at 10^5
+  scripts/bench_delaunay3d.py --build build --large         # and 10^7 uniform
+  scripts/bench_delaunay3d.py --sizes 1000000 --distributions grid,sphere --distribution-sizes 1000000
   scripts/bench_delaunay3d.py --sizes 100000 --runs 5 --no-tetgen
   scripts/bench_delaunay3d.py --from-json build/bench_delaunay3d.json --update-readme
 
@@ -108,8 +110,8 @@ def tetgen_once(args, node_file, n, timeout):
     return result, None
 
 
-def command(args, program, n):
-    common = ["--random", str(n), "--seed", str(args.seed)]
+def command(args, program, n, distribution):
+    common = ["--random", str(n), "--distribution", distribution, "--seed", str(args.seed)]
     if program == CGAL:
         return [args.cgal] + common
     variant, threads = split_threads(program)
@@ -117,18 +119,18 @@ def command(args, program, n):
     return cmd + (["--threads", str(threads)] if threads else [])
 
 
-def measure(args, programs, sizes, save):
-    """Raw records: one per (n, program, run). A program that failed, timed out or took more than
-    --slow seconds on a size is not run again on it."""
+def measure(args, programs, cases, save):
+    """Raw records: one per (n, distribution, program, run). A program that failed, timed out or
+    took more than --slow seconds on a case is not run again on it."""
     records = []
     scratch = tempfile.mkdtemp(prefix="dtlab-bench3d-")
     try:
-        for n in sizes:
+        for n, distribution in cases:
             done = set()
-            node_file = os.path.join(scratch, f"uniform-{n}.node")
+            node_file = os.path.join(scratch, f"{distribution}-{n}.node")
             if TETGEN in programs:
-                subprocess.run([args.cgal, "--random", str(n), "--seed", str(args.seed), "--write-node",
-                                node_file], check=True)
+                subprocess.run([args.cgal, "--random", str(n), "--distribution", distribution, "--seed",
+                                str(args.seed), "--write-node", node_file], check=True)
             for run in range(args.runs):
                 for program in programs:
                     if program in done:
@@ -139,15 +141,15 @@ def measure(args, programs, sizes, save):
                         cmd = [args.tetgen, "-NEFIB", node_file]
                         result, error = tetgen_once(args, node_file, n, timeout)
                     else:
-                        cmd = command(args, program, n)
+                        cmd = command(args, program, n, distribution)
                         result, error = run_once(cmd, timeout)
                     cpu = children_cpu() - cpu_before
-                    rec = {"n": n, "distribution": "uniform", "program": program, "run": run,
+                    rec = {"n": n, "distribution": distribution, "program": program, "run": run,
                            "command": " ".join(cmd), "process_cpu_seconds": cpu}
                     if error:
                         rec["error"] = error
                         done.add(program)
-                        progress(f"  n={n} {program} run {run + 1}: ERROR {error}")
+                        progress(f"  n={n} {distribution} {program} run {run + 1}: ERROR {error}")
                     else:
                         rec.update({k: result[k] for k in ("points", "elements", "seconds", "elements_per_minute",
                                                            "peak_rss_mb", "cgal_version", "predicates",
@@ -155,7 +157,8 @@ def measure(args, programs, sizes, save):
                         if result["seconds"] > args.slow:
                             done.add(program)
                         mb = result.get("peak_rss_mb")
-                        progress(f"  n={n} {program} run {run + 1}/{args.runs}: {result['seconds']:.3f} s, "
+                        progress(f"  n={n} {distribution} {program} run {run + 1}/{args.runs}: "
+                                 f"{result['seconds']:.3f} s, "
                                  + (f"{mb:.0f} MB" if mb is not None else "peak MB not measured"))
                     records.append(rec)
             if os.path.exists(node_file):
@@ -167,11 +170,11 @@ def measure(args, programs, sizes, save):
 
 
 def summarise(records):
-    """{(n, program): {"seconds", "cpu", "mb", "elements", "errors", "runs"}}: min seconds and CPU,
-    max MB over the runs."""
+    """{(n, distribution, program): {"seconds", "cpu", "mb", "elements", "errors", "runs"}}: min
+    seconds and CPU, max MB over the runs."""
     out = {}
     for r in records:
-        s = out.setdefault((r["n"], r["program"]), {"seconds": None, "cpu": None, "mb": None,
+        s = out.setdefault((r["n"], r["distribution"], r["program"]), {"seconds": None, "cpu": None, "mb": None,
                                                     "elements": set(), "errors": [], "runs": 0})
         if "error" in r:
             s["errors"].append(r["error"])
@@ -189,49 +192,54 @@ def ratio(s, peer):
     return s["seconds"] / peer["seconds"] if peer.get("seconds") and s["seconds"] else None
 
 
-def table(summary, programs, sizes, runs):
-    head = ["n", "program", "seconds", "Mtets/min", "peak MB", "bytes/tet", "time / CGAL",
-            "time / TetGen", "ns/point", "process CPU s"]
+def table(summary, programs, cases, runs):
+    head = ["n", "distribution", "program", "seconds", "Mtets/min", "peak MB", "bytes/tet", "time / CGAL",
+            "time / TetGen", "time / uniform", "ns/point", "process CPU s"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     notes = []
-    for n in sizes:
-        cgal = summary.get((n, CGAL), {})
-        tetgen = summary.get((n, TETGEN), {})
+    for n, distribution in cases:
+        cgal = summary.get((n, distribution, CGAL), {})
+        tetgen = summary.get((n, distribution, TETGEN), {})
         counts = set()
         for program in programs:
-            s = summary.get((n, program))
+            s = summary.get((n, distribution, program))
             if s is None:
                 continue
             counts |= s["elements"]
             if s["runs"] == 0:
-                lines.append(f"| {size_label(n)} | {program} | error: {s['errors'][0]} |" + " |" * (len(head) - 3))
+                lines.append(f"| {size_label(n)} | {distribution} | {program} | error: {s['errors'][0]} |"
+                             + " |" * (len(head) - 4))
                 continue
+            uniform = summary.get((n, "uniform", program), {})
             tets = min(s["elements"])
             per_minute = tets * 60.0 / s["seconds"] / 1e6 if s["seconds"] else None
             per_tet = s["mb"] * 1024 * 1024 / tets if s["mb"] is not None and tets else None
             name = f"**{program}**" if program in PEERS else program
             lines.append("| " + " | ".join([
-                size_label(n), name, fmt(s["seconds"]) + (" †" if s["runs"] < runs else ""), fmt(per_minute),
-                fmt(s["mb"]), fmt(per_tet), fmt(ratio(s, cgal), 2), fmt(ratio(s, tetgen), 2),
-                fmt(s["seconds"] * 1e9 / n), fmt(s["cpu"])]) + " |")
+                size_label(n), distribution, name, fmt(s["seconds"]) + (" †" if s["runs"] < runs else ""),
+                fmt(per_minute), fmt(s["mb"]), fmt(per_tet), fmt(ratio(s, cgal), 2), fmt(ratio(s, tetgen), 2),
+                fmt(ratio(s, uniform), 2), fmt(s["seconds"] * 1e9 / n), fmt(s["cpu"])]) + " |")
             if s["errors"]:
-                notes.append(f"{program} on n={n}: {len(s['errors'])} failed run(s): {s['errors'][0]}")
-        if any(0 < summary.get((n, p), {}).get("runs", runs) < runs for p in programs) and \
+                notes.append(f"{program} on {distribution} n={n}: {len(s['errors'])} failed run(s): "
+                             f"{s['errors'][0]}")
+        if any(0 < summary.get((n, distribution, p), {}).get("runs", runs) < runs for p in programs) and \
                 not any(note.startswith("†") for note in notes):
             notes.append(f"† fewer runs than {runs}: a run longer than the --slow limit is not repeated")
         if len(counts) > 1:
-            notes.append(f"n={n}: the programs disagree on the number of tetrahedra ({sorted(counts)}): "
-                         f"different points, or a wrong result")
+            notes.append(f"n={n} {distribution}: the programs disagree on the number of tetrahedra "
+                         f"({sorted(counts)}): different points, duplicates or degeneracies handled "
+                         f"differently, or a wrong result")
     return "\n".join(lines), notes
 
 
-def flatness(summary, programs, sizes):
-    """One line per program: ns per point at each n >= 10^4 and the half-width of the band
-    around their middle that holds them all, (max - min) / (max + min)."""
+def flatness(summary, programs, cases):
+    """One line per program: ns per point on uniform points at each n >= 10^4 and the half-width
+    of the band around their middle that holds them all, (max - min) / (max + min)."""
+    sizes = sorted(n for n, d in cases if d == "uniform" and n >= 10_000)
     lines = []
     for program in programs:
-        per_point = [(n, summary[(n, program)]["seconds"] * 1e9 / n) for n in sizes
-                     if n >= 10_000 and summary.get((n, program), {}).get("seconds")]
+        per_point = [(n, summary[(n, "uniform", program)]["seconds"] * 1e9 / n) for n in sizes
+                     if summary.get((n, "uniform", program), {}).get("seconds")]
         if len(per_point) < 2:
             continue
         values = [v for _, v in per_point]
@@ -246,20 +254,20 @@ def machine_line(m, runs, seed):
     return (f"Machine: {m['cpu']}, {m['cpus']} CPUs (load average {load} at the start); "
             f"compiler {m['compiler']}; `{m.get('dtlab_version', 'dtlab')}` (tree at {m['commit']}); "
             f"CGAL {m.get('cgal', 'unknown')}; TetGen {m.get('tetgen', 'unknown')}. One process per run, "
-            f"uniform points in the unit cube, seed {seed}; seconds: each program's own timing of the "
+            f"points of verify/generators/points3d.hpp, seed {seed}; seconds: each program's own timing of the "
             f"tetrahedralization, minimum of {runs} runs; peak MB: maximum; bytes/tet: peak RSS per "
             f"finite tetrahedron; ratios of minima from this one invocation.")
 
 
 def markdown(data):
     programs = data["programs"]
-    sizes = data["sizes"]
+    cases = [tuple(c) for c in data["cases"]]
     summary = summarise(data["records"])
-    body, notes = table(summary, programs, sizes, data["runs"])
+    body, notes = table(summary, programs, cases, data["runs"])
     text = machine_line(data["machine"], data["runs"], data["seed"]) + "\n\n" + body + "\n"
-    flat = flatness(summary, programs, sizes)
+    flat = flatness(summary, programs, cases)
     if flat:
-        text += "\nTime per point from 10^4 up:\n\n" + "\n".join(f"- {line}" for line in flat) + "\n"
+        text += "\nTime per point on uniform points from 10^4 up:\n\n" + "\n".join(f"- {line}" for line in flat) + "\n"
     if notes:
         text += "\n" + "\n".join(f"- {note}" for note in notes) + "\n"
     return text
@@ -318,13 +326,13 @@ def resolve(args):
     args.threads = [int(t) for t in str(args.threads).split(",") if t]
 
 
-def run(args, sizes, path):
+def run(args, cases, path):
     """Measures, writes the JSON to `path` after each size, returns the data."""
     programs = programs_for(args)
     m = machine(args.dtlab)
     m["tetgen"] = tetgen_version(args.tetgen) if TETGEN in programs else "not run"
-    progress(f"3D: {len(sizes)} sizes x {len(programs)} programs x {args.runs} runs: {', '.join(programs)}")
-    data = {"machine": m, "programs": programs, "sizes": sizes, "runs": args.runs, "seed": args.seed,
+    progress(f"3D: {len(cases)} cases x {len(programs)} programs x {args.runs} runs: {', '.join(programs)}")
+    data = {"machine": m, "programs": programs, "cases": cases, "runs": args.runs, "seed": args.seed,
             "records": []}
 
     def save(records):
@@ -334,7 +342,7 @@ def run(args, sizes, path):
         with open(path, "w") as f:
             json.dump(data, f, indent=1)
 
-    measure(args, programs, sizes, save)
+    measure(args, programs, cases, save)
     progress(f"wrote {path}")
     return data
 
@@ -342,8 +350,11 @@ def run(args, sizes, path):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     add_arguments(ap)
-    ap.add_argument("--sizes", default="10000,100000,1000000")
-    ap.add_argument("--large", action="store_true", help="also 10^7 points")
+    ap.add_argument("--sizes", default="10000,100000,1000000", help="sizes of the uniform runs")
+    ap.add_argument("--distributions", default="normal,grid,sphere,clustered",
+                    help="other distributions (points3d.hpp names), at --distribution-sizes")
+    ap.add_argument("--distribution-sizes", default="100000")
+    ap.add_argument("--large", action="store_true", help="also 10^7 uniform points")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--json", help="write the measurements here (default BUILD/bench_delaunay3d.json)")
     ap.add_argument("--from-json", help="print the table of an earlier run instead of measuring")
@@ -356,10 +367,12 @@ def main():
         with open(args.from_json) as f:
             data = json.load(f)
     else:
-        sizes = [int(n) for n in args.sizes.split(",") if n]
-        if args.large and 10_000_000 not in sizes:
-            sizes.append(10_000_000)
-        data = run(args, sizes, args.json or os.path.join(args.build, "bench_delaunay3d.json"))
+        cases = [(int(n), "uniform") for n in args.sizes.split(",") if n]
+        if args.large and (10_000_000, "uniform") not in cases:
+            cases.append((10_000_000, "uniform"))
+        cases += [(int(n), d) for n in args.distribution_sizes.split(",") if n
+                  for d in args.distributions.split(",") if d and d != "uniform"]
+        data = run(args, cases, args.json or os.path.join(args.build, "bench_delaunay3d.json"))
 
     text = markdown(data)
     print(text)

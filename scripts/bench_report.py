@@ -40,7 +40,6 @@ import datetime
 import json
 import os
 import re
-import shutil
 import statistics
 import subprocess
 import sys
@@ -53,19 +52,20 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SEED = 1
 
 # What each size runs. Predicates: Google Benchmark filter, seconds per repetition. 2D: (n,
-# distribution) cases. 3D: sizes. gbench: the n of the in-process suites.
+# distribution) cases. 3D: the same. gbench: the n of the in-process suites.
 SIZES = {
     "ci": {"repeats": 2, "pred_filter": "/random/", "pred_min_time": 0.01,
            "cases2d": [(1_000, "uniform"), (10_000, "uniform"), (10_000, "grid")],
-           "sizes3d": [1_000, 10_000], "gbench": [1_000, 10_000], "gbench_min_time": 0.01},
+           "cases3d": [(1_000, "uniform"), (10_000, "uniform"), (10_000, "grid")], "gbench": [1_000, 10_000], "gbench_min_time": 0.01},
     "default": {"repeats": 3, "pred_filter": "", "pred_min_time": 0.1,
                 "cases2d": [(10_000, "uniform"), (100_000, "uniform"), (1_000_000, "uniform")]
                 + [(100_000, d) for d in ("normal", "grid", "circle", "clustered")],
-                "sizes3d": [1_000, 10_000, 100_000, 1_000_000], "gbench": [1_000, 100_000, 1_000_000],
+                "cases3d": [(n, "uniform") for n in (1_000, 10_000, 100_000, 1_000_000)]
+                + [(100_000, d) for d in ("normal", "grid", "sphere", "clustered")], "gbench": [1_000, 100_000, 1_000_000],
                 "gbench_min_time": 0.2},
 }
 SIZES["large"] = dict(SIZES["default"], cases2d=SIZES["default"]["cases2d"] + [(10_000_000, "uniform")],
-                      sizes3d=SIZES["default"]["sizes3d"] + [10_000_000])
+                      cases3d=SIZES["default"]["cases3d"] + [(10_000_000, "uniform")])
 TARGETS = ["dtlab_cli", "predicates_bench", "delaunay2d_bench", "delaunay3d_bench",
            "cgal_delaunay2d_run_bench", "cgal_delaunay3d_run_bench"]
 PLOTS = ["delaunay2d_rate.png", "delaunay2d_memory.png", "delaunay3d_rate.png", "delaunay3d_memory.png",
@@ -203,7 +203,7 @@ def measure_3d(bins, plan, repeats, out):
     if not os.access(bins["cgal3d"], os.X_OK):
         progress("3D: CGAL runner not built, CGAL (and TetGen, whose points it writes) left out")
         args.no_cgal = args.no_tetgen = True
-    return d3.run(args, plan["sizes3d"], os.path.join(out, "delaunay3d.json"))
+    return d3.run(args, plan["cases3d"], os.path.join(out, "delaunay3d.json"))
 
 
 def measure(args, bins, out):
@@ -379,7 +379,7 @@ def predicate_table(data, prov):
 
 def flat_lines(data3d):
     summary = d3.summarise(data3d["records"])
-    return d3.flatness(summary, data3d["programs"], data3d["sizes"])
+    return d3.flatness(summary, data3d["programs"], [tuple(c) for c in data3d["cases"]])
 
 
 def report_markdown(report, plots):
