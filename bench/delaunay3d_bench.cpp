@@ -23,6 +23,8 @@
 #include <new>
 #include <span>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "algorithms/delaunay3d/delaunay3d.hpp"
