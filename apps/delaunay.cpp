@@ -129,7 +129,7 @@ void add_delaunay(CLI::App& app) {
   auto args = std::make_shared<DelaunayArgs>();
   CLI::App* cmd = app.add_subcommand("delaunay", "Delaunay triangulation of a point set");
   cmd->add_option("input", args->input, "Point file: plain 'x y' or 'x y z' lines, Triangle .node, or Medit .mesh (2D or 3D)");
-  cmd->add_option("-o,--output", args->output, "Write the mesh: OUT.mesh (Medit), or in 2D OUT.ele (Triangle .node + .ele)");
+  cmd->add_option("-o,--output", args->output, "Write the mesh: OUT.mesh (Medit) or OUT.ele (Triangle's or, in 3D, TetGen's .node + .ele)");
   std::string names;
   for (const Delaunay2dVariant& v : delaunay2d_variants()) names += (names.empty() ? "" : "|") + std::string(v.name);
   cmd->add_option("--algo", args->algorithm, "Variant: " + names)->capture_default_str();

@@ -7,6 +7,7 @@
 #include "kernel/error.hpp"
 #include "mesh/io/medit.hpp"
 #include "mesh/io/medit3.hpp"
+#include "mesh/io/tetgen_format.hpp"
 #include "mesh/io/point_file.hpp"
 #include "mesh/io/triangle_format.hpp"
 
@@ -63,18 +64,25 @@ void write_mesh2(const std::string& path, const MeshData2& mesh) {
 }
 
 std::vector<Vec3> read_points3(const std::string& path) {
-  if (extension_of(path) == "mesh") return read_medit3(path).vertices;
+  const std::string ext = extension_of(path);
+  if (ext == "mesh") return read_medit3(path).vertices;
+  if (ext == "node") return read_tetgen_node(path).points;
   return read_point_file3(path);
 }
 
 MeshData3 read_mesh3(const std::string& path) {
-  if (extension_of(path) == "mesh") return read_medit3(path);
-  throw InputError("cannot read a 3D mesh from '" + path + "': supported is .mesh (Medit)");
+  const std::string ext = extension_of(path);
+  if (ext == "mesh") return read_medit3(path);
+  if (ext == "ele" || ext == "node") return read_tetgen_mesh(without_extension(path));
+  throw InputError("cannot read a 3D mesh from '" + path + "': supported are .mesh (Medit) and .ele (TetGen)");
 }
 
 void write_mesh3(const std::string& path, const MeshData3& mesh) {
-  if (extension_of(path) == "mesh") return write_medit3(path, mesh);
-  throw InputError("cannot write '" + path + "': the supported 3D output is .mesh (Medit)");
+  const std::string ext = extension_of(path);
+  if (ext == "mesh") return write_medit3(path, mesh);
+  if (ext == "ele" || ext == "node") return write_tetgen_mesh(without_extension(path), mesh);
+  throw InputError("cannot write '" + path +
+                   "': supported 3D outputs are .mesh (Medit) and .ele (TetGen .node + .ele)");
 }
 
 }  // namespace dtlab::cli

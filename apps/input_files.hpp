@@ -24,8 +24,9 @@ MeshData2 read_mesh2(const std::string& path);
 // InputError naming the supported ones.
 void write_mesh2(const std::string& path, const MeshData2& mesh);
 
-// The 3D counterparts: points of a Medit .mesh (its Vertices) or a plain "x y z" file; a 3D mesh
-// from a Medit .mesh; Medit .mesh output.
+// The 3D counterparts: points of a Medit .mesh (its Vertices), a TetGen .node or a plain
+// "x y z" file; a 3D mesh from a Medit .mesh or a TetGen .ele (with the .node beside it); Medit
+// .mesh or TetGen .node + .ele output.
 std::vector<Vec3> read_points3(const std::string& path);
 MeshData3 read_mesh3(const std::string& path);
 void write_mesh3(const std::string& path, const MeshData3& mesh);

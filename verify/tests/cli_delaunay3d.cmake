@@ -7,7 +7,7 @@ if(NOT TARGET dtlab_cli)
   return()
 endif()
 
-foreach(_dtlab_case stats_json mesh_verifies corrupted_mesh algos_same_bytes threads_same_bytes malformed_line
+foreach(_dtlab_case stats_json mesh_verifies tetgen_mesh_verifies corrupted_mesh algos_same_bytes threads_same_bytes malformed_line
                     coplanar duplicates bad_options)
   add_test(NAME cli3d_${_dtlab_case}
            COMMAND ${CMAKE_COMMAND} -DDTLAB=$<TARGET_FILE:dtlab_cli>
