@@ -1,7 +1,9 @@
-// libFuzzer target: arbitrary bytes through every 2D file reader (Medit .mesh, Triangle
-// .node/.ele, point files). A reader may only return or throw dtlab::Error (ParseError for bad
-// input); any other exception escapes and is reported as a crash. Whatever a reader accepts
-// must survive a write/read round trip bit for bit.
+// libFuzzer target: arbitrary bytes through every file reader: 2D (Medit .mesh, Triangle
+// .node/.ele/.poly, point files) and 3D (Medit .mesh, TetGen .node/.ele/.face). Each reader gets
+// the same bytes, so one seed in any format serves them all and the others refuse it early. A
+// reader may only return or throw dtlab::Error (ParseError for bad input); any other exception
+// escapes and is reported as a crash. Whatever a reader accepts must survive a write/read round
+// trip bit for bit, and the tetrahedra it hands to MeshData3 must be positive.
 #include <bit>
 #include <cstdint>
 #include <cstdlib>
@@ -9,8 +11,12 @@
 #include <string>
 
 #include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
 #include "mesh/io/medit.hpp"
+#include "mesh/io/medit3.hpp"
 #include "mesh/io/point_file.hpp"
+#include "mesh/io/poly_format.hpp"
+#include "mesh/io/tetgen_format.hpp"
 #include "mesh/io/triangle_format.hpp"
 
 namespace {
@@ -26,6 +32,26 @@ bool same_bits(const std::vector<dtlab::Vec2>& a, const std::vector<dtlab::Vec2>
         std::bit_cast<std::uint64_t>(a[i].y) != std::bit_cast<std::uint64_t>(b[i].y)) {
       return false;
     }
+  }
+  return true;
+}
+
+bool same_bits(const std::vector<dtlab::Vec3>& a, const std::vector<dtlab::Vec3>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::bit_cast<std::uint64_t>(a[i].x) != std::bit_cast<std::uint64_t>(b[i].x) ||
+        std::bit_cast<std::uint64_t>(a[i].y) != std::bit_cast<std::uint64_t>(b[i].y) ||
+        std::bit_cast<std::uint64_t>(a[i].z) != std::bit_cast<std::uint64_t>(b[i].z)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool all_positive(const dtlab::MeshData3& mesh) {
+  for (const auto& t : mesh.tetrahedra) {
+    const auto& v = mesh.vertices;
+    if (dtlab::uncounted::orient3d(v[t[0]], v[t[1]], v[t[2]], v[t[3]]) != dtlab::Sign::Positive) return false;
   }
   return true;
 }
@@ -81,6 +107,54 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     require(same_bits(points, dtlab::read_point_file2(again, "rewritten.xy")));
   });
   guarded(text, [](std::istream& in) { dtlab::read_point_file3(in, "fuzz.xyz"); });
+
+  guarded(text, [](std::istream& in) {
+    const dtlab::PolyData2 poly = dtlab::read_triangle_poly(in, "fuzz.poly");
+    std::stringstream again;
+    dtlab::write_triangle_poly(again, poly);
+    const dtlab::PolyData2 back = dtlab::read_triangle_poly(again, "rewritten.poly");
+    require(back == poly && same_bits(poly.points, back.points) && same_bits(poly.holes, back.holes));
+  });
+
+  guarded(text, [](std::istream& in) {
+    const dtlab::MeshData3 mesh = dtlab::read_medit3(in, "fuzz3.mesh");
+    require(all_positive(mesh));
+    std::stringstream again;
+    dtlab::write_medit3(again, mesh);
+    const dtlab::MeshData3 back = dtlab::read_medit3(again, "rewritten3.mesh");
+    require(back == mesh && same_bits(mesh.vertices, back.vertices));
+  });
+
+  // TetGen: the bytes as a .node, then as a .ele and a .face over those nodes or over five fixed
+  // ones in general position (so that some tetrahedra are not flat).
+  dtlab::TetGenNodes nodes3;
+  guarded(text, [&](std::istream& in) {
+    nodes3 = dtlab::read_tetgen_node(in, "fuzz.node");
+    std::stringstream again;
+    dtlab::write_tetgen_node(again, nodes3);
+    const dtlab::TetGenNodes back = dtlab::read_tetgen_node(again, "rewritten.node");
+    require(same_bits(nodes3.points, back.points) && back.markers == nodes3.markers &&
+            back.attributes.size() == nodes3.attributes.size());
+  });
+  if (nodes3.points.empty()) {
+    nodes3.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+    nodes3.first_index = size > 0 && (data[0] & 1) ? 0 : 1;
+  }
+  guarded(text, [&](std::istream& in) {
+    const dtlab::TetGenElements e = dtlab::read_tetgen_ele(in, "fuzz.ele", nodes3);
+    std::stringstream again;
+    dtlab::write_tetgen_ele(again, e, nodes3.points.size());
+    const dtlab::TetGenElements back = dtlab::read_tetgen_ele(again, "rewritten.ele", nodes3);
+    require(back.tetrahedra == e.tetrahedra && back.midside == e.midside && back.orientation == e.orientation);
+    if (e.midside.empty()) require(all_positive(dtlab::to_mesh_data3(nodes3, e)));
+  });
+  guarded(text, [&](std::istream& in) {
+    const dtlab::TetGenFaces f = dtlab::read_tetgen_face(in, "fuzz.face", nodes3);
+    std::stringstream again;
+    dtlab::write_tetgen_face(again, f, nodes3.points.size());
+    const dtlab::TetGenFaces back = dtlab::read_tetgen_face(again, "rewritten.face", nodes3);
+    require(back.triangles == f.triangles && back.markers == f.markers);
+  });
   guarded(text, [](std::istream& in) { dtlab::point_file_dimension(in, "fuzz.pts"); });
   return 0;
 }
