@@ -1,0 +1,114 @@
+// constrained2d(): input validation (segment endpoints, zero-length and duplicate segments),
+// the Delaunay triangulation of the points (delaunay2d, "incremental"), the chosen method
+// (registry.hpp), the domain (domain.hpp) and the result lists.
+#include "algorithms/constrained2d/constrained2d.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <tuple>
+
+#include "algorithms/constrained2d/domain.hpp"
+#include "algorithms/constrained2d/registry.hpp"
+#include "algorithms/delaunay2d/delaunay2d.hpp"
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+namespace {
+
+const Constrained2dMethod& method_named(const std::string& name) {
+  if (const Constrained2dMethod* m = find_constrained2d_method(name)) return *m;
+  std::string known;
+  for (const Constrained2dMethod& m : constrained2d_methods()) known += (known.empty() ? "" : ", ") + std::string(m.name);
+  throw InputError("unknown constrained triangulation method '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace
+
+Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrained2dOptions& options) {
+  const Constrained2dMethod& method = method_named(options.method);
+  const PredicateStats before = predicate_stats();
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t n = input.points.size();
+  if (!input.segment_markers.empty() && input.segment_markers.size() != input.segments.size())
+    throw InputError("segment markers: " + std::to_string(input.segment_markers.size()) + " markers for " +
+                     std::to_string(input.segments.size()) + " segments");
+  for (std::size_t k = 0; k < input.segments.size(); ++k)
+    for (const std::uint32_t v : input.segments[k])
+      if (v >= n)
+        throw InputError("segment " + std::to_string(k) + ": endpoint " + std::to_string(v) + " is out of range (" +
+                             std::to_string(n) + " points)",
+                         {k});
+
+  Delaunay2dResult delaunay = delaunay2d(input.points, {.algorithm = "incremental", .seed = options.seed});
+  Constrained2dResult result;
+  result.input_point_count = static_cast<std::uint32_t>(n);
+
+  // Endpoints onto the kept copy of duplicate points; zero length refused; duplicates dropped.
+  std::vector<std::uint32_t> keep(n);
+  for (std::uint32_t v = 0; v < n; ++v) keep[v] = v;
+  for (std::size_t k = 0; k < delaunay.duplicates.size(); ++k) keep[delaunay.duplicates[k]] = delaunay.duplicate_of[k];
+  std::vector<std::array<std::uint32_t, 3>> keyed;  // (low, high, input index)
+  keyed.reserve(input.segments.size());
+  for (std::size_t k = 0; k < input.segments.size(); ++k) {
+    const auto [a0, b0] = input.segments[k];
+    const std::uint32_t a = keep[a0], b = keep[b0];
+    if (a == b)
+      throw InputError("segment " + std::to_string(k) + " has zero length (endpoints " + std::to_string(a0) + " and " +
+                           std::to_string(b0) + (a0 == b0 ? " are the same point)" : " have equal coordinates)"),
+                       {k});
+    keyed.push_back({std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(k)});
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::array<std::uint32_t, 2>> segments;
+  std::vector<std::uint32_t> ids;
+  std::vector<std::uint32_t> kept;  // input indices
+  for (std::size_t k = 0; k < keyed.size(); ++k) {
+    if (k > 0 && keyed[k][0] == keyed[k - 1][0] && keyed[k][1] == keyed[k - 1][1]) {
+      std::size_t first = k - 1;
+      while (first > 0 && keyed[first - 1][0] == keyed[k][0] && keyed[first - 1][1] == keyed[k][1]) --first;
+      if (result.messages.size() < Constrained2dResult::kMaxMessages)
+        result.messages.push_back("segment " + std::to_string(keyed[k][2]) + " duplicates segment " +
+                                  std::to_string(keyed[first][2]) + ": kept " + std::to_string(keyed[first][2]));
+      ++result.message_count;
+      continue;
+    }
+    kept.push_back(keyed[k][2]);
+  }
+  std::sort(kept.begin(), kept.end());
+  for (const std::uint32_t k : kept) {
+    segments.push_back({keep[input.segments[k][0]], keep[input.segments[k][1]]});
+    ids.push_back(k);
+  }
+  if (!delaunay.duplicates.empty()) {
+    result.messages.push_back(std::to_string(delaunay.duplicates.size()) +
+                              " duplicate point(s) dropped; segments use the first copy");
+    ++result.message_count;
+  }
+
+  result.triangulation = std::move(delaunay.triangulation);
+  result.degenerate_message = std::move(delaunay.degenerate_message);
+  if (result.degenerate_message.empty()) {
+    ConstrainedMesh2 mesh(result.triangulation);
+    const Constrained2dContext run{.mesh = mesh, .segments = segments, .ids = ids, .options = options, .result = result};
+    method.run(run);
+    result.flips = static_cast<std::uint32_t>(mesh.flip_count());
+    build_domain(run, input.holes, input.regions);
+    const Triangulation2& tri = result.triangulation;
+    const auto size = static_cast<std::uint32_t>(tri.vertices().size());
+    for (std::uint32_t h = 0; h < size; ++h) {
+      const std::uint32_t s = mesh.constraint(h);
+      if (h > tri.twin(h) || s == ConstrainedMesh2::kNone) continue;
+      const std::uint32_t a = tri.origin(h), b = tri.destination(h);
+      result.constrained_edges.push_back({std::min(a, b), std::max(a, b), s,
+                                          input.segment_markers.empty() ? 0 : input.segment_markers[s]});
+    }
+    std::sort(result.constrained_edges.begin(), result.constrained_edges.end(),
+              [](const ConstrainedEdge2& x, const ConstrainedEdge2& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result.predicate_stats = predicate_stats() - before;
+  return result;
+}
+
+}  // namespace dtlab

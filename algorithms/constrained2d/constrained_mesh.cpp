@@ -1,0 +1,339 @@
+// The constrained triangulation's operations (constrained_mesh.hpp): walk along a segment (the
+// pipe, book §1.7 and §3.3.3), stochastic visibility walk (Devillers, Pion, Teillaud 2002),
+// Steiner point insertion by cavity and ball (§2.4, restricted to the triangles holding the
+// point or the ghosts that see it), edge flip, and Lawson's flips (§2, Theorem 2.2; §3.4 with
+// constrained edges left alone).
+#include "algorithms/constrained2d/constrained_mesh.hpp"
+
+#include <algorithm>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+
+namespace dtlab {
+
+namespace {
+
+using T2 = Triangulation2;
+
+// p on the line through a and b: is it strictly between them?
+bool strictly_between(const Vec2& a, const Vec2& b, const Vec2& p) noexcept {
+  if (a.x != b.x) return (a.x < p.x && p.x < b.x) || (b.x < p.x && p.x < a.x);
+  return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
+}
+
+// a, s, q collinear: does a lie on the same side of s as q?
+bool same_direction(const Vec2& s, const Vec2& a, const Vec2& q) noexcept {
+  if (s.x != q.x) return (a.x > s.x) == (q.x > s.x);
+  return (a.y > s.y) == (q.y > s.y);
+}
+
+}  // namespace
+
+ConstrainedMesh2::ConstrainedMesh2(Triangulation2& tri) : tri_(tri) {
+  cons_.assign(tri_.vertices().size(), kNone);
+  vtri_.assign(tri_.point_count(), kNone);
+  const auto count = static_cast<std::uint32_t>(tri_.triangle_count());
+  for (int pass = 0; pass < 2; ++pass)  // finite triangles first: walks start inside the hull
+    for (std::uint32_t t = 0; t < count; ++t) {
+      if (tri_.is_ghost(t) != (pass == 1)) continue;
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t v = tri_.vertex(t, i);
+        if (v != kInf && vtri_[v] == kNone) vtri_[v] = t;
+      }
+    }
+}
+
+void ConstrainedMesh2::set_constraint(std::uint32_t h, std::uint32_t segment) noexcept {
+  cons_[h] = segment;
+  cons_[tri_.twin(h)] = segment;
+}
+
+void ConstrainedMesh2::clear_constraints() noexcept { std::fill(cons_.begin(), cons_.end(), kNone); }
+
+std::uint32_t ConstrainedMesh2::index_of(std::uint32_t t, std::uint32_t v) const noexcept {
+  for (std::uint32_t i = 0; i < 3; ++i)
+    if (tri_.vertex(t, i) == v) return i;
+  return kNone;
+}
+
+void ConstrainedMesh2::write_triangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) noexcept {
+  // Ghosts keep kInfinite at index 0 (triangulation2.hpp).
+  if (b == kInf) std::tie(a, b, c) = std::tuple(b, c, a);
+  if (c == kInf) std::tie(a, b, c) = std::tuple(c, a, b);
+  std::uint32_t* v = tri_.mutable_vertices().data() + 3 * t;
+  v[0] = a, v[1] = b, v[2] = c;
+  for (std::uint32_t i = 0; i < 3; ++i)
+    if (v[i] != kInf) vtri_[v[i]] = t;
+}
+
+std::uint32_t ConstrainedMesh2::find_half_edge(std::uint32_t u, std::uint32_t v) const {
+  const std::uint32_t first = vtri_[u];
+  if (first == kNone) return kNone;
+  std::uint32_t t = first, i = index_of(t, u);
+  const std::size_t bound = tri_.triangle_count() + 1;
+  for (std::size_t k = 0; k < bound; ++k) {
+    DTLAB_ASSERT(i != kNone);
+    if (tri_.vertex(t, (i + 1) % 3) == v) return T2::half_edge(t, (i + 2) % 3);
+    const std::uint32_t g = tri_.twin(T2::half_edge(t, (i + 1) % 3));
+    t = T2::triangle_of(g), i = (T2::index_in_triangle(g) + 1) % 3;
+    if (t == first) return kNone;
+  }
+  throw InternalError("constrained mesh: the ball of vertex " + std::to_string(u) + " does not close");
+}
+
+ConstrainedMesh2::SegmentWalk ConstrainedMesh2::walk(std::uint32_t s, std::uint32_t q) const {
+  DTLAB_ASSERT(s != q && s < vertex_count() && q < vertex_count());
+  const Vec2& S = point(s);
+  const Vec2& Q = point(q);
+  SegmentWalk out;
+  // Turn around s to the wedge (s, a, b) holding direction q, or to a vertex on [s, q].
+  const std::uint32_t first = vtri_[s];
+  DTLAB_ASSERT(first != kNone);
+  std::uint32_t t = first, i = index_of(t, s);
+  std::uint32_t crossing = kNone;
+  const std::size_t bound = tri_.triangle_count() + 1;
+  for (std::size_t k = 0;; ++k) {
+    if (k > bound) throw InternalError("segment walk: the ball of vertex " + std::to_string(s) + " does not close");
+    if (!tri_.is_ghost(t)) {
+      const std::uint32_t a = tri_.vertex(t, (i + 1) % 3), b = tri_.vertex(t, (i + 2) % 3);
+      if (a == q || b == q) {
+        out.stop = q;
+        return out;
+      }
+      const Sign oa = orient2d(S, point(a), Q);
+      const Sign ob = orient2d(S, point(b), Q);
+      if (oa == Sign::Zero && same_direction(S, point(a), Q)) {
+        out.stop = a;
+        return out;
+      }
+      if (ob == Sign::Zero && same_direction(S, point(b), Q)) {
+        out.stop = b;
+        return out;
+      }
+      if (oa == Sign::Positive && ob == Sign::Negative) {
+        crossing = T2::half_edge(t, i);
+        break;
+      }
+    }
+    const std::uint32_t g = tri_.twin(T2::half_edge(t, (i + 1) % 3));
+    t = T2::triangle_of(g), i = (T2::index_in_triangle(g) + 1) % 3;
+    if (t == first) throw InternalError("segment walk: no triangle around vertex " + std::to_string(s) +
+                                        " faces vertex " + std::to_string(q));
+  }
+  // Cross triangles: the crossed edge's origin is right of s -> q, its destination left.
+  for (std::size_t k = 0; k <= bound; ++k) {
+    out.crossed.push_back(crossing);
+    const std::uint32_t g = tri_.twin(crossing);
+    if (tri_.is_ghost(T2::triangle_of(g)))
+      throw InternalError("segment walk: segment " + std::to_string(s) + "-" + std::to_string(q) + " leaves the hull");
+    const std::uint32_t c = tri_.vertices()[g];
+    if (c == q) {
+      out.stop = q;
+      return out;
+    }
+    const Sign oc = orient2d(S, Q, point(c));
+    if (oc == Sign::Zero) {
+      out.stop = c;
+      return out;
+    }
+    crossing = oc == Sign::Positive ? T2::next(g) : T2::prev(g);
+  }
+  throw InternalError("segment walk: exceeded its bound (broken adjacency)");
+}
+
+ConstrainedMesh2::Location ConstrainedMesh2::locate(const Vec2& p, std::uint32_t start) {
+  std::uint32_t t = start;
+  if (tri_.is_ghost(t)) t = T2::triangle_of(tri_.twin(T2::half_edge(t, 0)));
+  const std::size_t bound = 64 * tri_.triangle_count() + 64;
+  std::uint32_t entered = 3;
+  for (std::size_t steps = 0; steps < bound; ++steps) {
+    rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
+    const std::uint32_t r = static_cast<std::uint32_t>(rng_ % 3);
+    bool moved = false;
+    for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
+      const std::uint32_t i = (r + k) % 3;
+      if (i == entered) continue;
+      const std::uint32_t a = tri_.vertex(t, (i + 1) % 3), b = tri_.vertex(t, (i + 2) % 3);
+      if (orient2d(point(a), point(b), p) == Sign::Negative) {
+        const std::uint32_t g = tri_.twin(T2::half_edge(t, i));
+        t = T2::triangle_of(g), entered = T2::index_in_triangle(g);
+        if (tri_.is_ghost(t)) return {Where::Outside, t};
+        moved = true;
+      }
+    }
+    if (moved) continue;
+    // p is in the closed triangle t.
+    for (std::uint32_t i = 0; i < 3; ++i)
+      if (point(tri_.vertex(t, i)) == p) return {Where::Vertex, tri_.vertex(t, i)};
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t a = tri_.vertex(t, (i + 1) % 3), b = tri_.vertex(t, (i + 2) % 3);
+      if (orient2d(point(a), point(b), p) == Sign::Zero) return {Where::Edge, T2::half_edge(t, i)};
+    }
+    return {Where::Triangle, t};
+  }
+  throw InternalError("constrained mesh: point location exceeded its bound of " + std::to_string(bound) + " steps");
+}
+
+std::uint32_t ConstrainedMesh2::insert(const Vec2& p, const Location& where, std::vector<std::uint32_t>* outward) {
+  DTLAB_ASSERT(where.where != Where::Vertex);
+  if (tri_.point_count() + 1 >= T2::kMaxPoints) throw InputError("constrained triangulation: too many Steiner points");
+  // The cavity: triangles whose removal leaves a star-shaped polygon around p.
+  std::vector<std::uint32_t> cavity;
+  std::uint32_t split_segment = kNone, split_u = kNone, split_v = kNone;
+  if (where.where == Where::Triangle) {
+    cavity = {where.handle};
+  } else if (where.where == Where::Edge) {
+    const std::uint32_t h = where.handle;
+    cavity = {T2::triangle_of(h), T2::triangle_of(tri_.twin(h))};
+    split_segment = cons_[h], split_u = tri_.origin(h), split_v = tri_.destination(h);
+  } else {
+    // Ghosts (inf, b, a) whose hull edge a -> b p is beyond, or strictly inside of on its line;
+    // they are consecutive around the hull.
+    in_cavity_.resize(tri_.triangle_count(), 0);
+    cavity = {where.handle};
+    in_cavity_[where.handle] = 1;
+    for (std::size_t k = 0; k < cavity.size(); ++k) {
+      const std::uint32_t t = cavity[k];
+      for (std::uint32_t i : {1u, 2u}) {
+        const std::uint32_t u = T2::triangle_of(tri_.twin(T2::half_edge(t, i)));
+        if (in_cavity_[u] || !tri_.is_ghost(u)) continue;
+        const Vec2& a = point(tri_.vertex(u, 1));
+        const Vec2& b = point(tri_.vertex(u, 2));
+        const Sign s = orient2d(a, b, p);
+        if (s == Sign::Positive || (s == Sign::Zero && strictly_between(a, b, p))) {
+          in_cavity_[u] = 1;
+          cavity.push_back(u);
+        }
+      }
+    }
+    for (const std::uint32_t t : cavity) in_cavity_[t] = 0;
+  }
+  std::sort(cavity.begin(), cavity.end());
+
+  struct Boundary {
+    std::uint32_t u, v, outer, segment;
+  };
+  std::vector<Boundary> boundary;
+  for (const std::uint32_t t : cavity)
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = T2::half_edge(t, i);
+      const std::uint32_t outer = tri_.twin(h);
+      if (std::binary_search(cavity.begin(), cavity.end(), T2::triangle_of(outer))) continue;
+      boundary.push_back({tri_.origin(h), tri_.destination(h), outer, cons_[h]});
+    }
+  DTLAB_ASSERT(boundary.size() == cavity.size() + 2);
+
+  const auto x = static_cast<std::uint32_t>(tri_.point_count());
+  tri_.mutable_points().push_back(p);
+  vtri_.push_back(kNone);
+  for (int k = 0; k < 2; ++k) {
+    cavity.push_back(static_cast<std::uint32_t>(tri_.triangle_count()));
+    tri_.mutable_vertices().resize(tri_.mutable_vertices().size() + 3, kNone);
+    tri_.mutable_neighbours().resize(tri_.mutable_neighbours().size() + 3, kNone);
+    cons_.resize(cons_.size() + 3, kNone);
+  }
+  // One triangle (x, u, v) per boundary edge u -> v; remember x -> u (by u) to link the fans.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> starts;  // (u, half-edge x -> u)
+  std::vector<std::uint32_t> enters(boundary.size());           // half-edge v -> x
+  if (outward) outward->clear();
+  for (std::size_t j = 0; j < boundary.size(); ++j) {
+    const std::uint32_t t = cavity[j];
+    const Boundary& e = boundary[j];
+    write_triangle(t, x, e.u, e.v);
+    const std::uint32_t out = T2::half_edge(t, index_of(t, x));
+    tri_.link(out, e.outer);
+    cons_[out] = e.segment;
+    if (outward) outward->push_back(out);
+    starts.emplace_back(e.u, T2::half_edge(t, index_of(t, e.v)));
+    enters[j] = T2::half_edge(t, index_of(t, e.u));
+    for (std::uint32_t h : {T2::half_edge(t, 0), T2::half_edge(t, 1), T2::half_edge(t, 2)})
+      if (h != out) cons_[h] = kNone;
+  }
+  std::sort(starts.begin(), starts.end());
+  for (std::size_t j = 0; j < boundary.size(); ++j) {
+    const auto it = std::lower_bound(starts.begin(), starts.end(), std::pair{boundary[j].v, 0u});
+    DTLAB_ASSERT(it != starts.end() && it->first == boundary[j].v);
+    tri_.link(enters[j], it->second);
+  }
+  if (split_segment != kNone) {
+    set_constraint(find_half_edge(x, split_u), split_segment);
+    set_constraint(find_half_edge(x, split_v), split_segment);
+  }
+  return x;
+}
+
+bool ConstrainedMesh2::flippable(std::uint32_t h) const {
+  const std::uint32_t g = tri_.twin(h);
+  if (tri_.is_ghost(T2::triangle_of(h)) || tri_.is_ghost(T2::triangle_of(g))) return false;
+  const Vec2& c = point(tri_.vertices()[h]);
+  const Vec2& d = point(tri_.vertices()[g]);
+  const Sign su = orient2d(c, d, point(tri_.origin(h)));
+  const Sign sv = orient2d(c, d, point(tri_.destination(h)));
+  return su != Sign::Zero && sv != Sign::Zero && su != sv;
+}
+
+std::uint32_t ConstrainedMesh2::flip(std::uint32_t h) {
+  const std::uint32_t g = tri_.twin(h);
+  const std::uint32_t t1 = T2::triangle_of(h), t2 = T2::triangle_of(g);
+  const std::uint32_t c = tri_.vertices()[h], u = tri_.origin(h), v = tri_.destination(h);
+  const std::uint32_t d = tri_.vertices()[g];
+  // Outer half-edges and their constraints: c->u, v->c in t1; u->d, d->v in t2.
+  const std::uint32_t e_cu = T2::prev(h), e_vc = T2::next(h), e_ud = T2::next(g), e_dv = T2::prev(g);
+  const std::uint32_t n_cu = tri_.twin(e_cu), n_vc = tri_.twin(e_vc), n_ud = tri_.twin(e_ud), n_dv = tri_.twin(e_dv);
+  const std::uint32_t k_cu = cons_[e_cu], k_vc = cons_[e_vc], k_ud = cons_[e_ud], k_dv = cons_[e_dv];
+  // t1 = (c, u, d): 0 opposite c is u->d, 1 is d->c (new), 2 is c->u.
+  // t2 = (d, v, c): 0 opposite d is v->c, 1 is c->d (new), 2 is d->v.
+  write_triangle(t1, c, u, d);
+  write_triangle(t2, d, v, c);
+  const std::uint32_t a0 = 3 * t1, b0 = 3 * t2;
+  tri_.link(a0 + 0, n_ud), cons_[a0 + 0] = k_ud;
+  tri_.link(a0 + 2, n_cu), cons_[a0 + 2] = k_cu;
+  tri_.link(b0 + 0, n_vc), cons_[b0 + 0] = k_vc;
+  tri_.link(b0 + 2, n_dv), cons_[b0 + 2] = k_dv;
+  tri_.link(a0 + 1, b0 + 1), cons_[a0 + 1] = kNone, cons_[b0 + 1] = kNone;
+  ++flips_;
+  return a0 + 1;
+}
+
+bool ConstrainedMesh2::violates_delaunay(std::uint32_t h) const {
+  const std::uint32_t g = tri_.twin(h);
+  const std::uint32_t t1 = T2::triangle_of(h);
+  if (tri_.is_ghost(t1) || tri_.is_ghost(T2::triangle_of(g))) return false;
+  return incircle_perturbed(point(tri_.vertex(t1, 0)), point(tri_.vertex(t1, 1)), point(tri_.vertex(t1, 2)),
+                            point(tri_.vertices()[g])) == Sign::Positive;
+}
+
+void ConstrainedMesh2::lawson(std::vector<std::uint32_t> stack, bool respect_constraints) {
+  const double edges = static_cast<double>(tri_.vertices().size()) / 2.0 + 16.0;
+  const auto bound = static_cast<std::uint64_t>(std::min(edges * edges, 1e18));
+  std::uint64_t done = 0;
+  while (!stack.empty()) {
+    const std::uint32_t h = stack.back();
+    stack.pop_back();
+    if (respect_constraints && cons_[h] != kNone) continue;
+    if (!violates_delaunay(h)) continue;
+    // A vertex strictly inside the (perturbed) circle across the edge makes the quadrilateral
+    // strictly convex; the test only guards against a bug.
+    if (!flippable(h)) throw InternalError("Lawson flip: non-convex quadrilateral at half-edge " + std::to_string(h));
+    if (++done > bound) throw InternalError("Lawson flips exceeded their bound of " + std::to_string(bound));
+    const std::uint32_t e = flip(h);
+    const std::uint32_t t1 = T2::triangle_of(e), t2 = T2::triangle_of(tri_.twin(e));
+    for (std::uint32_t k : {3 * t1, 3 * t1 + 2, 3 * t2, 3 * t2 + 2}) stack.push_back(k);
+  }
+}
+
+void ConstrainedMesh2::lawson_all(bool respect_constraints) {
+  std::vector<std::uint32_t> stack;
+  const auto size = static_cast<std::uint32_t>(tri_.vertices().size());
+  stack.reserve(size / 2);
+  for (std::uint32_t h = 0; h < size; ++h)
+    if (h < tri_.twin(h)) stack.push_back(h);
+  std::reverse(stack.begin(), stack.end());
+  lawson(std::move(stack), respect_constraints);
+}
+
+}  // namespace dtlab

@@ -1,0 +1,97 @@
+// The mutable triangulation the constrained methods work on: a Triangulation2 (numbering of
+// mesh/triangulation2.hpp) plus, per half-edge, the input segment it is constrained by, and per
+// vertex one incident triangle. Operations: edge lookup, the walk along a segment (the pipe of
+// §1.7/§3.3.3, stopping at the first vertex on the segment), point location, insertion of a
+// Steiner point (triangle split, edge split, or hull extension: the cavity is the triangle(s)
+// holding the point, or the ghosts that see it), edge flips, and Lawson's flip algorithm
+// (book §2, Theorem 2.2) with or without respecting constraints (§3.4: the CDT).
+// Every loop is bounded; a broken structure gives InternalError, never a hang.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "kernel/vec.hpp"
+#include "mesh/triangulation2.hpp"
+
+namespace dtlab {
+
+class ConstrainedMesh2 {
+ public:
+  static constexpr std::uint32_t kNone = Triangulation2::kNone;
+  static constexpr std::uint32_t kInf = Triangulation2::kInfinite;
+
+  // `tri` must be closed (the contract of triangulation2.hpp); it is modified in place.
+  explicit ConstrainedMesh2(Triangulation2& tri);
+
+  Triangulation2& tri() noexcept { return tri_; }
+  const Vec2& point(std::uint32_t v) const noexcept { return tri_.points()[v]; }
+  std::uint32_t vertex_count() const noexcept { return static_cast<std::uint32_t>(tri_.point_count()); }
+
+  // The input segment constraining half-edge h, or kNone.
+  std::uint32_t constraint(std::uint32_t h) const noexcept { return cons_[h]; }
+  // Sets (or clears, with kNone) the constraint on h and its twin.
+  void set_constraint(std::uint32_t h, std::uint32_t segment) noexcept;
+  void clear_constraints() noexcept;
+
+  // The half-edge u -> v, or kNone if uv is not an edge. O(degree of u).
+  std::uint32_t find_half_edge(std::uint32_t u, std::uint32_t v) const;
+  // One triangle incident to v (kNone for an unused duplicate).
+  std::uint32_t triangle_of_vertex(std::uint32_t v) const noexcept { return vtri_[v]; }
+
+  // The walk from vertex s towards vertex q (s != q): the half-edges the open segment crosses,
+  // each oriented with its origin right of s -> q, in order, up to `stop`: q, or the first
+  // vertex lying exactly on the open segment (exact orient2d). No crossed edge and stop == q:
+  // sq is an edge.
+  struct SegmentWalk {
+    std::vector<std::uint32_t> crossed;
+    std::uint32_t stop = kNone;
+  };
+  SegmentWalk walk(std::uint32_t s, std::uint32_t q) const;
+
+  // Where p lies: inside a finite triangle, on the interior of an edge (half-edge of a finite
+  // triangle), on a vertex (equal coordinates), or outside the convex hull (a ghost it is beyond).
+  enum class Where { Triangle, Edge, Vertex, Outside };
+  struct Location {
+    Where where = Where::Triangle;
+    std::uint32_t handle = kNone;  // triangle, half-edge, vertex, ghost triangle
+  };
+  // Stochastic visibility walk from `start` (Devillers, Pion, Teillaud 2002: it terminates on any
+  // triangulation with probability 1; a step bound makes it certain).
+  Location locate(const Vec2& p, std::uint32_t start);
+
+  // Appends p as a new vertex at `where` (not Where::Vertex) and retriangulates its cavity
+  // without flips; an edge split carries its constraint to both halves. Returns the new vertex
+  // id; `outward` receives the half-edges opposite the new vertex (for Lawson).
+  std::uint32_t insert(const Vec2& p, const Location& where, std::vector<std::uint32_t>* outward = nullptr);
+
+  // Both triangles of h finite and their union strictly convex.
+  bool flippable(std::uint32_t h) const;
+  // Replaces edge h by the other diagonal of its quadrilateral (must be flippable); returns a
+  // half-edge of the new edge. The two triangles keep their slots; the four outer half-edges
+  // are 3t1+0, 3t1+2, 3t2+0, 3t2+2 afterwards.
+  std::uint32_t flip(std::uint32_t h);
+  std::uint64_t flip_count() const noexcept { return flips_; }
+
+  // Lawson's algorithm from the given half-edges: flips every edge whose two triangles fail the
+  // perturbed empty-circle test until none does; constrained edges are never flipped when
+  // respect_constraints. Throws InternalError past a bound of (number of edges)^2 flips.
+  void lawson(std::vector<std::uint32_t> stack, bool respect_constraints);
+  // Lawson from every edge.
+  void lawson_all(bool respect_constraints);
+  // h's two triangles are finite, and the vertex across h is inside the first one's circle.
+  bool violates_delaunay(std::uint32_t h) const;
+
+ private:
+  void write_triangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) noexcept;
+  std::uint32_t index_of(std::uint32_t t, std::uint32_t v) const noexcept;
+
+  Triangulation2& tri_;
+  std::vector<std::uint32_t> cons_;  // per half-edge
+  std::vector<std::uint32_t> vtri_;  // per vertex
+  std::vector<std::uint8_t> in_cavity_;
+  std::uint64_t flips_ = 0;
+  std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
+};
+
+}  // namespace dtlab

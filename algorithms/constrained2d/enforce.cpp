@@ -1,0 +1,243 @@
+// Segment insertion shared by every constrained method: each input segment, in input order, is
+// walked along its pipe (book §1.7) and enforced by edge swaps (§3.3.3; Sloan, "A fast algorithm
+// for generating constrained Delaunay triangulations", 1993: the crossed edges in a queue, each
+// swapped when its quadrilateral is strictly convex, requeued while it still crosses). Vertices on
+// a segment split it; an edge already constrained is an overlap; a crossed constrained edge is a
+// crossing, split at the correctly rounded exact intersection (kernel/rounding.hpp).
+#include <algorithm>
+#include <cstdio>
+#include <deque>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "algorithms/constrained2d/context.hpp"
+#include "kernel/coordinate_range.hpp"
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+#include "kernel/rounding.hpp"
+#include "mesh/element_sets2.hpp"
+
+namespace dtlab {
+
+namespace {
+
+constexpr std::uint32_t kNone = ConstrainedMesh2::kNone;
+
+struct Piece {
+  std::uint32_t a, b, segment;
+};
+
+std::string point_text(const Vec2& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
+  return buf;
+}
+
+// Swaps the edges crossing the open segment s-q (none constrained, no vertex on it) until sq is
+// an edge; returns its half-edge s -> q. Sloan's queue: some crossed edge is always flippable,
+// so a full round of the queue without a flip means a broken invariant.
+std::uint32_t enforce_by_swaps(ConstrainedMesh2& mesh, std::uint32_t s, std::uint32_t q,
+                               const std::vector<std::uint32_t>& crossed) {
+  if (!crossed.empty()) {
+    Triangulation2& tri = mesh.tri();
+    std::deque<std::array<std::uint32_t, 2>> queue;
+    for (const std::uint32_t h : crossed) queue.push_back({tri.origin(h), tri.destination(h)});
+    const Vec2& S = mesh.point(s);
+    const Vec2& Q = mesh.point(q);
+    const std::uint64_t k = crossed.size();
+    const std::uint64_t bound = 4 * k * (k + 1) + 16;
+    std::uint64_t flips = 0;
+    std::size_t idle = 0;
+    while (!queue.empty()) {
+      const auto [u, v] = queue.front();
+      queue.pop_front();
+      const std::uint32_t h = mesh.find_half_edge(u, v);
+      DTLAB_ASSERT(h != kNone && mesh.constraint(h) == kNone);
+      if (!mesh.flippable(h)) {
+        queue.push_back({u, v});
+        if (++idle > queue.size())
+          throw InternalError("edge swapping: no crossed edge of segment " + std::to_string(s) + "-" +
+                              std::to_string(q) + " can be swapped");
+        continue;
+      }
+      idle = 0;
+      if (++flips > bound)
+        throw InternalError("edge swapping for segment " + std::to_string(s) + "-" + std::to_string(q) +
+                            " exceeded its bound of " + std::to_string(bound) + " swaps");
+      const std::uint32_t e = mesh.flip(h);
+      const std::uint32_t c = tri.origin(e), d = tri.destination(e);
+      if (c == s || c == q || d == s || d == q) continue;
+      const Sign sc = orient2d(S, Q, mesh.point(c));
+      const Sign sd = orient2d(S, Q, mesh.point(d));
+      if (sc != Sign::Zero && sd != Sign::Zero && sc != sd) queue.push_back({c, d});
+    }
+  }
+  const std::uint32_t h = mesh.find_half_edge(s, q);
+  DTLAB_ASSERT(h != kNone);
+  return h;
+}
+
+// The endpoints of input segment `id` (after duplicate points were merged).
+const std::array<std::uint32_t, 2>& input_segment(const Constrained2dContext& context, std::uint32_t id) {
+  const auto it = std::lower_bound(context.ids.begin(), context.ids.end(), id);
+  DTLAB_ASSERT(it != context.ids.end() && *it == id);
+  return context.segments[static_cast<std::size_t>(it - context.ids.begin())];
+}
+
+// x (on the line ab) strictly between a and b, exactly.
+bool strictly_inside(const ExactPoint2& x, const Vec2& a, const Vec2& b) {
+  if (a.x != b.x) {
+    const Rational lo(std::min(a.x, b.x)), hi(std::max(a.x, b.x));
+    return lo < x.x && x.x < hi;
+  }
+  const Rational lo(std::min(a.y, b.y)), hi(std::max(a.y, b.y));
+  return lo < x.y && x.y < hi;
+}
+
+}  // namespace
+
+void resolve_and_enforce_segments(const Constrained2dContext& context) {
+  ConstrainedMesh2& mesh = context.mesh;
+  Constrained2dResult& result = context.result;
+  const std::uint64_t segments = context.segments.size();
+  // Bounds: s segments cross at most s(s-1)/2 times; rounding bends add a few. Each piece walk
+  // either finishes a piece or follows a vertex or crossing, which adds at most four pieces.
+  const std::uint64_t max_crossings = segments * (segments - (segments > 0)) / 2 + 16 * segments + 16;
+  std::uint64_t crossings = 0, steps = 0;
+  const std::uint32_t input_points = result.input_point_count;
+
+  std::map<std::pair<Rational, Rational>, std::uint32_t> steiner_at;  // exact crossing -> its vertex
+  // Collinear overlaps first: every segment split at the input vertices exactly on it (its pipe
+  // in the Delaunay triangulation, §1.7), so that overlapping segments share identical pieces,
+  // merged here (the lowest-numbered segment kept), before any crossing bends a chain.
+  std::vector<Piece> pieces;
+  for (std::size_t k = 0; k < segments; ++k) {
+    const auto [a, b] = context.segments[k];
+    const Pipe2 pipe_ab = pipe(mesh.tri(), mesh.triangle_of_vertex(a), a, b);
+    std::uint32_t from = a;
+    for (const std::uint32_t v : pipe_ab.through) {
+      context.note("segment " + std::to_string(context.ids[k]) + " passes through vertex " + std::to_string(v) +
+                   ": split there");
+      pieces.push_back({from, v, context.ids[k]});
+      from = v;
+    }
+    pieces.push_back({from, b, context.ids[k]});
+  }
+  {
+    std::vector<std::size_t> order(pieces.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    const auto key = [&](std::size_t i) {
+      return std::pair{std::min(pieces[i].a, pieces[i].b), std::max(pieces[i].a, pieces[i].b)};
+    };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return key(x) < key(y); });
+    std::vector<std::uint8_t> dropped(pieces.size(), 0);
+    for (std::size_t i = 1; i < order.size(); ++i) {
+      if (key(order[i]) != key(order[i - 1])) continue;
+      std::size_t first = i - 1;
+      while (dropped[order[first]]) --first;
+      dropped[order[i]] = 1;
+      if (pieces[order[i]].segment != pieces[order[first]].segment)
+        context.note("segments " + std::to_string(pieces[order[first]].segment) + " and " +
+                     std::to_string(pieces[order[i]].segment) + " overlap along " + std::to_string(key(order[i]).first) +
+                     "-" + std::to_string(key(order[i]).second) + "; the piece keeps segment " +
+                     std::to_string(pieces[order[first]].segment));
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      if (!dropped[i]) pieces[kept++] = pieces[i];
+    pieces.resize(kept);
+  }
+
+  std::vector<Piece> stack;
+  for (const Piece& piece : pieces) {
+    stack.push_back(piece);
+    while (!stack.empty()) {
+      const Piece p = stack.back();
+      stack.pop_back();
+      if (p.a == p.b) continue;
+      if (++steps > 64 + 16 * (pieces.size() + 2 * crossings))
+        throw InternalError("segment resolution did not converge (at segment " + std::to_string(p.segment) + ")");
+      const ConstrainedMesh2::SegmentWalk walk = mesh.walk(p.a, p.b);
+      const auto hit = std::find_if(walk.crossed.begin(), walk.crossed.end(),
+                                    [&](std::uint32_t h) { return mesh.constraint(h) != kNone; });
+      if (hit == walk.crossed.end()) {
+        const std::uint32_t h = enforce_by_swaps(mesh, p.a, walk.stop, walk.crossed);
+        const std::uint32_t existing = mesh.constraint(h);
+        if (existing != kNone && existing != p.segment) {
+          context.note("segments " + std::to_string(existing) + " and " + std::to_string(p.segment) +
+                       " overlap along edge " + std::to_string(p.a) + "-" + std::to_string(walk.stop) +
+                       "; the edge keeps segment " + std::to_string(std::min(existing, p.segment)));
+        }
+        mesh.set_constraint(h, std::min(existing, p.segment));
+        if (walk.stop != p.b) {
+          if (walk.stop < input_points)
+            context.note("segment " + std::to_string(p.segment) + " passes through vertex " +
+                         std::to_string(walk.stop) + ": split there");
+          stack.push_back({walk.stop, p.b, p.segment});
+        }
+        continue;
+      }
+
+      // A crossing with the constrained edge u -> v (segment j).
+      Triangulation2& tri = mesh.tri();
+      const std::uint32_t h = *hit;
+      const std::uint32_t u = tri.origin(h), v = tri.destination(h), j = mesh.constraint(h);
+      if (++crossings > max_crossings)
+        throw InternalError("segment resolution: more crossings than segments allow (segments " + std::to_string(j) +
+                            " and " + std::to_string(p.segment) + ")");
+      // The exact point: where the two INPUT segments meet, so that every crossing of the same
+      // two segments, and every segment through the same exact point, finds the same vertex.
+      // Only if that point is not strictly inside both input segments (their chains crossing
+      // where the segments do not, after bends of an ulp) are the two pieces' lines used.
+      const auto& si = input_segment(context, p.segment);
+      const auto& sj = input_segment(context, j);
+      std::optional<ExactPoint2> exact = line_intersection_exact(mesh.point(si[0]), mesh.point(si[1]),
+                                                                 mesh.point(sj[0]), mesh.point(sj[1]));
+      if (!exact || !strictly_inside(*exact, mesh.point(si[0]), mesh.point(si[1])) ||
+          !strictly_inside(*exact, mesh.point(sj[0]), mesh.point(sj[1])))
+        exact = line_intersection_exact(mesh.point(p.a), mesh.point(p.b), mesh.point(u), mesh.point(v));
+      DTLAB_ASSERT(exact.has_value());  // the walk saw u and v strictly on either side of ab
+      const RoundedPoint2 rounded = round_point_checked(*exact);
+      const Vec2 x = rounded.point;
+      if (!coordinate_in_range(x.x) || !coordinate_in_range(x.y))
+        throw InputError("segments " + std::to_string(j) + " and " + std::to_string(p.segment) +
+                             " cross at a point outside the supported coordinate range " + point_text(x),
+                         {j, p.segment});
+      if (!within_rounding_bound(*exact, x)) ++result.rounding_checks_failed;
+      const auto known = steiner_at.find({exact->x, exact->y});
+      const ConstrainedMesh2::Location where = known != steiner_at.end()
+                                                   ? ConstrainedMesh2::Location{ConstrainedMesh2::Where::Vertex, known->second}
+                                                   : mesh.locate(x, Triangulation2::triangle_of(h));
+      std::uint32_t w;
+      if (known != steiner_at.end()) {
+        w = known->second;
+      } else if (where.where == ConstrainedMesh2::Where::Vertex) {
+        w = where.handle;
+        context.note("segments " + std::to_string(j) + " and " + std::to_string(p.segment) + " cross at vertex " +
+                     std::to_string(w) + (rounded.exact ? "" : " (their intersection rounds to it)"));
+      } else {
+        w = mesh.insert(x, where);
+        steiner_at.emplace(std::pair{exact->x, exact->y}, w);
+        ++result.crossing_steiner_points;
+        context.note("segments " + std::to_string(j) + " and " + std::to_string(p.segment) + " cross: Steiner vertex " +
+                     std::to_string(w) + " at " + point_text(x) +
+                     (rounded.exact ? " (exact)" : " (rounded; the pieces bend there by at most ulp/2)"));
+      }
+      // Process order (a stack): first segment j's chain through w, then p's.
+      stack.push_back({w, p.b, p.segment});
+      stack.push_back({p.a, w, p.segment});
+      if (w != u && w != v) {
+        const std::uint32_t e = mesh.find_half_edge(u, v);
+        if (e != kNone && mesh.constraint(e) == j) {  // not split by the insertion: reroute through w
+          mesh.set_constraint(e, kNone);
+          stack.push_back({w, v, j});
+          stack.push_back({u, w, j});
+        }
+      }
+    }
+  }
+}
+
+}  // namespace dtlab
