@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
                            dtlab::build_info::kBuildType + ")");
   dtlab::cli::add_delaunay(app);
   dtlab::cli::add_verify(app);
+  dtlab::cli::add_constrain(app);
   dtlab::cli::add_selfcheck(app);
   try {
     app.parse(argc, argv);

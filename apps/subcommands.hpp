@@ -14,5 +14,6 @@ inline int& exit_code() {
 void add_selfcheck(CLI::App& app);
 void add_delaunay(CLI::App& app);
 void add_verify(CLI::App& app);
+void add_constrain(CLI::App& app);
 
 }  // namespace dtlab::cli
