@@ -1,0 +1,108 @@
+// The open facets of variant "divide-conquer" (DeWall's active face list, as a hash table): every
+// facet of a built tetrahedron whose other side is not built yet, keyed by its three vertices.
+// Open addressing with linear probing and backward-shift deletion: no allocation per facet.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "kernel/error.hpp"
+
+namespace dtlab::dewall {
+
+class OpenFacets {
+ public:
+  static constexpr std::uint32_t kAbsent = 0xFFFFFFFFu;
+  using Key = std::array<std::uint32_t, 3>;  // sorted vertex ids
+
+  static Key key(std::uint32_t a, std::uint32_t b, std::uint32_t c) noexcept {
+    if (a > b) std::swap(a, b);
+    if (b > c) std::swap(b, c);
+    if (a > b) std::swap(a, b);
+    return {a, b, c};
+  }
+
+  OpenFacets() { rehash(1024); }
+
+  std::size_t size() const noexcept { return size_; }
+
+  // If `k` is open, removes it and returns its facet handle; else records it with `handle` and
+  // returns kAbsent.
+  std::uint32_t take_or_insert(const Key& k, std::uint32_t handle) {
+    std::size_t i = home(k);
+    for (std::size_t probes = 0; probes <= mask_; ++probes, i = (i + 1) & mask_) {
+      Slot& s = slots_[i];
+      if (s.handle == kAbsent) {
+        s = {k, handle};
+        if (++size_ * 2 > slots_.size()) rehash(2 * slots_.size());
+        return kAbsent;
+      }
+      if (s.key == k) {
+        const std::uint32_t found = s.handle;
+        erase_at(i);
+        return found;
+      }
+    }
+    throw InternalError("divide-conquer 3D Delaunay: open facet table full");
+  }
+
+  // Removes `k`, which must be open.
+  void erase(const Key& k) {
+    std::size_t i = home(k);
+    for (std::size_t probes = 0; probes <= mask_; ++probes, i = (i + 1) & mask_) {
+      if (slots_[i].handle == kAbsent) break;
+      if (slots_[i].key == k) {
+        erase_at(i);
+        return;
+      }
+    }
+    throw InternalError("divide-conquer 3D Delaunay: closing a facet that is not open");
+  }
+
+ private:
+  struct Slot {
+    Key key;
+    std::uint32_t handle = kAbsent;
+  };
+
+  std::size_t home(const Key& k) const noexcept {
+    std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
+    h ^= (h >> 29) + k[1] * 0xBF58476D1CE4E5B9ull;
+    h ^= (h >> 31) + k[2] * 0x94D049BB133111EBull;
+    h ^= h >> 32;
+    return static_cast<std::size_t>(h) & mask_;
+  }
+
+  // Backward-shift deletion: moves later entries of the probe run into the hole when their home
+  // is not between the hole and them, so that lookups never need tombstones.
+  void erase_at(std::size_t hole) noexcept {
+    std::size_t j = hole;
+    for (;;) {
+      j = (j + 1) & mask_;
+      if (slots_[j].handle == kAbsent) break;
+      const std::size_t k = home(slots_[j].key);
+      const bool stays = hole <= j ? (hole < k && k <= j) : (hole < k || k <= j);
+      if (stays) continue;
+      slots_[hole] = slots_[j];
+      hole = j;
+    }
+    slots_[hole].handle = kAbsent;
+    --size_;
+  }
+
+  void rehash(std::size_t capacity) {
+    std::vector<Slot> old = std::move(slots_);
+    slots_.assign(capacity, Slot{});
+    mask_ = capacity - 1;
+    size_ = 0;
+    for (const Slot& s : old)
+      if (s.handle != kAbsent) take_or_insert(s.key, s.handle);
+  }
+
+  std::vector<Slot> slots_;
+  std::size_t mask_ = 0;
+  std::size_t size_ = 0;
+};
+
+}  // namespace dtlab::dewall
