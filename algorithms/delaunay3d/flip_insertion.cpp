@@ -122,7 +122,10 @@ void FlipInserter::split(const Location& at, std::uint32_t p) {
   std::uint32_t a = kNone, b = kNone;  // the edge p lies on
   std::uint32_t shared = kNone;        // the facet p lies on (handle in t)
   if (zeros == 0) {
-    old_.assign(1, t);
+    mesh_.split14(t, p, ids_);
+    ++counts_.splits[0];
+    commit(p);
+    return;
   } else if (zeros == 1) {
     shared = 4 * t + static_cast<std::uint32_t>(std::countr_zero(at.zero_facets));
     old_.assign({t, r[t].neighbour[shared & 3u] >> 2});
@@ -159,6 +162,8 @@ void FlipInserter::commit(std::uint32_t p) {
     std::uint32_t i = 0;
     while (r[t].vertex[i] != p) ++i;
     stack_.push_back(4 * t + i);
+    // The tetrahedron across is read when the facet comes off the queue: ask for it now.
+    __builtin_prefetch(r + (r[t].neighbour[i] >> 2));
   }
   last_ = ids_.back();
 }
@@ -168,16 +173,17 @@ void FlipInserter::restore_delaunay(std::uint32_t p) {
   flips_left_ = mesh_.live_count() + 64;
   deferred_.clear();
   for (;;) {
-    while (!stack_.empty()) {
-      const std::uint32_t h = stack_.back();
-      stack_.pop_back();
+    for (std::size_t head = 0; head < stack_.size(); ++head) {
+      const std::uint32_t h = stack_[head];
       if (try_flip(h, p) == Outcome::Blocked) deferred_.push_back(h);
     }
+    stack_.clear();
     if (deferred_.empty()) return;
     retry_.swap(deferred_);
     deferred_.clear();
     bool progress = false;
     for (const std::uint32_t h : retry_) {
+      ++counts_.retried;
       const Outcome o = try_flip(h, p);
       progress |= o == Outcome::Flipped;
       if (o == Outcome::Blocked) deferred_.push_back(h);
@@ -209,61 +215,60 @@ FlipInserter::Outcome FlipInserter::try_flip(std::uint32_t h, std::uint32_t p) {
   const std::uint32_t g = r[t].neighbour[i];
   const std::uint32_t u = g >> 2, d = r[u].vertex[g & 3u];
   if (!conflicts(u, p)) return Outcome::Done;
-  if (flips_left_-- == 0)
+  if (flips_left_ == 0)
     throw InternalError("3D Delaunay flip: inserting point (rank " + std::to_string(p) + ") exceeded its bound of flips");
 
-  // Facet (a, b, c) as t lists it, so (a, b, c, p) is positive; edge k runs from v[k] to
-  // v[k + 1], and o[k] says where segment pd crosses the plane: < 0 on the inner side of the
-  // edge, 0 on its line, > 0 beyond it.
+  // Facet (v0, v1, v2) as t lists it, so (v0, v1, v2, p) is positive; edge k runs from v[k] to
+  // v[k + 1] and f = v[k + 2] is opposite it.
   const auto& fi = kFacet[i];
-  const std::uint32_t v[3] = {r[t].vertex[fi[0]], r[t].vertex[fi[1]], r[t].vertex[fi[2]]};
-  Sign o[3];
-  for (int k = 0; k < 3; ++k) o[k] = orientation_.orient(v[k], v[(k + 1) % 3], p, d);
-  if (o[0] == Sign::Negative && o[1] == Sign::Negative && o[2] == Sign::Negative) {
-    old_.assign({t, u});
-    fresh_.assign({{v[0], v[1], d, p}, {v[1], v[2], d, p}, {v[2], v[0], d, p}});
-    mesh_.replace(old_, fresh_, ids_);
-    ++counts_.flips23;
-    commit(p);
-    return Outcome::Flipped;
-  }
-  int zeros = 0, zero_edge = 0;
-  bool reflex = false;
+  const std::array<std::uint32_t, 3> v = {r[t].vertex[fi[0]], r[t].vertex[fi[1]], r[t].vertex[fi[2]]};
+  // An edge with three tetrahedra t, u and (e0, e1, p, d) is reflex (segment pd passes beyond
+  // it), so 2->3 is out and only 3->2 about such an edge can apply.
+  bool degree3 = false;
   for (std::uint32_t k = 0; k < 3; ++k) {
-    const std::uint32_t e0 = v[k], e1 = v[(k + 1) % 3], f = v[(k + 2) % 3];
-    if (o[k] == Sign::Positive) {
-      reflex = true;
-      if (flip32(t, u, fi[(k + 2) % 3], e0, e1, f, p, d)) return Outcome::Flipped;
-    } else if (o[k] == Sign::Zero) {
-      ++zeros, zero_edge = static_cast<int>(k);
+    const std::uint32_t w = r[t].neighbour[fi[(k + 2) % 3]];
+    if (r[w >> 2].vertex[w & 3u] != d) continue;
+    degree3 = true;
+    if (flip32(t, u, w >> 2, v[k], v[(k + 1) % 3], v[(k + 2) % 3], p, d)) return Outcome::Flipped;
+  }
+  if (!degree3) {
+    // Where segment pd crosses the plane of the facet, edge by edge: inside (negative), on the
+    // edge's line (zero), beyond it (positive: the edge has more than three tetrahedra, blocked).
+    int zeros = 0;
+    std::uint32_t zero_edge = 0;
+    bool reflex = false;
+    for (std::uint32_t k = 0; k < 3 && !reflex; ++k) {
+      const Sign o = orientation_.orient(v[k], v[(k + 1) % 3], p, d);
+      reflex = o == Sign::Positive;
+      if (o == Sign::Zero) ++zeros, zero_edge = k;
     }
+    if (!reflex && zeros == 0) {
+      mesh_.flip23(t, u, v, p, d, ids_);
+      --flips_left_;
+      ++counts_.flips23;
+      commit(p);
+      return Outcome::Flipped;
+    }
+    // On a line through the infinite vertex means p, d and the finite end collinear; then p is
+    // outside the sphere and never gets here.
+    const std::uint32_t k = zero_edge;
+    if (!reflex && zeros == 1 && v[k] != kInf && v[(k + 1) % 3] != kInf &&
+        flip44(t, u, fi[(k + 2) % 3], v[k], v[(k + 1) % 3], v[(k + 2) % 3], p, d))
+      return Outcome::Flipped;
   }
-  if (!reflex && zeros == 1) {
-    const auto k = static_cast<std::uint32_t>(zero_edge);
-    const std::uint32_t e0 = v[k], e1 = v[(k + 1) % 3], f = v[(k + 2) % 3];
-    // On a line through the infinite vertex means p, d and the finite end are collinear; then p
-    // is outside the sphere and never gets here.
-    if (e0 != kInf && e1 != kInf && flip44(t, u, fi[(k + 2) % 3], e0, e1, f, p, d)) return Outcome::Flipped;
-  }
-  ++flips_left_;
   ++counts_.blocked;
   return Outcome::Blocked;
 }
 
 // Edge e0e1 of facet (e0, e1, f) has three tetrahedra: t1 = (e0, e1, f, p), t2 across the facet
-// with apex d, and t3 = (e0, e1, p, d) across t1's facet opposite f. They become (f, d, p, e0)
-// and (d, f, p, e1) if segment e0e1 crosses triangle fdp, i.e. if both are positive.
-bool FlipInserter::flip32(std::uint32_t t1, std::uint32_t t2, std::uint32_t f_in_t1, std::uint32_t e0,
-                          std::uint32_t e1, std::uint32_t f, std::uint32_t p, std::uint32_t d) {
-  const T3::Record* r = mesh_.records();
-  const std::uint32_t w = r[t1].neighbour[f_in_t1];
-  const std::uint32_t t3 = w >> 2;
-  if (r[t3].vertex[w & 3u] != d) return false;
+// with apex d, and t3 = (e0, e1, p, d). They become (f, d, p, e0) and (d, f, p, e1) if segment
+// e0e1 crosses triangle fdp, i.e. if both are positive.
+bool FlipInserter::flip32(std::uint32_t t1, std::uint32_t t2, std::uint32_t t3, std::uint32_t e0, std::uint32_t e1,
+                          std::uint32_t f, std::uint32_t p, std::uint32_t d) {
   if (orientation_.orient(f, d, p, e0) != Sign::Positive || orientation_.orient(d, f, p, e1) != Sign::Positive)
     return false;
-  old_.assign({t1, t2, t3});
-  fresh_.assign({{f, d, p, e0}, {d, f, p, e1}});
-  mesh_.replace(old_, fresh_, ids_);
+  mesh_.flip32(t1, t2, t3, e0, e1, f, p, d, ids_);
+  --flips_left_;
   ++counts_.flips32;
   commit(p);
   return true;
@@ -286,8 +291,8 @@ bool FlipInserter::flip44(std::uint32_t t1, std::uint32_t t2, std::uint32_t f_in
   for (const FlipMesh::Tuple& n : fresh_)
     if (orientation_.orient(n[0], n[1], n[2], n[3]) != Sign::Positive)
       throw InternalError("3D Delaunay flip: a 4->4 flip would make a tetrahedron that is not positive");
-  old_.assign({t1, t2, t3, t4});
-  mesh_.replace(old_, fresh_, ids_);
+  mesh_.flip44(t1, t2, t3, t4, e0, e1, f, x, p, d, ids_);
+  --flips_left_;
   ++counts_.flips44;
   commit(p);
   return true;

@@ -20,6 +20,7 @@ struct FlipCounts {
   std::size_t splits[3] = {0, 0, 0};  // 1->4 (inside), 2->6 (on a facet), n->2n (on an edge)
   std::size_t flips23 = 0, flips32 = 0, flips44 = 0;
   std::size_t blocked = 0;  // link facets not locally Delaunay that could not be flipped when met
+  std::size_t retried = 0;  // blocked ones looked at again when the stack ran empty
 };
 
 class FlipInserter {
@@ -50,7 +51,7 @@ class FlipInserter {
   void collect_shell(std::uint32_t t, std::uint32_t a, std::uint32_t b);
   void restore_delaunay(std::uint32_t p);
   Outcome try_flip(std::uint32_t h, std::uint32_t p);
-  bool flip32(std::uint32_t t1, std::uint32_t t2, std::uint32_t f_in_t1, std::uint32_t e0, std::uint32_t e1,
+  bool flip32(std::uint32_t t1, std::uint32_t t2, std::uint32_t t3, std::uint32_t e0, std::uint32_t e1,
               std::uint32_t f, std::uint32_t p, std::uint32_t d);
   bool flip44(std::uint32_t t1, std::uint32_t t2, std::uint32_t f_in_t1, std::uint32_t e0, std::uint32_t e1,
               std::uint32_t f, std::uint32_t p, std::uint32_t d);

@@ -24,14 +24,6 @@ std::array<std::uint32_t, 3> sorted_key(std::uint32_t x, std::uint32_t y, std::u
   return {x, y, z};
 }
 
-// The even permutation of a positive tuple that puts kInfinite (if present) at index 0.
-FlipMesh::Tuple ghost_normal_form(const FlipMesh::Tuple& v) noexcept {
-  if (v[1] == kInf) return {v[1], v[0], v[3], v[2]};
-  if (v[2] == kInf) return {v[2], v[3], v[0], v[1]};
-  if (v[3] == kInf) return {v[3], v[2], v[1], v[0]};
-  return v;
-}
-
 }  // namespace
 
 FlipMesh::FlipMesh(std::vector<Record>& records) : records_(records) {
@@ -57,6 +49,24 @@ void FlipMesh::grow(std::size_t k) {
     r_ = records_.data();
   }
   count_ = need;
+}
+
+// The even permutations that bring index k to 0 are the double transpositions j -> j ^ k.
+std::uint32_t FlipMesh::write(std::uint32_t t, const Tuple& v) noexcept {
+  const std::uint32_t m = v[1] == kInf ? 1u : v[2] == kInf ? 2u : v[3] == kInf ? 3u : 0u;
+  for (std::uint32_t j = 0; j < 4; ++j) r_[t].vertex[j ^ m] = v[j];
+  return m;
+}
+
+void FlipMesh::release(std::uint32_t t) {
+  r_[t].vertex[0] = kNone;
+  free_.push_back(t);
+}
+
+std::uint32_t FlipMesh::twin_opposite(std::uint32_t t, std::uint32_t v) const noexcept {
+  const auto& w = r_[t].vertex;
+  const std::uint32_t i = w[0] == v ? 0u : w[1] == v ? 1u : w[2] == v ? 2u : 3u;
+  return r_[t].neighbour[i];
 }
 
 std::uint32_t FlipMesh::new_slot() {
@@ -88,12 +98,9 @@ void FlipMesh::replace(std::span<const std::uint32_t> old, std::span<const Tuple
   for (std::size_t k = 0; k < fresh.size(); ++k) {
     const std::uint32_t t = k < old.size() ? old[k] : new_slot();
     ids.push_back(t);
-    r_[t].vertex = ghost_normal_form(fresh[k]);
+    write(t, fresh[k]);
   }
-  for (std::size_t k = fresh.size(); k < old.size(); ++k) {
-    r_[old[k]].vertex[0] = kNone;
-    free_.push_back(old[k]);
-  }
+  for (std::size_t k = fresh.size(); k < old.size(); ++k) release(old[k]);
   for (const std::uint32_t t : ids) {
     const auto& v = r_[t].vertex;
     for (std::uint32_t i = 0; i < 4; ++i) {

@@ -3,7 +3,9 @@
 // variant is made of, replace(): a small set of tetrahedra goes, a set of new ones covering the
 // same region comes, and the new facets are linked to each other and to the old region's outer
 // facets by matching their vertex triples. A 1->4, 2->6 or n->2n split and a 2->3, 3->2 or 4->4
-// flip (Joe 1991; Edelsbrunner & Shah 1996) differ only in which tetrahedra they list.
+// flip (Joe 1991; Edelsbrunner & Shah 1996) differ only in which tetrahedra they list. The
+// frequent moves (1->4, 2->3, 3->2, 4->4) also have direct versions (flip_moves.cpp) that link
+// by the known structure instead of matching, and so cost a few stores each.
 #pragma once
 
 #include <array>
@@ -36,6 +38,24 @@ class FlipMesh {
   // order. Old slots are reused first.
   void replace(std::span<const std::uint32_t> old, std::span<const Tuple> fresh, std::vector<std::uint32_t>& ids);
 
+  // Topological moves; the caller has checked the geometry. Each writes the new tetrahedra's ids
+  // to `ids`, reusing the old slots.
+  //   split14: t becomes (facet i of t as listed, p) for i = 0..3.
+  void split14(std::uint32_t t, std::uint32_t p, std::vector<std::uint32_t>& ids);
+  //   flip23: t1 = (v0, v1, v2, p) and t2 = (v0, v2, v1, d) (up to even permutations) become
+  //   (v[k], v[k+1], d, p) for k = 0, 1, 2.
+  void flip23(std::uint32_t t1, std::uint32_t t2, const std::array<std::uint32_t, 3>& v, std::uint32_t p,
+              std::uint32_t d, std::vector<std::uint32_t>& ids);
+  //   flip32: t1 = (e0, e1, f, p), t2 = (e0, e1, f, d), t3 = (e0, e1, p, d) (as vertex sets)
+  //   become (f, d, p, e0) and (d, f, p, e1).
+  void flip32(std::uint32_t t1, std::uint32_t t2, std::uint32_t t3, std::uint32_t e0, std::uint32_t e1,
+              std::uint32_t f, std::uint32_t p, std::uint32_t d, std::vector<std::uint32_t>& ids);
+  //   flip44: t1 = (e0, e1, f, p), t2 = (e0, e1, f, d), t3 = (e0, e1, d, x), t4 = (e0, e1, p, x)
+  //   (as vertex sets) become (e1, f, d, p), (f, e0, d, p), (e0, x, d, p), (x, e1, d, p).
+  void flip44(std::uint32_t t1, std::uint32_t t2, std::uint32_t t3, std::uint32_t t4, std::uint32_t e0,
+              std::uint32_t e1, std::uint32_t f, std::uint32_t x, std::uint32_t p, std::uint32_t d,
+              std::vector<std::uint32_t>& ids);
+
   // Removes the dead slots by moving the last live tetrahedra into them; the records vector
   // then holds exactly the live tetrahedra.
   void finish();
@@ -49,6 +69,16 @@ class FlipMesh {
 
   std::uint32_t new_slot();
   void grow(std::size_t k);
+  void release(std::uint32_t t);
+  // Writes positive tuple v into slot t with kInfinite moved to index 0; returns the mask m such
+  // that the vertex at index j of v is now at index j ^ m.
+  std::uint32_t write(std::uint32_t t, const Tuple& v) noexcept;
+  void link(std::uint32_t g, std::uint32_t h) noexcept {
+    r_[g >> 2].neighbour[g & 3u] = h;
+    r_[h >> 2].neighbour[h & 3u] = g;
+  }
+  // The twin of t's facet opposite its vertex v.
+  std::uint32_t twin_opposite(std::uint32_t t, std::uint32_t v) const noexcept;
 
   std::vector<Record>& records_;
   Record* r_ = nullptr;

@@ -9,11 +9,11 @@
 #include <array>
 #include <cmath>
 #include <random>
-#include <set>
 #include <string>
 #include <vector>
 
 #include "algorithms/delaunay3d/delaunay3d.hpp"
+#include "algorithms/delaunay3d/flip_insertion.hpp"
 #include "algorithms/delaunay3d/flip_orientation.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
 #include "kernel/error.hpp"
@@ -42,29 +42,32 @@ Tet canonical(Tet t) {
   return t;
 }
 
-std::set<Tet> tetrahedron_set(const T3& tet) {
-  std::set<Tet> out;
-  for (const Tet& t : tet.finite_tetrahedra()) out.insert(canonical(t));
+std::vector<Tet> tetrahedron_set(const T3& tet) {
+  std::vector<Tet> out;
+  for (const Tet& t : tet.finite_tetrahedra()) out.push_back(canonical(t));
+  std::sort(out.begin(), out.end());
   return out;
 }
 
 // The hull facets under the ghosts, each rotated (keeping its orientation) to start at its
 // smallest id.
-std::set<Tri> hull_set(const T3& tet) {
-  std::set<Tri> out;
+std::vector<Tri> hull_set(const T3& tet) {
+  std::vector<Tri> out;
   for (std::uint32_t t = 0; t < tet.tetrahedron_count(); ++t) {
     if (!tet.is_ghost(t)) continue;
     Tri f = {tet.vertex(t, 1), tet.vertex(t, 2), tet.vertex(t, 3)};
     while (f[0] > f[1] || f[0] > f[2]) f = {f[1], f[2], f[0]};
-    out.insert(f);
+    out.push_back(f);
   }
+  std::sort(out.begin(), out.end());
   return out;
 }
 
 // "" if "flip" returns what "incremental" returns on P, else what differs.
-std::string differences(const std::vector<Vec3>& P) {
+// `seed` changes flip's insertion order, not the answer.
+std::string differences(const std::vector<Vec3>& P, std::uint64_t seed = Delaunay3dOptions{}.seed) {
   const Delaunay3dResult a = delaunay3d(P, {.algorithm = "incremental"});
-  const Delaunay3dResult b = delaunay3d(P, {.algorithm = "flip"});
+  const Delaunay3dResult b = delaunay3d(P, {.algorithm = "flip", .seed = seed});
   if (a.degenerate_message != b.degenerate_message) return "degenerate messages differ";
   try {
     b.tetrahedralization.check_topology();
@@ -77,7 +80,7 @@ std::string differences(const std::vector<Vec3>& P) {
   const auto ta = tetrahedron_set(a.tetrahedralization), tb = tetrahedron_set(b.tetrahedralization);
   if (ta != tb) {
     std::size_t missing = 0;
-    for (const Tet& t : ta) missing += tb.count(t) == 0;
+    for (const Tet& t : ta) missing += !std::binary_search(tb.begin(), tb.end(), t);
     return std::to_string(missing) + " of " + std::to_string(ta.size()) + " tetrahedra missing, flip has " +
            std::to_string(tb.size());
   }
@@ -164,6 +167,13 @@ TEST(Delaunay3dFlip, IntegerGrids) {
   for (const int side : {3, 4, 10, 20}) EXPECT_EQ(differences(grid(side)), "") << side;
 }
 
+TEST(Delaunay3dFlip, InsertionOrderDoesNotChangeTheAnswer) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    EXPECT_EQ(differences(grid(6), seed), "") << seed;
+    EXPECT_EQ(differences(sphere_points(7), seed), "") << seed;
+  }
+}
+
 TEST(Delaunay3dFlip, TwoCoplanarLayers) {
   std::vector<Vec3> P;
   for (int x = 0; x < 15; ++x)
@@ -235,6 +245,31 @@ TEST(Delaunay3dFlip, RandomUniform10k) { EXPECT_EQ(differences(uniform(10'000, 1
 
 TEST(Delaunay3dFlip, RandomUniform100k) { EXPECT_EQ(differences(uniform(100'000, 2)), ""); }
 
+// The corners of a cube first, then the other points of a 4^3 grid in lexicographic order:
+// points land on hull edges and facets and on inner edges and facets, and coplanar
+// neighbourhoods need 4->4 flips; every kind of move must run, and the result must agree.
+TEST(Delaunay3dFlip, EveryMoveRunsOnAGridInsertedCornersFirst) {
+  std::vector<Vec3> P = {{0, 0, 0}, {3, 0, 0}, {0, 3, 0}, {0, 0, 3}, {3, 3, 0}, {3, 0, 3}, {0, 3, 3}, {3, 3, 3}};
+  for (const Vec3& q : grid(4))
+    if (std::find(P.begin(), P.end(), q) == P.end()) P.push_back(q);
+  T3 tet(P);
+  FlipInserter inserter(tet.points().data(), tet.mutable_records(), {0, 1, 2, 3});
+  inserter.start();
+  for (std::uint32_t r = 4; r < P.size(); ++r) inserter.insert(r);
+  inserter.finish();
+  ASSERT_NO_THROW(tet.check_topology());
+  const Delaunay3dResult reference = delaunay3d(P, {.algorithm = "incremental"});
+  EXPECT_EQ(tetrahedron_set(tet), tetrahedron_set(reference.tetrahedralization));
+  EXPECT_EQ(hull_set(tet), hull_set(reference.tetrahedralization));
+  const FlipCounts& c = inserter.counts();
+  EXPECT_GT(c.splits[0], 0u);
+  EXPECT_GT(c.splits[1], 0u);
+  EXPECT_GT(c.splits[2], 0u);
+  EXPECT_GT(c.flips23, 0u);
+  EXPECT_GT(c.flips32, 0u);
+  EXPECT_GT(c.flips44, 0u);
+}
+
 // The orientation rule with the infinite vertex: a ghost over a hull facet is positive, and the
 // sign flips with an odd permutation.
 TEST(Delaunay3dFlip, InfiniteVertexActsAsAnInteriorPointNegated) {
@@ -262,7 +297,19 @@ RC_GTEST_PROP(Delaunay3dFlip, SmallLatticeSetsAgreeWithIncremental, ()) {
     const auto c = *rc::gen::container<std::array<int, 3>>(rc::gen::inRange(0, side));
     P.push_back({double(c[0]), double(c[1]), double(c[2])});
   }
-  RC_ASSERT(differences(P) == "");
+  RC_ASSERT(differences(P, *rc::gen::arbitrary<std::uint64_t>()) == "");
+}
+
+// Larger sets on a small lattice: long chains of flips through coplanar and cospherical ties.
+RC_GTEST_PROP(Delaunay3dFlip, LatticeSetsAgreeWithIncremental, ()) {
+  const auto side = *rc::gen::inRange(3, 8);
+  const auto n = *rc::gen::inRange<std::size_t>(20, 300);
+  std::vector<Vec3> P;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto c = *rc::gen::container<std::array<int, 3>>(rc::gen::inRange(0, side));
+    P.push_back({double(c[0]), double(c[1]), double(c[2])});
+  }
+  RC_ASSERT(differences(P, *rc::gen::arbitrary<std::uint64_t>()) == "");
 }
 
 }  // namespace
