@@ -1,0 +1,175 @@
+#include "mesh/io/off_format.hpp"
+
+#include <algorithm>
+#include <array>
+#include <string_view>
+
+#include "kernel/error.hpp"
+#include "mesh/io/text_input.hpp"
+#include "mesh/io/text_output.hpp"
+
+namespace dtlab {
+
+namespace {
+
+using io::LineTokenizer;
+using io::quote;
+
+// Extra numbers per vertex that the header's prefixes announce; a colour has 3 or 4.
+struct VertexLayout {
+  std::size_t fixed = 3;   // x y z, plus normal and texture coordinates
+  bool has_colour = false;
+};
+
+bool starts_with_digit_or_sign(std::string_view t) {
+  return !t.empty() && ((t[0] >= '0' && t[0] <= '9') || t[0] == '-' || t[0] == '+' || t[0] == '.');
+}
+
+// Parses "[ST][C][N]OFF"; refuses 4OFF, nOFF and anything else by name.
+VertexLayout parse_header_keyword(const LineTokenizer& in) {
+  const std::string_view kw = in.token(0);
+  if (!kw.ends_with("OFF")) {
+    in.fail("expected the OFF header keyword ([ST][C][N]OFF), found " +
+            std::string(starts_with_digit_or_sign(kw) ? "the number " : "") + quote(kw));
+  }
+  std::string_view prefix = kw.substr(0, kw.size() - 3);
+  VertexLayout layout;
+  if (prefix.starts_with("ST")) {
+    layout.fixed += 2;
+    prefix.remove_prefix(2);
+  }
+  if (prefix.starts_with("C")) {
+    layout.has_colour = true;
+    prefix.remove_prefix(1);
+  }
+  if (prefix.starts_with("N")) {
+    layout.fixed += 3;
+    prefix.remove_prefix(1);
+  }
+  if (prefix == "4" || prefix == "4n") in.fail(quote(kw) + " is a 4D OFF variant; only 3D OFF is supported");
+  if (prefix == "n") in.fail(quote(kw) + " gives its own vertex dimension (nOFF); only 3D OFF is supported");
+  if (!prefix.empty()) in.fail("unknown OFF variant " + quote(kw) + " (supported: [ST][C][N]OFF)");
+  return layout;
+}
+
+class OffReader {
+ public:
+  OffReader(std::istream& in, const std::string& name) : in_(in, name) {}
+
+  MeshData3 read() {
+    if (!in_.next_line()) in_.fail_at(1, "empty file: missing the OFF header");
+    const VertexLayout layout = parse_header_keyword(in_);
+    if (in_.size() == 2 && in_.token(1) == "BINARY") in_.fail("binary OFF is not supported (only ASCII OFF)");
+    std::size_t first_count = 1;
+    if (in_.size() == 1) {
+      const std::uint64_t header_line = in_.line();
+      if (!in_.next_line()) in_.fail_at(header_line, "file ends before the counts (<#vertices> <#faces> <#edges>)");
+      first_count = 0;
+    }
+    in_.expect_tokens(first_count + 3, "counts (<#vertices> <#faces> <#edges>)");
+    const std::uint64_t nv = in_.count(first_count, "vertex count");
+    const std::uint64_t nf = in_.count(first_count + 1, "face count");
+    in_.count(first_count + 2, "edge count");
+    read_vertices(nv, layout);
+    read_faces(nf);
+    if (in_.next_line()) {
+      in_.fail("more lines than the header's " + std::to_string(nf) + " faces: " + quote(in_.token(0)));
+    }
+    return std::move(mesh_);
+  }
+
+ private:
+  void read_vertices(std::uint64_t n, const VertexLayout& layout) {
+    static constexpr const char* kAxes[] = {" x", " y", " z"};
+    for (std::uint64_t i = 0; i < n; ++i) {
+      io::next_counted_entry(in_, i, n, "vertices");
+      const std::string what = "vertex " + std::to_string(i);
+      const bool with_alpha = layout.has_colour && in_.size() == layout.fixed + 4;
+      in_.expect_tokens(layout.fixed + (layout.has_colour ? (with_alpha ? 4 : 3) : 0), what);
+      double c[3];
+      for (std::size_t k = 0; k < 3; ++k) {
+        c[k] = in_.real(k, what + kAxes[k]);
+        io::check_coordinate(in_, c[k], what + kAxes[k]);
+      }
+      for (std::size_t k = 3; k < in_.size(); ++k) in_.real(k, what + " field " + std::to_string(k + 1));
+      mesh_.vertices.push_back(Vec3{c[0], c[1], c[2]});
+    }
+    mesh_.vertex_refs.assign(mesh_.vertices.size(), 0);
+  }
+
+  void read_faces(std::uint64_t n) {
+    const std::uint64_t nv = mesh_.vertices.size();
+    for (std::uint64_t i = 0; i < n; ++i) {
+      io::next_counted_entry(in_, i, n, "faces");
+      const std::string what = "face " + std::to_string(i);
+      const std::uint64_t corners = in_.count(0, what + " vertex count");
+      if (corners < 3) in_.fail(what + " has " + std::to_string(corners) + " vertices; a face needs 3");
+      if (corners > 3) {
+        in_.fail(what + " has " + std::to_string(corners) +
+                 " vertices: a polygon. This reader keeps triangles only (MeshData3); a PLC facet with more "
+                 "than 3 vertices is a polygon facet, which TetGen's .poly format can carry");
+      }
+      if (in_.size() < 4) in_.fail(what + ": expected 3 vertex numbers, found " + std::to_string(in_.size() - 1));
+      const std::size_t colour = in_.size() - 4;
+      if (colour != 0 && colour != 1 && colour != 3 && colour != 4) {
+        in_.fail(what + ": " + std::to_string(colour) + " numbers after the vertex numbers; a face colour has 1, 3 or 4");
+      }
+      std::array<std::uint32_t, 3> t{};
+      for (std::size_t k = 0; k < 3; ++k) t[k] = io::vertex_number(in_, 1 + k, 0, nv, what);
+      for (std::size_t k = 4; k < in_.size(); ++k) in_.real(k, what + " colour");
+      mesh_.triangles.push_back(t);
+    }
+    mesh_.triangle_refs.assign(mesh_.triangles.size(), 0);
+  }
+
+  LineTokenizer in_;
+  MeshData3 mesh_;
+};
+
+}  // namespace
+
+MeshData3 read_off(std::istream& in, const std::string& file_name) { return OffReader(in, file_name).read(); }
+
+MeshData3 read_off(const std::string& path) {
+  std::ifstream in = io::open_for_reading(path);
+  return read_off(in, path);
+}
+
+void write_off(std::ostream& out, const MeshData3& mesh) {
+  if (!mesh.edges.empty() || !mesh.tetrahedra.empty()) {
+    throw InputError("OFF holds vertices and triangles only; this mesh has " + std::to_string(mesh.edges.size()) +
+                     " edges and " + std::to_string(mesh.tetrahedra.size()) + " tetrahedra");
+  }
+  io::check_cells(mesh.triangles, {}, mesh.vertices.size(), "triangle");
+  std::string text = "OFF\n";
+  io::append_integer(text, static_cast<std::int64_t>(mesh.vertices.size()));
+  text += ' ';
+  io::append_integer(text, static_cast<std::int64_t>(mesh.triangles.size()));
+  text += " 0\n";
+  for (const Vec3& p : mesh.vertices) {
+    io::append_real(text, p.x);
+    text += ' ';
+    io::append_real(text, p.y);
+    text += ' ';
+    io::append_real(text, p.z);
+    text += '\n';
+  }
+  for (const auto& t : mesh.triangles) {
+    text += '3';
+    for (std::uint32_t v : t) {
+      text += ' ';
+      io::append_integer(text, v);
+    }
+    text += '\n';
+  }
+  out << text;
+}
+
+void write_off(const std::string& path, const MeshData3& mesh) {
+  std::ofstream out = io::open_for_writing(path);
+  write_off(out, mesh);
+  out.flush();
+  io::check_written(out, path);
+}
+
+}  // namespace dtlab
