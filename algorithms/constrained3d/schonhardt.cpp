@@ -1,0 +1,174 @@
+// Generators of the Schönhardt family (schonhardt.hpp): twisted prisms and their stacks
+// (Schönhardt 1928; Rambau 2005) and Chazelle's notched box (Chazelle 1984; book §3.5).
+#include "algorithms/constrained3d/schonhardt.hpp"
+
+#include <cmath>
+#include <algorithm>
+#include <map>
+#include <numbers>
+#include <string>
+#include <tuple>
+
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+namespace {
+
+// Collects a surface: points merged by coordinates, each triangle turned so that its normal
+// points along the face's outward direction (the generators' coordinates are small dyadic
+// rationals or the prism's, where the cross product's sign is far from rounding).
+class SurfaceBuilder {
+ public:
+  std::uint32_t id(const Vec3& p) {
+    const auto key = std::make_tuple(p.x, p.y, p.z);
+    const auto [it, inserted] = ids_.emplace(key, static_cast<std::uint32_t>(surface_.points.size()));
+    if (inserted) surface_.points.push_back(p);
+    return it->second;
+  }
+  void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, const Vec3& outward) {
+    const Vec3& p = surface_.points[a];
+    const Vec3& q = surface_.points[b];
+    const Vec3& r = surface_.points[c];
+    const Vec3 u{q.x - p.x, q.y - p.y, q.z - p.z}, v{r.x - p.x, r.y - p.y, r.z - p.z};
+    const Vec3 n{u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x};
+    const double d = n.x * outward.x + n.y * outward.y + n.z * outward.z;
+    if (d > 0) {
+      surface_.triangles.push_back({a, b, c});
+    } else {
+      surface_.triangles.push_back({a, c, b});
+    }
+  }
+  // A convex quadrilateral a b c d (in cyclic order), split along a-c.
+  void quad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, const Vec3& outward) {
+    triangle(a, b, c, outward);
+    triangle(a, c, d, outward);
+  }
+  // A convex polygon in cyclic order, fanned from its first vertex (whose two edges must
+  // carry no vertex other than their ends, so that no fan triangle is flat).
+  void fan(const std::vector<std::uint32_t>& polygon, const Vec3& outward) {
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) triangle(polygon[0], polygon[k], polygon[k + 1], outward);
+  }
+  ClosedSurface3 take() { return std::move(surface_); }
+
+ private:
+  ClosedSurface3 surface_;
+  std::map<std::tuple<double, double, double>, std::uint32_t> ids_;
+};
+
+}  // namespace
+
+ClosedSurface3 twisted_prism(const TwistedPrismOptions& o) {
+  if (o.sides < 3) throw InputError("twisted prism: needs at least 3 sides, got " + std::to_string(o.sides));
+  if (o.layers < 1) throw InputError("twisted prism: needs at least 1 layer, got " + std::to_string(o.layers));
+  if (!(o.radius > 0) || !(o.layer_height > 0))
+    throw InputError("twisted prism: radius and layer height must be positive");
+  const int n = o.sides;
+  const double twist = o.twist_degrees * std::numbers::pi / 180.0;
+  ClosedSurface3 s;
+  for (int layer = 0; layer <= o.layers; ++layer) {
+    for (int k = 0; k < n; ++k) {
+      const double phi = 2.0 * std::numbers::pi * k / n + layer * twist;
+      s.points.push_back({o.radius * std::cos(phi) + o.offset.x, o.radius * std::sin(phi) + o.offset.y,
+                          layer * o.layer_height + o.offset.z});
+    }
+  }
+  const auto vid = [n](int layer, int k) { return static_cast<std::uint32_t>(layer * n + (k % n)); };
+  for (int k = 1; k + 1 < n; ++k) s.triangles.push_back({vid(0, 0), vid(0, k + 1), vid(0, k)});
+  for (int k = 1; k + 1 < n; ++k) s.triangles.push_back({vid(o.layers, 0), vid(o.layers, k), vid(o.layers, k + 1)});
+  for (int layer = 0; layer < o.layers; ++layer) {
+    for (int k = 0; k < n; ++k) {
+      const std::uint32_t b0 = vid(layer, k), b1 = vid(layer, k + 1), t0 = vid(layer + 1, k), t1 = vid(layer + 1, k + 1);
+      if (o.diagonal == PrismDiagonal::ReflexDiagonal) {
+        s.triangles.push_back({b0, b1, t1});
+        s.triangles.push_back({b0, t1, t0});
+      } else {
+        s.triangles.push_back({b0, b1, t0});
+        s.triangles.push_back({b1, t1, t0});
+      }
+    }
+  }
+  return s;
+}
+
+ClosedSurface3 schonhardt_polyhedron(double twist_degrees) {
+  return twisted_prism({.sides = 3, .twist_degrees = twist_degrees});
+}
+
+ClosedSurface3 chazelle_polyhedron(int n, double gap) {
+  if (n < 1) throw InputError("Chazelle polyhedron: needs at least 1 notch, got " + std::to_string(n));
+  int exponent = 0;
+  if (!(gap > 0 && gap <= 1) || std::frexp(gap, &exponent) != 0.5)
+    throw InputError("Chazelle polyhedron: the gap must be a power of two in (0, 1]");
+  const double L = n + 1, H = 4, w = 0.25, zb = 2 - gap / 2, zt = 2 + gap / 2;
+  // The notched outline shared by the front/back faces (bottom notches, (x, z)) and by the
+  // left/right faces (top notches, (y, z)).
+  std::vector<std::array<double, 2>> bottom_chain{{0, 0}}, top_chain{{0, H}};
+  for (int i = 1; i <= n; ++i) {
+    bottom_chain.insert(bottom_chain.end(), {{i - w, 0}, {double(i), zb}, {i + w, 0}});
+    top_chain.insert(top_chain.end(), {{i - w, H}, {double(i), zt}, {i + w, H}});
+  }
+  bottom_chain.push_back({L, 0});
+  top_chain.push_back({L, H});
+
+  SurfaceBuilder b;
+  // Front (y = 0) and back (y = L): vertical strips between the bottom outline and the top edge.
+  for (const double y : {0.0, L}) {
+    const Vec3 out{0, y == 0 ? -1.0 : 1.0, 0};
+    for (std::size_t k = 0; k + 1 < bottom_chain.size(); ++k) {
+      const auto [x0, z0] = bottom_chain[k];
+      const auto [x1, z1] = bottom_chain[k + 1];
+      b.quad(b.id({x0, y, z0}), b.id({x1, y, z1}), b.id({x1, y, H}), b.id({x0, y, H}), out);
+    }
+  }
+  // Left (x = 0) and right (x = L): strips between the bottom edge and the top outline.
+  for (const double x : {0.0, L}) {
+    const Vec3 out{x == 0 ? -1.0 : 1.0, 0, 0};
+    for (std::size_t k = 0; k + 1 < top_chain.size(); ++k) {
+      const auto [y0, z0] = top_chain[k];
+      const auto [y1, z1] = top_chain[k + 1];
+      b.quad(b.id({x, y0, 0}), b.id({x, y1, 0}), b.id({x, y1, z1}), b.id({x, y0, z0}), out);
+    }
+  }
+  // Bottom (z = 0): strips x in [lo, hi] between the bottom notches; the outer two carry the
+  // left/right faces' vertices on their side edge, so each is fanned from a clean corner.
+  for (int s = 0; s <= n; ++s) {
+    const double lo = s == 0 ? 0 : s + w, hi = s == n ? L : s + 1 - w;
+    std::vector<std::uint32_t> ring{b.id({lo, 0, 0}), b.id({hi, 0, 0})};
+    if (s == n)
+      for (std::size_t k = 1; k + 1 < top_chain.size(); ++k) ring.push_back(b.id({hi, top_chain[k][0], 0}));
+    ring.push_back(b.id({hi, L, 0}));
+    ring.push_back(b.id({lo, L, 0}));
+    if (s == 0)
+      for (std::size_t k = top_chain.size() - 2; k >= 1; --k) ring.push_back(b.id({lo, top_chain[k][0], 0}));
+    // s == 0: start at (hi, 0); else at (lo, 0).
+    if (s == 0) std::rotate(ring.begin(), ring.begin() + 1, ring.end());
+    b.fan(ring, {0, 0, -1});
+  }
+  // Top (z = H): strips y in [lo, hi] between the top notches, the outer two carrying the
+  // front/back faces' vertices.
+  for (int s = 0; s <= n; ++s) {
+    const double lo = s == 0 ? 0 : s + w, hi = s == n ? L : s + 1 - w;
+    std::vector<std::uint32_t> ring{b.id({0, lo, H})};
+    if (s == 0)
+      for (std::size_t k = 1; k + 1 < bottom_chain.size(); ++k) ring.push_back(b.id({bottom_chain[k][0], lo, H}));
+    ring.push_back(b.id({L, lo, H}));
+    ring.push_back(b.id({L, hi, H}));
+    if (s == n)
+      for (std::size_t k = bottom_chain.size() - 2; k >= 1; --k) ring.push_back(b.id({bottom_chain[k][0], hi, H}));
+    ring.push_back(b.id({0, hi, H}));
+    // s == 0: start at (L, hi) (its edges are clean); else at (0, lo).
+    if (s == 0) std::rotate(ring.begin(), ring.end() - 2, ring.end());
+    b.fan(ring, {0, 0, 1});
+  }
+  // The wedges' slopes.
+  for (int i = 1; i <= n; ++i) {
+    b.quad(b.id({i - w, 0, 0}), b.id({double(i), 0, zb}), b.id({double(i), L, zb}), b.id({i - w, L, 0}), {zb, 0, -w});
+    b.quad(b.id({i + w, 0, 0}), b.id({double(i), 0, zb}), b.id({double(i), L, zb}), b.id({i + w, L, 0}), {-zb, 0, -w});
+    b.quad(b.id({0, i - w, H}), b.id({0, double(i), zt}), b.id({L, double(i), zt}), b.id({L, i - w, H}), {0, H - zt, w});
+    b.quad(b.id({0, i + w, H}), b.id({0, double(i), zt}), b.id({L, double(i), zt}), b.id({L, i + w, H}), {0, zt - H, w});
+  }
+  return b.take();
+}
+
+}  // namespace dtlab
