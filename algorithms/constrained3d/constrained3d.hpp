@@ -1,0 +1,115 @@
+// Constrained tetrahedralization of a piecewise linear complex (book §3.5-§3.7) and the empty
+// mesh of its regions (§5.2): the public entry point. One call, any registered method
+// (registry.hpp), one result for all.
+//
+//   dtlab::ConstrainedInput3 in{.points = pts, .triangles = tris};
+//   dtlab::Constrained3dResult r = dtlab::constrained3d(in, {.method = "conforming"});
+//   for (auto [a, b, c, d] : r.tetrahedra) ...      // positive, vertex ids into r.vertices
+//   for (auto [a, b, c] : r.triangles) ...           // the input faces' pieces, r.triangle_refs
+//
+// The input is checked first, exactly (check_plc, plc_checks.hpp): every failure is an
+// InputError naming its items; nothing is repaired.
+//
+// Steiner points and rounding (ROADMAP.md): every Steiner point is an exact point of an input
+// edge (a + t (b - a), t a double in (0, 1)) or of an input triangle (a + s (b - a) + t (c - a),
+// s, t doubles), correctly rounded to double (kernel/rounding.hpp); from then on the rounded
+// point is the truth. An input edge is then a chain of mesh edges through its Steiner points,
+// and an input triangle the union of mesh triangles on its vertices, which triangulate it in
+// its own (s, t) parameters exactly; each Steiner point lies within its rounding bound of the
+// exact point recorded in `steiner` (checked exactly: rounding_checks_failed stays 0).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kernel/stats.hpp"
+#include "kernel/vec.hpp"
+#include "mesh/tetrahedralization3.hpp"
+
+namespace dtlab {
+
+struct RegionSeed3 {
+  Vec3 point;
+  int attribute = 0;
+};
+
+struct ConstrainedInput3 {
+  std::span<const Vec3> points;
+  std::span<const std::array<std::uint32_t, 3>> triangles;  // indices into points
+  std::span<const int> triangle_refs;                        // empty, or one per triangle
+  std::span<const Vec3> holes;                               // each removes the region holding it
+  std::span<const RegionSeed3> regions;                      // each gives its region an attribute
+};
+
+struct Constrained3dOptions {
+  std::string method = "conforming";  // a name from constrained3d_methods()
+  bool keep_exterior = false;         // keep the tetrahedra outside every closed surface
+  // The most Steiner points a method may add, as a multiple of (points + triangles); past it
+  // constrained3d throws InputError naming the input triangle or edge being recovered.
+  std::uint32_t steiner_limit_factor = 200;
+};
+
+// Where a Steiner point comes from: exact = a + t (b - a) for an edge (support {a, b}, with
+// parameters {t, 0}), a + s (b - a) + t (c - a) for a triangle (support {a, b, c}, {s, t}).
+struct SteinerPoint3 {
+  enum class Kind : std::uint8_t { OnEdge, OnFace, Interior };
+  Kind kind = Kind::OnEdge;
+  std::uint32_t owner = 0;                   // the input triangle; for OnEdge, one triangle of the edge
+  std::array<std::uint32_t, 3> support{};    // input vertex ids (OnEdge: the third unused)
+  std::array<double, 2> parameters{};
+};
+
+struct SteinerCounts {
+  std::uint32_t on_edges = 0, on_faces = 0, interior = 0;
+  std::uint32_t total() const noexcept { return on_edges + on_faces + interior; }
+};
+
+struct Constrained3dPhaseTimes {
+  double checks = 0, delaunay = 0, edge_recovery = 0, face_recovery = 0, regions = 0, total = 0;  // seconds
+};
+
+struct Constrained3dResult {
+  // Input points in input order, then the Steiner points (steiner[i] is vertex
+  // input_point_count + i).
+  std::vector<Vec3> vertices;
+  std::uint32_t input_point_count = 0;
+  std::vector<SteinerPoint3> steiner;
+  SteinerCounts steiner_points;
+  // The pieces of the input triangles, each turned like its input triangle, with the input
+  // triangle's index and reference (0 when no references were given).
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::uint32_t> triangle_face;
+  std::vector<int> triangle_refs;
+  // The kept tetrahedra, positive, and each one's region: the attribute of a region seed when
+  // one lies in the region, else 1, 2, ... numbered by first appearance (0 for the exterior
+  // when kept).
+  std::vector<std::array<std::uint32_t, 4>> tetrahedra;
+  std::vector<int> tetrahedron_regions;
+  std::uint32_t region_count = 0;  // bounded regions kept
+  // The whole tetrahedralization of the convex hull (closed by ghosts), exterior included.
+  Tetrahedralization3 tetrahedralization;
+  // Steiner points not within their rounding bound of the exact point (must be 0).
+  std::uint32_t rounding_checks_failed = 0;
+  std::uint32_t rounds = 0;  // insertion rounds of the recovery
+  std::vector<std::string> messages;
+  PredicateStats predicate_stats;
+  Constrained3dPhaseTimes seconds;
+};
+
+// Throws InputError for an unknown method, a bad input (check_plc), a reference list of the
+// wrong length, a hole or region point out of range, or when the Steiner limit is reached
+// (naming the input triangle or edge); InternalError on a broken invariant.
+Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrained3dOptions& options = {});
+
+// The method names, in table order, with a line of description each.
+struct Constrained3dMethodInfo {
+  std::string_view name;
+  std::string_view description;
+};
+std::vector<Constrained3dMethodInfo> constrained3d_method_list();
+
+}  // namespace dtlab
