@@ -30,7 +30,7 @@
 #include "kernel/predicates.hpp"
 #include "kernel/rounding.hpp"
 #include "mesh/element_sets2.hpp"
-#include "verify/checks2d.hpp"
+#include "verify/checks_constrained2d.hpp"
 
 namespace dtlab {
 namespace {
@@ -50,103 +50,23 @@ std::set<std::pair<std::uint32_t, std::uint32_t>> constrained_set(const Constrai
   return out;
 }
 
-bool strictly_inside_box(const Vec2& a, const Vec2& b, const Vec2& p) {
-  const bool x = a.x == b.x ? p.x == a.x : (std::min(a.x, b.x) < p.x && p.x < std::max(a.x, b.x));
-  const bool y = a.y == b.y ? p.y == a.y : (std::min(a.y, b.y) < p.y && p.y < std::max(a.y, b.y));
-  return x && y;
-}
-
-// Vertex d may lie on the chain of segment ab: exactly on it, or (a Steiner point, whose chain
-// bends by rounding) within a few ulps of its line, between a and b.
-bool admissible(const Vec2& a, const Vec2& b, const Vec2& d, bool steiner) {
-  if (orient2d(a, b, d) == Sign::Zero) return strictly_inside_box(a, b, d);
-  if (!steiner) return false;
-  const Vec2 ab = b - a, ad = d - a;
-  const double length = norm(ab);
-  const double along = dot(ab, ad) / length;
-  const double off = std::fabs(cross(ab, ad)) / length;
-  const double scale = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y)});
-  return along > 0 && along < length && off <= 16 * ulp(scale);
-}
-
-// Is there a path a -> b of constrained edges, each step forward along ab, through admissible
-// vertices? Returns "" or what failed.
-using Adjacency = std::map<std::uint32_t, std::vector<std::uint32_t>>;
-std::string chain_problem(const Constrained2dResult& r, Adjacency& adj, std::uint32_t a, std::uint32_t b) {
-  const auto P = r.triangulation.points();
-  const Vec2 A = P[a], B = P[b];
-  std::vector<std::uint32_t> stack{a};
-  std::set<std::uint32_t> seen{a};
-  while (!stack.empty()) {
-    const std::uint32_t c = stack.back();
-    stack.pop_back();
-    for (const std::uint32_t d : adj[c]) {
-      if (seen.count(d)) continue;
-      if (dot(P[d] - P[c], B - A) <= 0) continue;
-      if (d == b) return "";
-      if (!admissible(A, B, P[d], d >= r.input_point_count)) continue;
-      seen.insert(d);
-      stack.push_back(d);
-    }
-  }
-  return "no chain of constrained edges from " + std::to_string(a) + " to " + std::to_string(b);
-}
-
-// The checks every result must pass; `exact_chains`: no crossings in the input, so chains run
-// through input vertices exactly on their segment only.
+// The checks every result must pass (verify/checks_constrained2d.hpp), and what the test knows
+// of the input: `exact_chains`, no crossings in it, so no crossing Steiner points.
 void expect_valid(const std::vector<Vec2>& points, const std::vector<Segment>& segments, const std::string& method,
-                  const Constrained2dResult& r, bool exact_chains) {
+                  const Constrained2dResult& r, bool exact_chains, std::span<const int> markers = {},
+                  bool keep_exterior = false) {
   SCOPED_TRACE("method " + method);
-  const Triangulation2& tri = r.triangulation;
   ASSERT_TRUE(r.degenerate_message.empty()) << r.degenerate_message;
-  ASSERT_NO_THROW(tri.check_topology());
-  const auto P = tri.points();
-  ASSERT_EQ(P.size(), points.size() + r.crossing_steiner_points + r.split_steiner_points);
-  for (std::size_t i = 0; i < points.size(); ++i) ASSERT_EQ(P[i], points[i]);
-  const std::vector<TriangleIds> all = tri.finite_triangles();
-  CheckReport2 report = check_orientation2(P, all);
-  report.merge(check_topology2(P, all));
-  report.merge(check_hull_coverage2(P, all));
+  const ConstrainedInput2 in{.points = points, .segments = segments, .segment_markers = markers, .holes = {}, .regions = {}};
+  const ConstrainedCheckReport2 report =
+      verify_constrained2d(in, r, {.method = method, .keep_exterior = keep_exterior, .first_number = 0});
   ASSERT_TRUE(report.ok) << to_text(report);
-  for (const auto& t : r.triangles) ASSERT_EQ(orient2d(P[t[0]], P[t[1]], P[t[2]]), Sign::Positive);
-  ASSERT_EQ(r.triangles.size(), r.triangle_region.size());
-  EXPECT_EQ(r.rounding_checks_failed, 0u);
+  EXPECT_EQ(report.segments, segments.size());
   if (exact_chains) {
     EXPECT_EQ(r.crossing_steiner_points, 0u);
   }
   if (method == "swap" || method == "cdt") {
     EXPECT_EQ(r.split_steiner_points, 0u);
-  }
-
-  // Every constrained edge is an edge, once.
-  const auto cons = constrained_set(r);
-  ASSERT_EQ(cons.size(), r.constrained_edges.size());
-  std::set<std::pair<std::uint32_t, std::uint32_t>> mesh_edges;
-  for (const auto& e : edges(tri)) mesh_edges.insert({e[0], e[1]});
-  for (const auto& e : cons) ASSERT_TRUE(mesh_edges.count(e)) << "constrained edge " << e.first << "-" << e.second << " missing";
-  // Chains.
-  Adjacency adj;
-  for (const ConstrainedEdge2& e : r.constrained_edges) adj[e.a].push_back(e.b), adj[e.b].push_back(e.a);
-  for (const Segment& s : segments) {
-    if (P[s[0]] == P[s[1]]) continue;
-    // Duplicate points: the first copy carries the chain.
-    std::uint32_t a = s[0], b = s[1];
-    a = static_cast<std::uint32_t>(std::find(P.begin(), P.end(), P[a]) - P.begin());
-    b = static_cast<std::uint32_t>(std::find(P.begin(), P.end(), P[b]) - P.begin());
-    const std::string problem = chain_problem(r, adj, a, b);
-    ASSERT_TRUE(problem.empty()) << problem;
-  }
-  // Method properties on the whole triangulation.
-  if (method == "swap") return;
-  const auto& V = tri.vertices();
-  for (std::uint32_t h = 0; h < V.size(); ++h) {
-    const std::uint32_t g = tri.twin(h);
-    if (h > g || tri.is_ghost(T2::triangle_of(h)) || tri.is_ghost(T2::triangle_of(g))) continue;
-    const std::uint32_t u = tri.origin(h), v = tri.destination(h);
-    if (method == "cdt" && cons.count({std::min(u, v), std::max(u, v)})) continue;
-    const std::uint32_t t = T2::triangle_of(h);
-    ASSERT_NE(incircle_perturbed(P[V[3 * t]], P[V[3 * t + 1]], P[V[3 * t + 2]], P[V[g]]), Sign::Positive)
-        << "edge " << u << "-" << v << " is not locally Delaunay";
   }
 }
 
@@ -172,21 +92,7 @@ const ConstrainedEdge2* find_edge(const Constrained2dResult& r, std::uint32_t a,
 }
 
 // Non-constrained edges between finite triangles that fail the perturbed empty-circle test.
-std::size_t non_delaunay_edges(const Constrained2dResult& r) {
-  const Triangulation2& tri = r.triangulation;
-  const auto P = tri.points();
-  const auto& V = tri.vertices();
-  const auto cons = constrained_set(r);
-  std::size_t count = 0;
-  for (std::uint32_t h = 0; h < V.size(); ++h) {
-    const std::uint32_t g = tri.twin(h), t = T2::triangle_of(h);
-    if (h > g || tri.is_ghost(t) || tri.is_ghost(T2::triangle_of(g))) continue;
-    const std::uint32_t u = tri.origin(h), v = tri.destination(h);
-    if (cons.count({std::min(u, v), std::max(u, v)})) continue;
-    count += incircle_perturbed(P[V[3 * t]], P[V[3 * t + 1]], P[V[3 * t + 2]], P[V[g]]) == Sign::Positive;
-  }
-  return count;
-}
+std::size_t non_delaunay_edges(const Constrained2dResult& r) { return check_locally_delaunay2(r, true).problem_count; }
 
 // --- bad and awkward input, one test each --------------------------------------------------------
 
@@ -227,8 +133,9 @@ TEST(Constrained2d, MarkerCountMustMatch) {
 TEST(Constrained2d, DuplicateSegmentsKeepOne) {
   for (const std::string& m : method_names()) {
     const std::vector<Segment> segs = {{0, 2}, {2, 0}, {1, 4}, {0, 2}};
-    const auto r = run(kSquare, segs, m, {7, 8, 9, 10});
-    expect_valid(kSquare, segs, m, r, false);
+    const std::vector<int> markers = {7, 8, 9, 10};
+    const auto r = run(kSquare, segs, m, markers);
+    expect_valid(kSquare, segs, m, r, false, markers);
     const ConstrainedEdge2* e = find_edge(r, 0, 2);
     if (m != "conforming") {
       ASSERT_NE(e, nullptr);
@@ -255,8 +162,9 @@ TEST(Constrained2d, CollinearOverlapsMergeLowestSegmentWins) {
   // Segment 0 = [0,2] on the x axis, segment 1 = [1,3] overlapping it on [1,2].
   const std::vector<Vec2> pts = {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {1.5, 1}, {1.5, -1}};
   for (const std::string& m : method_names()) {
-    const auto r = run(pts, {{0, 2}, {1, 3}}, m, {5, 7});
-    expect_valid(pts, {{0, 2}, {1, 3}}, m, r, true);
+    const std::vector<int> markers = {5, 7};
+    const auto r = run(pts, {{0, 2}, {1, 3}}, m, markers);
+    expect_valid(pts, {{0, 2}, {1, 3}}, m, r, true, markers);
     ASSERT_NE(find_edge(r, 0, 1), nullptr);
     ASSERT_NE(find_edge(r, 1, 2), nullptr);
     ASSERT_NE(find_edge(r, 2, 3), nullptr);
@@ -270,8 +178,9 @@ TEST(Constrained2d, CollinearOverlapsMergeLowestSegmentWins) {
 TEST(Constrained2d, CrossingAtARepresentablePoint) {
   const std::vector<Vec2> pts = {{0, 0}, {2, 2}, {0, 2}, {2, 0}};
   for (const std::string& m : method_names()) {
-    const auto r = run(pts, {{0, 1}, {2, 3}}, m, {1, 2});
-    expect_valid(pts, {{0, 1}, {2, 3}}, m, r, false);
+    const std::vector<int> markers = {1, 2};
+    const auto r = run(pts, {{0, 1}, {2, 3}}, m, markers);
+    expect_valid(pts, {{0, 1}, {2, 3}}, m, r, false, markers);
     ASSERT_EQ(r.crossing_steiner_points, 1u);
     EXPECT_EQ(r.triangulation.points()[4], (Vec2{1, 1}));
     EXPECT_EQ(find_edge(r, 0, 4)->marker, 1);
@@ -342,6 +251,127 @@ TEST(Constrained2d, KeepExteriorKeepsTheHull) {
   EXPECT_EQ(area2(inner), 6.0 * 6.0);
   const auto all = run(pts, segs, "cdt", {}, {}, {}, true);
   EXPECT_EQ(area2(all), 200.0);
+  expect_valid(pts, segs, "cdt", inner, true);
+  expect_valid(pts, segs, "cdt", all, true, {}, true);
+  // The kept exterior ends at hull edges that are not constrained: only valid when declared.
+  const ConstrainedInput2 in{.points = pts, .segments = segs, .segment_markers = {}, .holes = {}, .regions = {}};
+  EXPECT_FALSE(verify_constrained2d(in, all, {.method = "cdt", .keep_exterior = false}).ok);
+}
+
+// --- the checker rejects each kind of broken result ------------------------------------------------
+
+struct Broken {
+  std::vector<Vec2> points = {{0, 0}, {6, 0}, {6, 6}, {0, 6}, {1, 2}, {5, 4}, {2, 5}, {4, 0.5}, {3, 3.5}};
+  // 4-5 crosses 6-7 at (32/11, 65/22), not a double point.
+  std::vector<Segment> segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {6, 7}};
+  std::vector<int> markers = {1, 1, 2, 2, 3, 4};
+  ConstrainedInput2 input() const {
+    return {.points = points, .segments = segments, .segment_markers = markers, .holes = {}, .regions = {}};
+  }
+  Constrained2dResult result(const std::string& method) const { return run(points, segments, method, markers); }
+};
+
+std::string problems_of(const Broken& b, const Constrained2dResult& r, const std::string& method) {
+  const ConstrainedCheckReport2 report = verify_constrained2d(b.input(), r, {.method = method});
+  EXPECT_FALSE(report.ok);
+  EXPECT_EQ(report.problem_count, report.problems.size());
+  return to_text(report);
+}
+
+TEST(Constrained2dChecks, AcceptTheUnbrokenResults) {
+  const Broken b;
+  for (const std::string& m : method_names()) {
+    const auto r = b.result(m);
+    ASSERT_EQ(r.crossing_steiner_points, 1u);
+    const ConstrainedCheckReport2 report = verify_constrained2d(b.input(), r, {.method = m});
+    EXPECT_TRUE(report.ok) << to_text(report);
+    EXPECT_EQ(report.rounding_checks, 1u);
+    EXPECT_NE(to_json(report).find("\"ok\":true"), std::string::npos);
+  }
+}
+
+TEST(Constrained2dChecks, RejectAMissingConstrainedEdge) {
+  const Broken b;
+  auto r = b.result("cdt");
+  r.constrained_edges.erase(r.constrained_edges.begin());
+  // The domain's boundary lost a constrained edge (validity), and a segment its chain.
+  EXPECT_NE(problems_of(b, r, "cdt").find("is not a constrained edge"), std::string::npos);
+  const ConstrainedCheckReport2 chains = check_constrained_chains2(b.input(), r);
+  EXPECT_FALSE(chains.ok);
+  EXPECT_NE(to_text(chains).find("no chain of constrained edges"), std::string::npos) << to_text(chains);
+}
+
+TEST(Constrained2dChecks, RejectAWrongMarkerAndAnUnknownSegment) {
+  const Broken b;
+  auto r = b.result("swap");
+  r.constrained_edges[0].marker = 99;
+  EXPECT_NE(problems_of(b, r, "swap").find("has marker 99"), std::string::npos);
+  r = b.result("swap");
+  r.constrained_edges[0].segment = 17;
+  EXPECT_NE(problems_of(b, r, "swap").find("segment 17, which does not exist"), std::string::npos);
+}
+
+TEST(Constrained2dChecks, RejectAMovedSteinerPoint) {
+  // The crossing point moved by two ulps in x and y: still a valid triangulation, but off its
+  // rounding bound.
+  const Broken b;
+  auto r = b.result("cdt");
+  Vec2& x = r.triangulation.mutable_points().back();
+  const auto exact = line_intersection_exact(b.points[4], b.points[5], b.points[6], b.points[7]);
+  ASSERT_TRUE(exact && within_rounding_bound(*exact, x));
+  x.x = std::nextafter(x.x, 10.0);
+  x.y = std::nextafter(x.y, 10.0);
+  x.x = std::nextafter(x.x, 10.0);
+  x.y = std::nextafter(x.y, 10.0);
+  ASSERT_FALSE(within_rounding_bound(*exact, x));
+  const std::string text = problems_of(b, r, "cdt");
+  EXPECT_NE(text.find("is not within its rounding bound of their exact intersection"), std::string::npos) << text;
+  EXPECT_NE(text.find("is not within its rounding bound of the segment nor of the piece"), std::string::npos) << text;
+}
+
+TEST(Constrained2dChecks, RejectAClockwiseTriangleAndABadDomain) {
+  const Broken b;
+  auto r = b.result("cdt");
+  std::swap(r.triangulation.mutable_vertices()[r.triangulation.is_ghost(0) ? 4 : 1],
+            r.triangulation.mutable_vertices()[r.triangulation.is_ghost(0) ? 5 : 2]);
+  EXPECT_FALSE(verify_constrained2d(b.input(), r, {.method = "cdt"}).ok);
+  r = b.result("cdt");
+  r.triangles.push_back({0, 1, 8});  // no triangle of the mesh
+  r.triangle_region.push_back(0);
+  EXPECT_NE(problems_of(b, r, "cdt").find("not triangles of the triangulation"), std::string::npos);
+  r = b.result("cdt");
+  r.triangles.pop_back();  // a hole with unconstrained boundary
+  r.triangle_region.pop_back();
+  EXPECT_NE(problems_of(b, r, "cdt").find("is not a constrained edge"), std::string::npos);
+}
+
+TEST(Constrained2dChecks, RejectNonDelaunayEdgesByMethod) {
+  // swap leaves non-Delaunay edges: checked as cdt or conforming it fails; cdt's constrained
+  // edges are not Delaunay: checked as conforming it fails.
+  std::vector<Vec2> pts = {{0, 0}, {1, 1}};
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 300; ++i) pts.push_back({u(rng), u(rng)});
+  const std::vector<Segment> segs = {{0, 1}};
+  const ConstrainedInput2 in{.points = pts, .segments = segs, .segment_markers = {}, .holes = {}, .regions = {}};
+  const auto s = run(pts, segs, "swap", {}, {}, {}, true);
+  const auto c = run(pts, segs, "cdt", {}, {}, {}, true);
+  EXPECT_TRUE(verify_constrained2d(in, s, {.method = "swap", .keep_exterior = true}).ok);
+  const auto as_cdt = verify_constrained2d(in, s, {.method = "cdt", .keep_exterior = true});
+  EXPECT_FALSE(as_cdt.ok);
+  EXPECT_NE(to_text(as_cdt).find("not locally Delaunay"), std::string::npos);
+  EXPECT_FALSE(verify_constrained2d(in, c, {.method = "conforming", .keep_exterior = true}).ok);
+  EXPECT_TRUE(verify_constrained2d(in, c, {.method = "cdt", .keep_exterior = true}).ok);
+}
+
+TEST(Constrained2dChecks, NumbersProblemsFromTheGivenFirstNumber) {
+  const Broken b;
+  auto r = b.result("cdt");
+  r.constrained_edges[0].marker = 99;
+  const auto e = r.constrained_edges[0];
+  const std::string text = to_text(verify_constrained2d(b.input(), r, {.method = "cdt", .first_number = 1}));
+  EXPECT_NE(text.find("edge " + std::to_string(e.a + 1) + "-" + std::to_string(e.b + 1)), std::string::npos) << text;
+  EXPECT_NE(text.find("segment " + std::to_string(e.segment + 1) + " has"), std::string::npos) << text;
 }
 
 TEST(Constrained2d, CollinearInputHasNoTriangles) {
