@@ -47,5 +47,7 @@ inline thread_local PredicateStats tls_predicate_stats;
 // This thread's counters since it started (or since the last reset).
 inline const PredicateStats& predicate_stats() noexcept { return detail::tls_predicate_stats; }
 inline void reset_predicate_stats() noexcept { detail::tls_predicate_stats = {}; }
+// Adds counts made on other threads (a parallel algorithm's workers) to this thread's.
+inline void add_predicate_stats(const PredicateStats& counts) noexcept { detail::tls_predicate_stats += counts; }
 
 }  // namespace dtlab

@@ -1,13 +1,269 @@
-// Variant "parallel" of the 3D Delaunay tetrahedralization: being written (issue 5); until then it
-// refuses to run rather than return anything.
+// Variant "parallel": the Delaunay kernel (cavity_kernel.hpp) run by several threads at once, as
+// in Marot, Pellerin, Remacle, "One machine, one minute, three billion tetrahedra" (IJNME 2019).
+// Points go in by BRIO rounds, each in Hilbert order. Each round is cut into one slab of space per
+// thread (equal counts of the round's points); a thread inserts its slab's points and touches only
+// tetrahedra whose vertices all lie in its slab, and defers an insertion that would leave it. The
+// deferred points, which lie near the cuts, are tried again with slabs across the next axis (x,
+// then y, then z), so new cuts cross old ones instead of running along them; what still fails
+// goes in sequentially. The result is the unique perturbed Delaunay tetrahedralization, the same
+// as "incremental"'s; for a given thread count the run, and so the storage order, is
+// deterministic (during a sub-round no thread reads a word that another writes).
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <exception>
+#include <limits>
+#include <span>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "algorithms/delaunay3d/cavity_kernel.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
 #include "kernel/error.hpp"
+#include "kernel/stats.hpp"
+#include "mesh/tetrahedralization3.hpp"
 
 namespace dtlab {
 
-void delaunay3d_parallel(const PreparedPoints3& /*input*/, const Delaunay3dOptions& /*options*/,
-                            Tetrahedralization3& /*tetrahedralization*/) {
-  throw InternalError("3D Delaunay variant 'parallel' is not built yet");
+void delaunay3d_incremental(const PreparedPoints3& input, const Delaunay3dOptions& options,
+                            Tetrahedralization3& tetrahedralization);
+
+namespace {
+
+using T3 = Tetrahedralization3;
+constexpr std::uint32_t kNone = T3::kNone;
+constexpr std::uint32_t kDone = kNone;  // a pending point that went in
+
+// The axes of the successive sub-rounds of a round.
+constexpr std::array<double Vec3::*, 3> kAxes = {&Vec3::x, &Vec3::y, &Vec3::z};
+// Fewer pending points per thread than this, or a sub-round that inserts less than a quarter of
+// its points: the rest goes in sequentially.
+constexpr std::size_t kMinPointsPerThread = 8;
+// Points sampled for the slab cuts.
+constexpr std::size_t kQuantileSample = 16384;
+
+class ParallelInsertion {
+ public:
+  ParallelInsertion(const Vec3* points, std::vector<T3::Record>& records, unsigned threads)
+      : p_(points), records_(records), threads_(threads), shares_(threads), seeds_(threads) {
+    kernels_.reserve(threads);
+    for (unsigned k = 0; k < threads; ++k) kernels_.emplace_back(points, records);
+  }
+
+  void start(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    kernels_[0].start(a, b, c, d);
+    inserted_ = 4;
+  }
+
+  // Inserts the points of ranks [first, end), which are in Hilbert order.
+  void insert_run(std::uint32_t first, std::uint32_t end) {
+    pending_.resize(end - first);
+    for (std::uint32_t r = first; r < end; ++r) pending_[r - first] = r;
+    for (double Vec3::*axis : kAxes) {
+      const std::size_t before = pending_.size();
+      if (before < kMinPointsPerThread * threads_) break;
+      sub_round(axis);
+      std::erase(pending_, kDone);
+      inserted_ += before - pending_.size();
+      if (4 * (before - pending_.size()) < before) break;
+    }
+    CavityKernel& kernel = kernels_[0];
+    kernel.refresh_views();
+    kernel.lift_restriction();
+    for (const std::uint32_t p : pending_) DTLAB_ASSERT(kernel.insert(p));
+    inserted_ += pending_.size();
+    pending_.clear();
+  }
+
+  void finish() {
+    std::vector<std::uint32_t> dead;
+    for (CavityKernel& kernel : kernels_) kernel.release_slots(dead);
+    compact_tetrahedra(records_, dead);
+  }
+
+ private:
+  void sub_round(double Vec3::*axis) {
+    restart_dead_walks();
+    const std::vector<SlabOwnership> slabs = cut_into_slabs(axis);
+    for (auto& share : shares_) share.clear();
+    for (std::size_t i = 0; i < pending_.size(); ++i) {
+      unsigned k = 0;
+      while (k + 1 < threads_ && !slabs[k].owns(pending_[i])) ++k;
+      shares_[k].push_back(static_cast<std::uint32_t>(i));
+    }
+    hand_out_slots();
+    for (unsigned k = 0; k < threads_; ++k) {
+      kernels_[k].refresh_views();
+      kernels_[k].lift_restriction();
+      find_seed(k, slabs[k]);
+      kernels_[k].restrict_to(slabs[k]);
+    }
+
+    std::vector<PredicateStats> stats(threads_);
+    std::vector<std::exception_ptr> errors(threads_);
+    auto work = [&](unsigned k) {
+      try {
+        if (seeds_[k] == kNone) return;
+        CavityKernel& kernel = kernels_[k];
+        kernel.set_last(seeds_[k]);
+        // Each thread writes only its own entries of pending_.
+        for (const std::uint32_t i : shares_[k])
+          if (kernel.insert(pending_[i])) pending_[i] = kDone;
+      } catch (...) {
+        errors[k] = std::current_exception();
+      }
+    };
+    {
+      std::vector<std::jthread> workers;
+      workers.reserve(threads_ - 1);
+      for (unsigned k = 1; k < threads_; ++k)
+        workers.emplace_back([&work, &stats, k] {
+          work(k);
+          stats[k] = predicate_stats();  // a fresh thread's counts: all of them are this sub-round's
+        });
+      work(0);
+    }
+    for (unsigned k = 1; k < threads_; ++k) add_predicate_stats(stats[k]);
+    for (const std::exception_ptr& e : errors)
+      if (e) std::rethrow_exception(e);
+    restart_dead_walks();
+  }
+
+  // One slab per thread across `axis`, cut at quantiles of the pending points' coordinates (of
+  // an evenly spread sample of them: any cuts are correct, these only balance the work), the
+  // outer two open to infinity: every vertex lies in exactly one.
+  std::vector<SlabOwnership> cut_into_slabs(double Vec3::*axis) {
+    const std::size_t stride = std::max<std::size_t>(1, pending_.size() / kQuantileSample);
+    coordinates_.clear();
+    for (std::size_t i = 0; i < pending_.size(); i += stride) coordinates_.push_back(p_[pending_[i]].*axis);
+    std::vector<SlabOwnership> slabs(threads_, SlabOwnership{p_, axis, 0.0, 0.0});
+    slabs.front().lo = -std::numeric_limits<double>::infinity();
+    slabs.back().hi = std::numeric_limits<double>::infinity();
+    auto from = coordinates_.begin();
+    for (unsigned k = 1; k < threads_; ++k) {
+      const auto at = coordinates_.begin() + static_cast<std::ptrdiff_t>(k * coordinates_.size() / threads_);
+      std::nth_element(from, at, coordinates_.end());
+      slabs[k - 1].hi = slabs[k].lo = *at;
+      from = at;
+    }
+    return slabs;
+  }
+
+  // A kernel's last tetrahedron may have been deleted by another kernel since it was made:
+  // restart such a kernel from a live one. Invariant between sub-rounds: every kernel's last
+  // tetrahedron is alive, kernel 0's (the sequential one) always.
+  void restart_dead_walks() {
+    std::uint32_t alive = kNone;
+    for (const CavityKernel& kernel : kernels_)
+      if (records_[kernel.last()].vertex[0] != kNone) {
+        alive = kernel.last();
+        break;
+      }
+    DTLAB_ASSERT(alive != kNone);
+    for (CavityKernel& kernel : kernels_)
+      if (records_[kernel.last()].vertex[0] == kNone) kernel.set_last(alive);
+  }
+
+  // Each thread gets fresh slots for its share at the mesh's tetrahedra-per-point rate so far:
+  // a thread that runs out defers, so the estimate only needs to be close, and slots handed out
+  // but not used cost memory.
+  void hand_out_slots() {
+    std::size_t spare = 0;
+    for (const CavityKernel& kernel : kernels_) spare += kernel.spare_slots();
+    const double rate = static_cast<double>(records_.size() - spare) / static_cast<double>(inserted_);
+    std::vector<std::size_t> give(threads_, 0);
+    std::size_t total = 0;
+    for (unsigned k = 0; k < threads_; ++k) {
+      const auto need = static_cast<std::size_t>(rate * static_cast<double>(shares_[k].size())) + 64;
+      give[k] = need > kernels_[k].spare_slots() ? need - kernels_[k].spare_slots() : 0;
+      total += give[k];
+    }
+    std::size_t begin = records_.size();
+    if (begin + total > T3::kMaxTetrahedra)
+      throw InputError("the Delaunay tetrahedralization of these points needs more than " +
+                       std::to_string(T3::kMaxTetrahedra) + " tetrahedra (32-bit facet handles)");
+    if (begin + total > records_.capacity())
+      records_.reserve(std::max(begin + total, records_.capacity() + records_.capacity() / 4));
+    records_.resize(begin + total);
+    for (unsigned k = 0; k < threads_; ++k) {
+      if (give[k] == 0) continue;
+      kernels_[k].give_slots(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(begin + give[k]));
+      begin += give[k];
+    }
+  }
+
+  // A tetrahedron thread k owns to start from: the base of one of its points, found by walking
+  // (no thread runs). The candidates are its points 0, 1, 3, 7, 15, ...: the Hilbert curve may
+  // run along the slab's side for a while before it turns inwards. The points before the one
+  // found lie near the side and stay pending.
+  void find_seed(unsigned k, const SlabOwnership& slab) {
+    CavityKernel& kernel = kernels_[k];
+    std::vector<std::uint32_t>& share = shares_[k];
+    seeds_[k] = kNone;
+    for (std::size_t j = 0; j < share.size(); j = 2 * j + 1) {
+      const std::uint32_t base = kernel.locate(pending_[share[j]]);
+      kernel.set_last(base);
+      if (slab.owns_all(records_[base].vertex)) {
+        share.erase(share.begin(), share.begin() + static_cast<std::ptrdiff_t>(j));
+        seeds_[k] = base;
+        return;
+      }
+    }
+  }
+
+  const Vec3* p_;
+  std::vector<T3::Record>& records_;
+  unsigned threads_;
+  std::vector<CavityKernel> kernels_;
+  std::vector<std::uint32_t> pending_;                // insertion ranks, Hilbert order; kDone once in
+  std::vector<std::vector<std::uint32_t>> shares_;    // by thread: positions in pending_
+  std::vector<std::uint32_t> seeds_;                  // by thread: where its walk starts
+  std::vector<double> coordinates_;
+  std::size_t inserted_ = 0;
+};
+
+}  // namespace
+
+void delaunay3d_parallel(const PreparedPoints3& input, const Delaunay3dOptions& options,
+                         Tetrahedralization3& tetrahedralization) {
+  if (options.threads <= 1) {
+    delaunay3d_incremental(input, options, tetrahedralization);
+    return;
+  }
+  std::vector<Vec3>& points = tetrahedralization.mutable_points();
+  InsertionOrder order(input);
+  // The BRIO rounds, as runs of increasing Hilbert rank (the first simplex's swaps split some).
+  std::vector<std::uint32_t> run_ends;
+  {
+    std::vector<std::uint32_t> rank_by_id(points.size(), kNone);
+    for (std::size_t k = 0; k < input.distinct.size(); ++k) rank_by_id[input.distinct[k]] = static_cast<std::uint32_t>(k);
+    const auto ids = order.input_ids();
+    for (std::size_t r = 5; r < order.distinct_count(); ++r)
+      if (rank_by_id[ids[r]] < rank_by_id[ids[r - 1]]) run_ends.push_back(static_cast<std::uint32_t>(r));
+    run_ends.push_back(static_cast<std::uint32_t>(order.distinct_count()));
+  }
+  order.reorder(points);
+  const std::size_t m = order.distinct_count();
+
+  std::vector<T3::Record>& records = tetrahedralization.mutable_records();
+  tetrahedralization.clear_tetrahedra();
+  tetrahedralization.reserve_tetrahedra(std::min<std::size_t>(7 * m + m / 2 + 64, T3::kMaxTetrahedra));
+
+  const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(options.threads, m));
+  ParallelInsertion insertion(points.data(), records, threads);
+  if (order.first_simplex_positive()) {
+    insertion.start(0, 1, 2, 3);
+  } else {
+    insertion.start(0, 1, 3, 2);
+  }
+  std::uint32_t first = 4;
+  for (const std::uint32_t end : run_ends) {
+    insertion.insert_run(first, end);
+    first = end;
+  }
+  insertion.finish();
+  order.restore(points, records);
 }
 
 }  // namespace dtlab
