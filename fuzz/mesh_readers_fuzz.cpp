@@ -1,5 +1,6 @@
 // libFuzzer target: arbitrary bytes through every file reader: 2D (Medit .mesh, Triangle
-// .node/.ele/.poly, point files) and 3D (Medit .mesh, TetGen .node/.ele/.face). Each reader gets
+// .node/.ele/.poly, point files), 3D (Medit .mesh, TetGen .node/.ele/.face) and surfaces (OFF,
+// STL ASCII and binary, TetGen .poly/.smesh and their facet triangulation). Each reader gets
 // the same bytes, so one seed in any format serves them all and the others refuse it early. A
 // reader may only return or throw dtlab::Error (ParseError for bad input); any other exception
 // escapes and is reported as a crash. Whatever a reader accepts must survive a write/read round
@@ -14,9 +15,12 @@
 #include "kernel/predicates.hpp"
 #include "mesh/io/medit.hpp"
 #include "mesh/io/medit3.hpp"
+#include "mesh/io/off_format.hpp"
 #include "mesh/io/point_file.hpp"
 #include "mesh/io/poly_format.hpp"
+#include "mesh/io/stl_format.hpp"
 #include "mesh/io/tetgen_format.hpp"
+#include "mesh/io/tetgen_poly.hpp"
 #include "mesh/io/triangle_format.hpp"
 
 namespace {
@@ -46,6 +50,22 @@ bool same_bits(const std::vector<dtlab::Vec3>& a, const std::vector<dtlab::Vec3>
     }
   }
   return true;
+}
+
+// Every element's vertices in range and one reference per element: what a surface reader and
+// triangulate_plc_facets promise.
+bool well_formed_surface(const dtlab::MeshData3& mesh) {
+  const std::size_t n = mesh.vertices.size();
+  for (const auto& t : mesh.triangles) {
+    for (std::uint32_t v : t) {
+      if (v >= n) return false;
+    }
+  }
+  for (const auto& e : mesh.edges) {
+    if (e[0] >= n || e[1] >= n) return false;
+  }
+  return mesh.vertex_refs.size() == n && mesh.triangle_refs.size() == mesh.triangles.size() &&
+         mesh.edge_refs.size() == mesh.edges.size() && mesh.tetrahedra.empty();
 }
 
 bool all_positive(const dtlab::MeshData3& mesh) {
@@ -156,5 +176,50 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     require(back.triangles == f.triangles && back.markers == f.markers);
   });
   guarded(text, [](std::istream& in) { dtlab::point_file_dimension(in, "fuzz.pts"); });
+
+  // Surfaces. OFF and STL: whatever is read is a well-formed surface and comes back bit for bit;
+  // STL's vertices are merged and numbered by first use, so its write/read cycle is exact too.
+  guarded(text, [](std::istream& in) {
+    const dtlab::MeshData3 mesh = dtlab::read_off(in, "fuzz.off");
+    require(well_formed_surface(mesh));
+    std::stringstream again;
+    dtlab::write_off(again, mesh);
+    const dtlab::MeshData3 back = dtlab::read_off(again, "rewritten.off");
+    require(back == mesh && same_bits(mesh.vertices, back.vertices));
+  });
+  guarded(text, [&](std::istream& in) {
+    const dtlab::MeshData3 mesh = dtlab::read_stl(in, "fuzz.stl");
+    require(well_formed_surface(mesh));
+    const bool binary = dtlab::detect_stl_encoding(text) == dtlab::StlEncoding::Binary;
+    // ASCII coordinates need not be floats; binary ones always are, so both encodings apply.
+    for (const dtlab::StlEncoding e : {dtlab::StlEncoding::Ascii, dtlab::StlEncoding::Binary}) {
+      if (e == dtlab::StlEncoding::Binary && !binary) continue;
+      std::stringstream again;
+      dtlab::write_stl(again, mesh, e);
+      require(dtlab::detect_stl_encoding(again.str()) == e);
+      const dtlab::MeshData3 back = dtlab::read_stl(again, "rewritten.stl");
+      require(back.triangles == mesh.triangles && same_bits(mesh.vertices, back.vertices));
+    }
+  });
+
+  // TetGen PLCs: round trip of the whole Plc3, then the facet triangulation, which may refuse a
+  // polygon (InputError) but otherwise returns a well-formed surface with the PLC's vertices.
+  using ReadPlc = dtlab::Plc3 (*)(std::istream&, const std::string&, const dtlab::TetGenNodes*);
+  for (const ReadPlc read : {static_cast<ReadPlc>(dtlab::read_tetgen_poly), static_cast<ReadPlc>(dtlab::read_tetgen_smesh)}) {
+    const bool smesh = read == static_cast<ReadPlc>(dtlab::read_tetgen_smesh);
+    guarded(text, [&](std::istream& in) {
+      const dtlab::Plc3 plc = read(in, smesh ? "fuzz.smesh" : "fuzz.poly", nullptr);
+      std::stringstream again;
+      if (smesh) {
+        dtlab::write_tetgen_smesh(again, plc);
+      } else {
+        dtlab::write_tetgen_poly(again, plc);
+      }
+      const dtlab::Plc3 back = read(again, "rewritten", nullptr);
+      require(back == plc && same_bits(plc.vertices, back.vertices) && same_bits(plc.holes, back.holes));
+      const dtlab::MeshData3 surface = dtlab::triangulate_plc_facets(plc);
+      require(well_formed_surface(surface) && same_bits(surface.vertices, plc.vertices));
+    });
+  }
   return 0;
 }
