@@ -116,7 +116,7 @@ class AsciiStlReader {
 
   void read_solid(int solid) {
     const std::string solid_name = "solid " + std::to_string(solid);
-    for (std::uint64_t f = 0;; ++f) {
+    for (;;) {
       next(solid_name + " before its endsolid");
       if (iequals(in_.token(0), "endsolid")) return;
       const std::string what = "facet " + std::to_string(facet_count_);
