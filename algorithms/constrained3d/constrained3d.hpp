@@ -84,9 +84,9 @@ struct Constrained3dResult {
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::uint32_t> triangle_face;
   std::vector<int> triangle_refs;
-  // The kept tetrahedra, positive, and each one's region: the attribute of a region seed when
-  // one lies in the region, else 1, 2, ... numbered by first appearance (0 for the exterior
-  // when kept).
+  // The kept tetrahedra, positive, and each one's region: with region seeds, the attribute of
+  // the seed in it (0 where none); without, 1, 2, ... by first appearance; 0 for the exterior
+  // when kept.
   std::vector<std::array<std::uint32_t, 4>> tetrahedra;
   std::vector<int> tetrahedron_regions;
   std::uint32_t region_count = 0;  // bounded regions kept
@@ -104,6 +104,11 @@ struct Constrained3dResult {
 // wrong length, a hole or region point out of range, or when the Steiner limit is reached
 // (naming the input triangle or edge); InternalError on a broken invariant.
 Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrained3dOptions& options = {});
+
+// Whether `vertex` lies within its rounding bound (kernel/rounding.hpp, decided exactly) of the
+// exact point that Steiner record s stands for, on the input points.
+bool steiner_point_within_rounding_bound(std::span<const Vec3> input_points, const SteinerPoint3& s,
+                                         const Vec3& vertex);
 
 // The method names, in table order, with a line of description each.
 struct Constrained3dMethodInfo {

@@ -6,14 +6,22 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <cmath>
+#include <cstdio>
+#include <random>
 #include <set>
 
+#include "algorithms/constrained3d/constrained3d.hpp"
 #include "algorithms/constrained3d/exhaustive_tetrahedralization.hpp"
+#include "algorithms/constrained3d/insert_point.hpp"
+#include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "algorithms/constrained3d/plc_checks.hpp"
 #include "algorithms/constrained3d/schonhardt.hpp"
 #include "kernel/error.hpp"
 #include "kernel/exact_rational.hpp"
 #include "kernel/predicates.hpp"
+#include "kernel/rounding.hpp"
+#include "verify/checks3d.hpp"
 
 namespace dtlab {
 namespace {
@@ -120,6 +128,220 @@ TEST(Schonhardt, SearchRefusesWhenItWouldBeIncomplete) {
   // The untwisted square prism: a diagonal plane through four vertices cuts it.
   const auto s = twisted_prism({.sides = 4, .twist_degrees = 0});
   EXPECT_THROW(find_tetrahedralization_without_steiner(s.points, s.triangles), InputError);
+}
+
+
+// --- Delaunay insertion ---------------------------------------------------------------------
+
+TEST(DelaunayInserter, SameTetrahedraAsDelaunayOfAllPoints) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<int> coord(-20, 20);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Vec3> all;
+    std::set<std::tuple<int, int, int>> seen;
+    while (all.size() < 60) {
+      const int x = coord(rng), y = coord(rng), z = coord(rng);  // a lattice: many ties
+      if (seen.emplace(x, y, z).second) all.push_back({double(x), double(y), double(z)});
+    }
+    const std::vector<Vec3> first(all.begin(), all.begin() + 10);
+    Tetrahedralization3 t = delaunay3d(first).tetrahedralization;
+    DelaunayInserter inserter(t);
+    for (std::size_t i = 10; i < all.size(); ++i) EXPECT_EQ(inserter.insert(all[i]), i);
+    t.check_topology();
+    const Tetrahedralization3 ref = delaunay3d(all).tetrahedralization;
+    EXPECT_EQ(canonical_tetrahedron_set(t), canonical_tetrahedron_set(ref));
+    EXPECT_TRUE(verify_delaunay3d(all, t).ok);
+    EXPECT_THROW(inserter.insert(all[3]), InputError);
+  }
+}
+
+// --- Constrained tetrahedralization: exact checks of a result ---------------------------------
+
+Rational tet_volume6(std::span<const Vec3> p, const std::array<std::uint32_t, 4>& t) {
+  return tetrahedra_volume6(p, std::span<const std::array<std::uint32_t, 4>>(&t, 1));
+}
+
+// (s, t) of a vertex of input triangle f, from the result's own records.
+std::array<Rational, 2> parameters_in(const Constrained3dResult& r, std::span<const Ids3> triangles, std::uint32_t f,
+                                      std::uint32_t v) {
+  const Ids3& c = triangles[f];
+  static const std::array<std::array<int, 2>, 3> kCorner = {{{0, 0}, {1, 0}, {0, 1}}};
+  for (int k = 0; k < 3; ++k)
+    if (v == c[k]) return {Rational(kCorner[k][0]), Rational(kCorner[k][1])};
+  EXPECT_GE(v, r.input_point_count) << "an input vertex that is no corner of triangle " << f;
+  if (v < r.input_point_count) return {Rational(-1), Rational(-1)};
+  const SteinerPoint3& s = r.steiner[v - r.input_point_count];
+  if (s.kind == SteinerPoint3::Kind::OnFace) {
+    EXPECT_EQ(s.owner, f);
+    return {Rational(s.parameters[0]), Rational(s.parameters[1])};
+  }
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t a = c[k], b = c[(k + 1) % 3];
+    if (std::minmax(a, b) == std::minmax(s.support[0], s.support[1])) {
+      const Rational t = a == s.support[0] ? Rational(s.parameters[0]) : Rational(1) - Rational(s.parameters[0]);
+      const auto& p0 = kCorner[k];
+      const auto& p1 = kCorner[(k + 1) % 3];
+      return {Rational(p0[0]) + t * Rational(p1[0] - p0[0]), Rational(p0[1]) + t * Rational(p1[1] - p0[1])};
+    }
+  }
+  ADD_FAILURE() << "vertex " << v << " is on no edge of triangle " << f;
+  return {Rational(-1), Rational(-1)};
+}
+
+struct CheckedRun {
+  Constrained3dResult result;
+  std::map<int, Rational> region_volume6;
+};
+
+// Everything the issue asks of a result, exactly. `triangles` are the input's.
+CheckedRun run_and_check(const ClosedSurface3& s, const std::string& method = "conforming",
+                         std::span<const int> refs = {}) {
+  CheckedRun out;
+  Constrained3dResult& r = out.result;
+  r = constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = refs, .holes = {}, .regions = {}},
+                    {.method = method});
+  const auto& v = r.vertices;
+  EXPECT_EQ(r.input_point_count, s.points.size());
+  EXPECT_TRUE(std::equal(s.points.begin(), s.points.end(), v.begin()));
+  EXPECT_EQ(r.steiner.size(), v.size() - s.points.size());
+  EXPECT_EQ(r.steiner_points.total(), r.steiner.size());
+  EXPECT_EQ(r.rounding_checks_failed, 0u);
+  for (std::size_t i = 0; i < r.steiner.size(); ++i)
+    EXPECT_TRUE(steiner_point_within_rounding_bound(s.points, r.steiner[i], v[s.points.size() + i])) << i;
+  // A valid mesh: closed, positive; "conforming" is moreover Delaunay.
+  const CheckReport3 check = method == "conforming" ? verify_delaunay3d(v, r.tetrahedralization) : check_topology3(r.tetrahedralization);
+  EXPECT_TRUE(check.ok) << to_text(check);
+  for (const auto& t : r.tetrahedra) EXPECT_EQ(orient3d(v[t[0]], v[t[1]], v[t[2]], v[t[3]]), Sign::Positive);
+  // Every input triangle is the union of its pieces: mesh faces, positive in its (s, t), whose
+  // doubled areas add up to 1 exactly.
+  std::set<Ids3> mesh_faces;
+  for (std::uint32_t t = 0; t < r.tetrahedralization.tetrahedron_count(); ++t)
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      auto f = r.tetrahedralization.facet_vertices(4 * t + i);
+      std::sort(f.begin(), f.end());
+      mesh_faces.insert(f);
+    }
+  std::vector<Rational> area(s.triangles.size());
+  for (std::size_t k = 0; k < r.triangles.size(); ++k) {
+    const std::uint32_t f = r.triangle_face[k];
+    auto sorted = r.triangles[k];
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_TRUE(mesh_faces.count(sorted)) << "piece " << k << " of triangle " << f << " is no mesh face";
+    const auto a = parameters_in(r, s.triangles, f, r.triangles[k][0]);
+    const auto b = parameters_in(r, s.triangles, f, r.triangles[k][1]);
+    const auto c = parameters_in(r, s.triangles, f, r.triangles[k][2]);
+    const Rational doubled = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    EXPECT_EQ(doubled.sign(), Sign::Positive);
+    area[f] += doubled;
+  }
+  for (std::size_t f = 0; f < s.triangles.size(); ++f) EXPECT_EQ(area[f], Rational(1)) << "triangle " << f;
+  // Volumes: the tetrahedra of the regions fill exactly what the split surface encloses; that
+  // equals the input's volume exactly when no Steiner point was rounded, else within the
+  // rounding bound of the points on the surface.
+  Rational meshed;
+  for (std::size_t k = 0; k < r.tetrahedra.size(); ++k) {
+    const Rational v6 = tet_volume6(v, r.tetrahedra[k]);
+    meshed += v6;
+    out.region_volume6[r.tetrahedron_regions[k]] += v6;
+  }
+  std::vector<Ids3> outer;  // the pieces of triangles on the boundary of the domain (not internal)
+  std::map<Ids3, int> count;
+  for (const auto& t : s.triangles) {
+    auto k = t;
+    std::sort(k.begin(), k.end());
+  }
+  const Rational split_surface = exact_volume6(v, r.triangles);
+  const Rational input_surface = exact_volume6(s.points, s.triangles);
+  bool all_exact = true;
+  double bound = 0;
+  for (std::size_t i = 0; i < r.steiner.size(); ++i) {
+    const Vec3& x = v[s.points.size() + i];
+    const auto& sp = r.steiner[i];
+    const ExactPoint3 e = sp.kind == SteinerPoint3::Kind::OnEdge
+                              ? point_on_segment_exact(s.points[sp.support[0]], s.points[sp.support[1]], Rational(sp.parameters[0]))
+                              : ExactPoint3{};
+    if (sp.kind != SteinerPoint3::Kind::OnEdge || !(to_exact(x) == e)) all_exact = false;
+    // 6 x (volume swept by moving x by its rounding error) <= 6 |error| x (area of its star).
+    double star = 0;
+    for (const auto& t : r.triangles)
+      if (t[0] == s.points.size() + i || t[1] == s.points.size() + i || t[2] == s.points.size() + i) {
+        const Vec3 &a = v[t[0]], &b = v[t[1]], &c = v[t[2]];
+        const Vec3 u{b.x - a.x, b.y - a.y, b.z - a.z}, w{c.x - a.x, c.y - a.y, c.z - a.z};
+        star += 0.5 * std::hypot(u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x);
+      }
+    bound += 6 * 2 * std::hypot(rounding_bound(x.x), rounding_bound(x.y), rounding_bound(x.z)) * star;
+  }
+  (void)outer;
+  (void)count;
+  if (refs.empty()) {  // one closed surface, no internal faces
+    EXPECT_EQ(meshed, split_surface);
+    if (all_exact) {
+      EXPECT_EQ(meshed, input_surface);
+    } else {
+      const double diff = std::fabs(round_to_double(meshed - input_surface));
+      EXPECT_LE(diff, bound) << "meshed volume off the input's by more than the rounding bound";
+    }
+  }
+  return out;
+}
+
+ClosedSurface3 cube(double lo = 0, double hi = 1, Vec3 offset = {0, 0, 0}) {
+  ClosedSurface3 s;
+  for (int i = 0; i < 8; ++i)
+    s.points.push_back({(i & 1 ? hi : lo) + offset.x, (i & 2 ? hi : lo) + offset.y, (i & 4 ? hi : lo) + offset.z});
+  // Outward: faces x = lo (0 2 6 4), x = hi (1 5 7 3), y = lo (0 4 5 1), y = hi (2 3 7 6),
+  // z = lo (0 1 3 2), z = hi (4 6 7 5).
+  const int quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (const auto& q : quads) {
+    s.triangles.push_back({std::uint32_t(q[0]), std::uint32_t(q[1]), std::uint32_t(q[2])});
+    s.triangles.push_back({std::uint32_t(q[0]), std::uint32_t(q[2]), std::uint32_t(q[3])});
+  }
+  return s;
+}
+
+TEST(Constrained3d, Cube) {
+  const auto s = cube();
+  ASSERT_EQ(exact_volume6(s.points, s.triangles), Rational(6));
+  const auto run = run_and_check(s);
+  EXPECT_EQ(run.result.region_count, 1u);
+  EXPECT_EQ(run.region_volume6.at(1), Rational(6));
+}
+
+TEST(Constrained3d, BoxFarFromTheOrigin) {
+  const auto s = cube(0, 1, {1e6, 1e6 + 0.5, -1e6});
+  const auto run = run_and_check(s);
+  EXPECT_EQ(run.region_volume6.at(1), Rational(6));
+}
+
+TEST(Constrained3d, Schonhardt) {
+  for (const double twist : {5.0, 30.0, 55.0}) {
+    const auto s = schonhardt_polyhedron(twist);
+    const auto run = run_and_check(s);
+    const auto& c = run.result.steiner_points;
+    std::printf("Schonhardt %g deg: Steiner on edges %u, on faces %u, interior %u; %zu tetrahedra\n", twist,
+                c.on_edges, c.on_faces, c.interior, run.result.tetrahedra.size());
+    EXPECT_GT(c.total(), 0u);  // it has no tetrahedralization without (exhaustive test above)
+    EXPECT_EQ(run.result.region_count, 1u);
+  }
+}
+
+TEST(Constrained3d, TwistedPrismsAndStacks) {
+  for (const int n : {3, 4, 6})
+    for (const int layers : {1, 3}) {
+      const auto s = twisted_prism({.sides = n, .twist_degrees = 120.0 / n, .layers = layers});
+      const auto run = run_and_check(s);
+      std::printf("twisted %d-gon prism, %d layers: Steiner on edges %u, on faces %u\n", n, layers,
+                  run.result.steiner_points.on_edges, run.result.steiner_points.on_faces);
+    }
+}
+
+TEST(Constrained3d, Chazelle) {
+  for (const int n : {1, 2, 3, 4}) {
+    const auto s = chazelle_polyhedron(n);
+    const auto run = run_and_check(s);
+    std::printf("Chazelle n = %d: %zu vertices, Steiner on edges %u, on faces %u (n^2 = %d)\n", n, s.points.size(),
+                run.result.steiner_points.on_edges, run.result.steiner_points.on_faces, n * n);
+  }
 }
 
 }  // namespace

@@ -1,0 +1,161 @@
+// The constrained3d entry point (constrained3d.hpp): exact input checks, the Delaunay
+// tetrahedralization of the input points, the chosen method's recovery (registry.hpp), the
+// regions (§5.2), and the result arrays.
+#include "algorithms/constrained3d/constrained3d.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <string>
+
+#include "algorithms/constrained3d/context.hpp"
+#include "algorithms/constrained3d/plc_checks.hpp"
+#include "algorithms/constrained3d/regions.hpp"
+#include "algorithms/constrained3d/registry.hpp"
+#include "algorithms/delaunay3d/delaunay3d.hpp"
+#include "kernel/coordinate_range.hpp"
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using T3 = Tetrahedralization3;
+
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// The input edges (each once, a < b) and triangles with their edges.
+void build_constraints(const ConstrainedInput3& input, Constrained3dContext& c) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edge_ids;
+  for (std::uint32_t f = 0; f < input.triangles.size(); ++f) {
+    ConstraintFacet3 facet;
+    facet.corners = input.triangles[f];
+    facet.ref = input.triangle_refs.empty() ? 0 : input.triangle_refs[f];
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t u = facet.corners[k], v = facet.corners[(k + 1) % 3];
+      const std::pair<std::uint32_t, std::uint32_t> key = std::minmax(u, v);
+      auto [it, inserted] = edge_ids.emplace(key, static_cast<std::uint32_t>(c.edges.size()));
+      if (inserted) {
+        ConstraintEdge3 edge;
+        edge.a = key.first, edge.b = key.second, edge.face = f;
+        edge.chain = {key.first, key.second};
+        edge.t = {0.0, 1.0};
+        c.edges.push_back(std::move(edge));
+      }
+      facet.edges[k] = it->second;
+      facet.reversed[k] = u != key.first;
+    }
+    c.facets.push_back(std::move(facet));
+  }
+}
+
+}  // namespace
+
+std::vector<Constrained3dMethodInfo> constrained3d_method_list() {
+  std::vector<Constrained3dMethodInfo> list;
+  for (const auto& m : constrained3d_methods()) list.push_back({m.name, m.description});
+  return list;
+}
+
+Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrained3dOptions& options) {
+  const auto start = Clock::now();
+  const PredicateStats stats_before = predicate_stats();
+  const Constrained3dMethod* method = find_constrained3d_method(options.method);
+  if (method == nullptr) {
+    std::string known;
+    for (const auto& m : constrained3d_methods()) known += (known.empty() ? "" : ", ") + std::string(m.name);
+    throw InputError("constrained3d: unknown method '" + options.method + "' (known: " + known + ")");
+  }
+  if (!input.triangle_refs.empty() && input.triangle_refs.size() != input.triangles.size())
+    throw InputError("constrained3d: " + std::to_string(input.triangle_refs.size()) + " triangle references for " +
+                     std::to_string(input.triangles.size()) + " triangles");
+  if (input.points.size() >= T3::kMaxPoints) throw InputError("constrained3d: too many points");
+  check_coordinates(input.points, "point");
+  check_coordinates(input.holes, "hole point");
+  for (std::size_t i = 0; i < input.regions.size(); ++i)
+    check_coordinates(std::span<const Vec3>(&input.regions[i].point, 1), "region point " + std::to_string(i + 1));
+  if (input.triangles.empty()) throw InputError("constrained3d: no triangles");
+  check_plc(input.points, input.triangles);
+
+  Constrained3dResult r;
+  r.seconds.checks = since(start);
+  auto phase = Clock::now();
+  Constrained3dContext c;
+  {
+    Delaunay3dResult d = delaunay3d(input.points);
+    if (!d.degenerate_message.empty()) throw InputError("constrained3d: " + d.degenerate_message);
+    c.mesh = std::move(d.tetrahedralization);
+  }
+  r.seconds.delaunay = since(phase);
+  c.input_point_count = static_cast<std::uint32_t>(input.points.size());
+  const std::uint64_t limit = std::uint64_t{options.steiner_limit_factor} * (input.points.size() + input.triangles.size());
+  c.steiner_limit = static_cast<std::uint32_t>(std::min<std::uint64_t>(limit, T3::kMaxPoints - input.points.size()));
+  build_constraints(input, c);
+
+  method->run(c);
+  r.seconds.edge_recovery = c.edge_seconds;
+  r.seconds.face_recovery = c.face_seconds;
+
+  phase = Clock::now();
+  std::vector<std::array<std::uint32_t, 3>> walls;
+  for (std::uint32_t f = 0; f < c.facets.size(); ++f)
+    for (const auto& p : c.facets[f].pieces) {
+      walls.push_back(p);
+      r.triangles.push_back(p);
+      r.triangle_face.push_back(f);
+      r.triangle_refs.push_back(c.facets[f].ref);
+    }
+  const TetrahedronComponents comp = tetrahedron_components(c.mesh, walls);
+  std::vector<bool> removed(comp.count, false);
+  if (!options.keep_exterior && comp.exterior != T3::kNone) removed[comp.exterior] = true;
+  for (std::size_t h = 0; h < input.holes.size(); ++h) {
+    const std::uint32_t t = tetrahedron_containing(c.mesh, input.holes[h]);
+    if (t == T3::kNone) {
+      r.messages.push_back("hole point " + std::to_string(h + 1) + " is outside the mesh: ignored");
+    } else {
+      removed[comp.component[t]] = true;
+    }
+  }
+  std::vector<int> attribute(comp.count, 0);
+  std::vector<bool> seeded(comp.count, false);
+  for (std::size_t i = 0; i < input.regions.size(); ++i) {
+    const std::uint32_t t = tetrahedron_containing(c.mesh, input.regions[i].point);
+    if (t == T3::kNone) {
+      r.messages.push_back("region point " + std::to_string(i + 1) + " is outside the mesh: ignored");
+      continue;
+    }
+    attribute[comp.component[t]] = input.regions[i].attribute;
+    seeded[comp.component[t]] = true;
+  }
+  std::vector<int> number(comp.count, -1);
+  int next = 1;
+  for (std::uint32_t t = 0; t < c.mesh.tetrahedron_count(); ++t) {
+    const std::uint32_t k = comp.component[t];
+    if (c.mesh.is_ghost(t) || removed[k]) continue;
+    if (number[k] < 0) {
+      number[k] = k == comp.exterior ? 0 : (input.regions.empty() ? next++ : (seeded[k] ? attribute[k] : 0));
+      if (k != comp.exterior) ++r.region_count;
+    }
+    r.tetrahedra.push_back(c.mesh.records()[t].vertex);
+    r.tetrahedron_regions.push_back(number[k]);
+  }
+  r.seconds.regions = since(phase);
+
+  r.vertices.assign(c.mesh.points().begin(), c.mesh.points().end());
+  r.input_point_count = c.input_point_count;
+  r.steiner = std::move(c.steiner);
+  for (const auto& s : r.steiner) {
+    if (s.kind == SteinerPoint3::Kind::OnEdge) ++r.steiner_points.on_edges;
+    if (s.kind == SteinerPoint3::Kind::OnFace) ++r.steiner_points.on_faces;
+    if (s.kind == SteinerPoint3::Kind::Interior) ++r.steiner_points.interior;
+  }
+  r.rounding_checks_failed = c.rounding_checks_failed;
+  r.rounds = c.rounds;
+  r.tetrahedralization = std::move(c.mesh);
+  r.predicate_stats = predicate_stats() - stats_before;
+  r.seconds.total = since(start);
+  return r;
+}
+
+}  // namespace dtlab

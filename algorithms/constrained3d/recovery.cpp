@@ -1,0 +1,318 @@
+// Shared steps of boundary recovery (recovery.hpp; book §3.5.3, Ruppert 1995 and Shewchuk 2000
+// for the split rules).
+#include "algorithms/constrained3d/recovery.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <queue>
+#include <set>
+#include <string>
+
+#include "kernel/coordinate_range.hpp"
+#include "kernel/error.hpp"
+#include "kernel/rounding.hpp"
+
+namespace dtlab {
+
+namespace {
+
+using T3 = Tetrahedralization3;
+using St = std::array<Rational, 2>;
+
+Rational orient_st(const St& p, const St& q, const St& r) {
+  return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+}
+
+// In-circle in (s, t), for p, q, r counter-clockwise: positive iff x is inside.
+Sign incircle_st(const St& p, const St& q, const St& r, const St& x) {
+  const Rational ax = p[0] - x[0], ay = p[1] - x[1], bx = q[0] - x[0], by = q[1] - x[1], cx = r[0] - x[0],
+                 cy = r[1] - x[1];
+  const Rational a2 = ax * ax + ay * ay, b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  return (ax * (by * c2 - b2 * cy) - ay * (bx * c2 - b2 * cx) + a2 * (bx * cy - by * cx)).sign();
+}
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return a - b; }
+
+// Circumcentre of a triangle in space, in doubles (a placement, not a decision).
+Vec3 triangle_circumcenter(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = sub(b, a), ac = sub(c, a), n = cross(ab, ac);
+  const double d = 2 * dot(n, n);
+  const Vec3 u = cross(n, ab), v = cross(ac, n);
+  const double ac2 = dot(ac, ac), ab2 = dot(ab, ab);
+  return {a.x + (ac2 * u.x + ab2 * v.x) / d, a.y + (ac2 * u.y + ab2 * v.y) / d, a.z + (ac2 * u.z + ab2 * v.z) / d};
+}
+
+double circumradius2(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 o = triangle_circumcenter(a, b, c), d = sub(a, o);
+  return dot(d, d);
+}
+
+std::uint64_t coordinate_hash(const Vec3& p) {
+  std::uint64_t h = 0;
+  for (const double x : {p.x, p.y, p.z}) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
+  }
+  return h;
+}
+
+ExactPoint3 exact_facet_point(std::span<const Vec3> p, const std::array<std::uint32_t, 3>& corners, double s,
+                              double t) {
+  const ExactPoint3 A = to_exact(p[corners[0]]), B = to_exact(p[corners[1]]), C = to_exact(p[corners[2]]);
+  const Rational S(s), T(t);
+  return {A.x + S * (B.x - A.x) + T * (C.x - A.x), A.y + S * (B.y - A.y) + T * (C.y - A.y),
+          A.z + S * (B.z - A.z) + T * (C.z - A.z)};
+}
+
+}  // namespace
+
+bool steiner_point_within_rounding_bound(std::span<const Vec3> input_points, const SteinerPoint3& s,
+                                         const Vec3& vertex) {
+  const ExactPoint3 exact =
+      s.kind == SteinerPoint3::Kind::OnEdge
+          ? point_on_segment_exact(input_points[s.support[0]], input_points[s.support[1]], Rational(s.parameters[0]))
+          : exact_facet_point(input_points, s.support, s.parameters[0], s.parameters[1]);
+  return within_rounding_bound(exact, vertex);
+}
+
+MeshIndex::MeshIndex(const Tetrahedralization3& mesh) {
+  ring_.reserve(mesh.tetrahedron_count() * 2);
+  static constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  for (const auto& r : mesh.records())
+    for (const auto& e : kEdges) {
+      auto& ring = ring_[key(r.vertex[e[0]], r.vertex[e[1]])];
+      for (const int k : {e[2], e[3]})
+        if (std::find(ring.begin(), ring.end(), r.vertex[k]) == ring.end()) ring.push_back(r.vertex[k]);
+    }
+}
+
+const std::vector<std::uint32_t>& MeshIndex::ring(std::uint32_t u, std::uint32_t v) const {
+  static const std::vector<std::uint32_t> kEmpty;
+  const auto it = ring_.find(key(u, v));
+  return it == ring_.end() ? kEmpty : it->second;
+}
+
+double edge_split_parameter(const Constrained3dContext& c, std::uint32_t e, std::size_t i) {
+  const ConstraintEdge3& edge = c.edges[e];
+  const double t0 = edge.t[i], t1 = edge.t[i + 1];
+  const bool from_a = i == 0, from_b = i + 2 == edge.chain.size();
+  double t = t0 + (t1 - t0) / 2;
+  if (from_a != from_b) {
+    const auto p = c.mesh.points();
+    const Vec3 d = sub(p[edge.b], p[edge.a]);
+    const double length = std::sqrt(dot(d, d));
+    const double piece = (t1 - t0) * length;
+    // The power of two in [piece / 3, 2 piece / 3].
+    const double shell = std::exp2(std::ceil(std::log2(piece / 3)));
+    const double shell_t = from_a ? shell / length : 1 - shell / length;
+    if (shell_t > t0 && shell_t < t1) t = shell_t;
+  }
+  if (!(t > t0 && t < t1))
+    throw InputError("constrained3d: the edge between vertices " + std::to_string(edge.a + 1) + " and " +
+                         std::to_string(edge.b + 1) + " (of triangle " + std::to_string(edge.face + 1) +
+                         ") cannot be split further in doubles",
+                     {edge.face});
+  return t;
+}
+
+FacetParameters facet_parameters(const Constrained3dContext& c, std::uint32_t f) {
+  const ConstraintFacet3& facet = c.facets[f];
+  static const std::array<std::array<int, 2>, 3> kCorner = {{{0, 0}, {1, 0}, {0, 1}}};
+  FacetParameters st;
+  for (int k = 0; k < 3; ++k) {
+    const ConstraintEdge3& edge = c.edges[facet.edges[k]];
+    const auto& p0 = kCorner[k];
+    const auto& p1 = kCorner[(k + 1) % 3];
+    for (std::size_t j = 0; j < edge.chain.size(); ++j) {
+      const Rational t = facet.reversed[k] ? Rational(1) - Rational(edge.t[j]) : Rational(edge.t[j]);
+      st.emplace(edge.chain[j], St{Rational(p0[0]) + t * Rational(p1[0] - p0[0]), Rational(p0[1]) + t * Rational(p1[1] - p0[1])});
+    }
+  }
+  for (std::size_t j = 0; j < facet.interior.size(); ++j)
+    st.emplace(facet.interior[j], St{Rational(facet.interior_st[j][0]), Rational(facet.interior_st[j][1])});
+  return st;
+}
+
+std::vector<std::array<std::uint32_t, 2>> facet_boundary(const Constrained3dContext& c, std::uint32_t f) {
+  const ConstraintFacet3& facet = c.facets[f];
+  std::vector<std::array<std::uint32_t, 2>> pieces;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<std::uint32_t> chain = c.edges[facet.edges[k]].chain;
+    if (facet.reversed[k]) std::reverse(chain.begin(), chain.end());
+    for (std::size_t j = 0; j + 1 < chain.size(); ++j) pieces.push_back({chain[j], chain[j + 1]});
+  }
+  return pieces;
+}
+
+bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& index,
+                 std::vector<std::array<std::uint32_t, 2>>& missing) {
+  const FacetParameters st = facet_parameters(c, f);
+  const auto boundary = facet_boundary(c, f);
+  std::set<std::array<std::uint32_t, 2>> covered;                            // directed pieces with their face
+  std::set<std::array<std::uint32_t, 2>> outer(boundary.begin(), boundary.end());
+  std::queue<std::array<std::uint32_t, 2>> open;
+  for (const auto& b : boundary) open.push(b);
+  std::vector<std::array<std::uint32_t, 3>> pieces;
+  const std::size_t missing_before = missing.size();
+  std::size_t steps = 0;
+  while (!open.empty()) {
+    const auto [u, v] = open.front();
+    open.pop();
+    if (covered.count({u, v})) continue;
+    if (++steps > 4 * st.size() * st.size() + 16) throw InternalError("constrained3d: facet cover did not end");
+    const St &pu = st.at(u), &pv = st.at(v);
+    std::uint32_t best = T3::kNone;
+    for (const std::uint32_t w : index.ring(u, v)) {
+      const auto it = st.find(w);
+      if (it == st.end() || orient_st(pu, pv, it->second).sign() != Sign::Positive) continue;
+      if (best == T3::kNone || incircle_st(pu, pv, st.at(best), it->second) == Sign::Positive) best = w;
+    }
+    if (best == T3::kNone) {
+      missing.push_back({u, v});
+      continue;
+    }
+    const std::uint32_t w = best;
+    if (covered.count({v, w}) || covered.count({w, u})) {  // overlaps a face taken before
+      missing.push_back({u, v});
+      continue;
+    }
+    covered.insert({u, v});
+    covered.insert({v, w});
+    covered.insert({w, u});
+    pieces.push_back({u, v, w});
+    if (!outer.count({v, w})) open.push({w, v});
+    if (!outer.count({w, u})) open.push({u, w});
+  }
+  if (missing.size() != missing_before) return false;
+  // Every piece positive in (s, t), each directed side used once: the pieces cover the triangle
+  // with degree 1 exactly when their doubled areas add up to the triangle's, 1.
+  Rational area;
+  for (const auto& p : pieces) area += orient_st(st.at(p[0]), st.at(p[1]), st.at(p[2]));
+  if (area != Rational(1)) {
+    missing.push_back(boundary.front());
+    return false;
+  }
+  c.facets[f].pieces = std::move(pieces);
+  return true;
+}
+
+void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const FacetParameters& st,
+                         std::array<std::uint32_t, 2> piece, std::vector<EdgeSplit>& splits,
+                         std::vector<FacetPoint>& points) {
+  const ConstraintFacet3& facet = c.facets[f];
+  const auto p = c.mesh.points();
+  const auto [u, v] = piece;
+  const St &pu = st.at(u), &pv = st.at(v);
+  std::uint32_t w = T3::kNone;
+  double best = 0;
+  for (const auto& [x, px] : st) {
+    if (orient_st(pu, pv, px).sign() != Sign::Positive) continue;
+    const double r2 = circumradius2(p[u], p[v], p[x]);
+    if (w == T3::kNone || r2 < best || (r2 == best && x < w)) w = x, best = r2;
+  }
+  DTLAB_ASSERT(w != T3::kNone);
+  // The circumcentre as (s, t): least squares on the triangle's edge vectors.
+  const Vec3 A = p[facet.corners[0]], e1 = sub(p[facet.corners[1]], A), e2 = sub(p[facet.corners[2]], A);
+  const Vec3 d = sub(triangle_circumcenter(p[u], p[v], p[w]), A);
+  const double g11 = dot(e1, e1), g12 = dot(e1, e2), g22 = dot(e2, e2), r1 = dot(e1, d), r2 = dot(e2, d);
+  const double det = g11 * g22 - g12 * g12;
+  double s = (r1 * g22 - r2 * g12) / det, t = (g11 * r2 - g12 * r1) / det;
+  const auto inside = [](double s0, double t0) {
+    return std::isfinite(s0) && std::isfinite(t0) && s0 > 0 && t0 > 0 &&
+           Rational(s0) + Rational(t0) < Rational(1);
+  };
+  if (inside(s, t)) {
+    // Ruppert's rule: a point in the closed diametral ball of a boundary piece splits the piece.
+    const ExactPoint3 x = exact_facet_point(p, facet.corners, s, t);
+    bool encroached = false;
+    for (int k = 0; k < 3; ++k) {
+      const ConstraintEdge3& edge = c.edges[facet.edges[k]];
+      for (std::size_t j = 0; j + 1 < edge.chain.size(); ++j) {
+        const ExactPoint3 a = to_exact(p[edge.chain[j]]), b = to_exact(p[edge.chain[j + 1]]);
+        const Rational dot_ab =
+            (x.x - a.x) * (x.x - b.x) + (x.y - a.y) * (x.y - b.y) + (x.z - a.z) * (x.z - b.z);
+        if (dot_ab.sign() != Sign::Positive) {
+          splits.push_back({facet.edges[k], edge_split_parameter(c, facet.edges[k], j)});
+          encroached = true;
+        }
+      }
+    }
+    if (!encroached) points.push_back({f, s, t});
+    return;
+  }
+  // Outside the triangle: the pieces near it are split when they are encroached; the centroid
+  // of (u, v, w) is inside.
+  const St& pw = st.at(w);
+  const Rational third(1, 3);
+  s = round_to_double((pu[0] + pv[0] + pw[0]) * third);
+  t = round_to_double((pu[1] + pv[1] + pw[1]) * third);
+  if (!inside(s, t))
+    throw InputError("constrained3d: triangle " + std::to_string(f + 1) + " cannot be recovered in doubles", {f});
+  points.push_back({f, s, t});
+}
+
+SteinerInserter::SteinerInserter(Constrained3dContext& c) : c_(c), inserter_(c.mesh) {
+  const auto p = c.mesh.points();
+  for (std::uint32_t v = 0; v < p.size(); ++v) by_coordinates_[coordinate_hash(p[v])].push_back(v);
+}
+
+std::uint32_t SteinerInserter::add_vertex(const Vec3& p, const std::string& what, std::uint32_t item) {
+  if (c_.steiner.size() >= c_.steiner_limit)
+    throw InputError("constrained3d: " + what + " needs more than the limit of " + std::to_string(c_.steiner_limit) +
+                         " Steiner points",
+                     {item});
+  if (!coordinate_in_range(p.x) || !coordinate_in_range(p.y) || !coordinate_in_range(p.z))
+    throw InputError("constrained3d: a Steiner point of " + what + " is out of the supported coordinate range",
+                     {item});
+  auto& same = by_coordinates_[coordinate_hash(p)];
+  for (const std::uint32_t v : same)
+    if (c_.mesh.points()[v] == p)
+      throw InputError("constrained3d: a Steiner point of " + what + " rounds onto vertex " + std::to_string(v + 1) +
+                           "; the input is too fine for doubles there",
+                       {item});
+  const std::uint32_t id = inserter_.insert(p);
+  same.push_back(id);
+  return id;
+}
+
+std::size_t SteinerInserter::insert(const std::vector<EdgeSplit>& splits, const std::vector<FacetPoint>& points) {
+  std::size_t count = 0;
+  const auto p = [&] { return c_.mesh.points(); };
+  for (const auto& r : splits) {
+    ConstraintEdge3& edge = c_.edges[r.edge];
+    const auto at = std::lower_bound(edge.t.begin(), edge.t.end(), r.t);
+    if (at != edge.t.end() && *at == r.t) continue;
+    const RoundedPoint3 x = point_on_segment(p()[edge.a], p()[edge.b], Rational(r.t));
+    const std::string what = "the edge between vertices " + std::to_string(edge.a + 1) + " and " +
+                             std::to_string(edge.b + 1) + " (of triangle " + std::to_string(edge.face + 1) + ")";
+    SteinerPoint3 s{.kind = SteinerPoint3::Kind::OnEdge, .owner = edge.face, .support = {edge.a, edge.b, 0},
+                    .parameters = {r.t, 0}};
+    const std::uint32_t id = add_vertex(x.point, what, edge.face);
+    if (!steiner_point_within_rounding_bound(p(), s, x.point)) ++rounding_failed_;
+    c_.steiner.push_back(s);
+    const auto pos = at - edge.t.begin();
+    edge.t.insert(edge.t.begin() + pos, r.t);
+    edge.chain.insert(edge.chain.begin() + pos, id);
+    ++count;
+  }
+  for (const auto& r : points) {
+    ConstraintFacet3& facet = c_.facets[r.facet];
+    if (std::find(facet.interior_st.begin(), facet.interior_st.end(), std::array<double, 2>{r.s, r.t}) !=
+        facet.interior_st.end())
+      continue;
+    const Vec3 x = round_point(exact_facet_point(p(), facet.corners, r.s, r.t));
+    SteinerPoint3 s{.kind = SteinerPoint3::Kind::OnFace, .owner = r.facet, .support = facet.corners,
+                    .parameters = {r.s, r.t}};
+    const std::uint32_t id = add_vertex(x, "triangle " + std::to_string(r.facet + 1), r.facet);
+    if (!steiner_point_within_rounding_bound(p(), s, x)) ++rounding_failed_;
+    c_.steiner.push_back(s);
+    facet.interior.push_back(id);
+    facet.interior_st.push_back({r.s, r.t});
+    ++count;
+  }
+  return count;
+}
+
+}  // namespace dtlab

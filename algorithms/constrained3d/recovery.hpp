@@ -1,0 +1,96 @@
+// The steps of boundary recovery that every constrained3d method shares (book §3.5.3): which
+// constraint pieces the mesh holds, where a missing piece is split, where a missing triangle gets
+// a Steiner point, and the insertion of those points with their exact records. The methods
+// (conforming.cpp, ...) decide in which order to apply them.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <string>
+#include <vector>
+
+#include "algorithms/constrained3d/context.hpp"
+#include "algorithms/constrained3d/insert_point.hpp"
+#include "kernel/exact_rational.hpp"
+
+namespace dtlab {
+
+// The edges of the mesh (ghost tetrahedra included, kInfinite a vertex like any) and, for each,
+// the third vertices of the faces around it (its shell's ring). Rebuilt after insertions.
+class MeshIndex {
+ public:
+  explicit MeshIndex(const Tetrahedralization3& mesh);
+  bool has_edge(std::uint32_t u, std::uint32_t v) const { return ring_.count(key(u, v)) != 0; }
+  // Every w such that (u, v, w) is a mesh face; empty if (u, v) is no edge.
+  const std::vector<std::uint32_t>& ring(std::uint32_t u, std::uint32_t v) const;
+  static std::uint64_t key(std::uint32_t u, std::uint32_t v) noexcept {
+    return u < v ? std::uint64_t{u} << 32 | v : std::uint64_t{v} << 32 | u;
+  }
+
+ private:
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> ring_;
+};
+
+// A request for a Steiner point: on input edge `edge` at parameter t, or inside input triangle
+// `facet` at (s, t).
+struct EdgeSplit {
+  std::uint32_t edge = 0;
+  double t = 0;
+};
+struct FacetPoint {
+  std::uint32_t facet = 0;
+  double s = 0, t = 0;
+};
+
+// The split parameter of piece [chain[i], chain[i + 1]] of edge e: on concentric shells
+// (distance a power of two from the input vertex) when the piece has exactly one input vertex,
+// which keeps two pieces at a shared input vertex from encroaching on each other (Ruppert
+// 1995, Shewchuk 2000); else the midpoint of the parameters. Throws InputError naming the
+// edge when the piece has no double parameter strictly inside it.
+double edge_split_parameter(const Constrained3dContext& c, std::uint32_t e, std::size_t i);
+
+// Each vertex of facet f with its exact (s, t).
+using FacetParameters = std::unordered_map<std::uint32_t, std::array<Rational, 2>>;
+FacetParameters facet_parameters(const Constrained3dContext& c, std::uint32_t f);
+
+// The boundary pieces of facet f in order (edge 0's chain from A to B, then edge 1, edge 2),
+// directed so that the triangle lies to their left in (s, t).
+std::vector<std::array<std::uint32_t, 2>> facet_boundary(const Constrained3dContext& c, std::uint32_t f);
+
+// Whether the mesh faces on the vertices of facet f triangulate it: a breadth-first search from
+// its boundary pieces that takes, across each open piece, the mesh face on its left whose
+// third vertex is a vertex of f (the one whose (s, t) circle holds no other candidate if
+// several), then checks exactly that the pieces' (s, t) areas add up to the triangle's.
+// Fills c.facets[f].pieces when they do; else lists the directed pieces with no face.
+bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& index,
+                 std::vector<std::array<std::uint32_t, 2>>& missing);
+
+// Where facet f gets a point for its missing piece (u, v) (u, v on its left in (s, t)): the
+// circumcentre of (u, v, w), w the vertex of f on the left with the smallest circumradius, as
+// a point of the triangle; unless it lies in the closed diametral ball of boundary pieces of f,
+// which are split instead (Ruppert's rule), or outside the triangle (then the centroid of
+// (u, v, w)). Appends to `splits` or `points`.
+void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const FacetParameters& st,
+                         std::array<std::uint32_t, 2> missing, std::vector<EdgeSplit>& splits,
+                         std::vector<FacetPoint>& points);
+
+// Inserts requested points: each computed exactly, rounded to nearest, recorded in c.steiner,
+// added to its edge's chain (kept sorted) or its facet's interior, and inserted into c.mesh.
+// A request that repeats a parameter already there is dropped. Throws InputError naming the
+// edge or triangle when a rounded point equals an existing vertex or the Steiner limit is
+// reached. Returns the number inserted.
+class SteinerInserter {
+ public:
+  explicit SteinerInserter(Constrained3dContext& c);
+  std::size_t insert(const std::vector<EdgeSplit>& splits, const std::vector<FacetPoint>& points);
+  std::uint32_t rounding_checks_failed() const noexcept { return rounding_failed_; }
+
+ private:
+  std::uint32_t add_vertex(const Vec3& p, const std::string& what, std::uint32_t item);
+  Constrained3dContext& c_;
+  DelaunayInserter inserter_;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> by_coordinates_;
+  std::uint32_t rounding_failed_ = 0;
+};
+}  // namespace dtlab

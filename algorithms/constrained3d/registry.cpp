@@ -1,0 +1,29 @@
+#include "algorithms/constrained3d/registry.hpp"
+
+#include <array>
+
+namespace dtlab {
+
+void constrained3d_conforming(Constrained3dContext& context);
+
+namespace {
+
+constexpr std::array<Constrained3dMethod, 1> kMethods{{
+    {"conforming",
+     "Delaunay of the vertices, then missing edge pieces split (concentric shells) and missing "
+     "triangle pieces refined (circumcentres, Ruppert's rule) until the Delaunay "
+     "tetrahedralization holds every input edge and triangle; Steiner points on the boundary only",
+     &constrained3d_conforming},
+}};
+
+}  // namespace
+
+std::span<const Constrained3dMethod> constrained3d_methods() noexcept { return kMethods; }
+
+const Constrained3dMethod* find_constrained3d_method(std::string_view name) noexcept {
+  for (const auto& m : kMethods)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+}  // namespace dtlab
