@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <random>
 #include <set>
+#include <string>
+#include <tuple>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
 #include "algorithms/constrained3d/exhaustive_tetrahedralization.hpp"
@@ -195,10 +197,10 @@ struct CheckedRun {
 
 // Everything the issue asks of a result, exactly. `triangles` are the input's.
 CheckedRun run_and_check(const ClosedSurface3& s, const std::string& method = "conforming",
-                         std::span<const int> refs = {}) {
+                         std::span<const int> refs = {}, std::span<const Vec3> holes = {}) {
   CheckedRun out;
   Constrained3dResult& r = out.result;
-  r = constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = refs, .holes = {}, .regions = {}},
+  r = constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = refs, .holes = holes, .regions = {}},
                     {.method = method});
   const auto& v = r.vertices;
   EXPECT_EQ(r.input_point_count, s.points.size());
@@ -244,12 +246,6 @@ CheckedRun run_and_check(const ClosedSurface3& s, const std::string& method = "c
     meshed += v6;
     out.region_volume6[r.tetrahedron_regions[k]] += v6;
   }
-  std::vector<Ids3> outer;  // the pieces of triangles on the boundary of the domain (not internal)
-  std::map<Ids3, int> count;
-  for (const auto& t : s.triangles) {
-    auto k = t;
-    std::sort(k.begin(), k.end());
-  }
   const Rational split_surface = exact_volume6(v, r.triangles);
   const Rational input_surface = exact_volume6(s.points, s.triangles);
   bool all_exact = true;
@@ -271,8 +267,6 @@ CheckedRun run_and_check(const ClosedSurface3& s, const std::string& method = "c
       }
     bound += 6 * 2 * std::hypot(rounding_bound(x.x), rounding_bound(x.y), rounding_bound(x.z)) * star;
   }
-  (void)outer;
-  (void)count;
   if (refs.empty()) {  // one closed surface, no internal faces
     EXPECT_EQ(meshed, split_surface);
     if (all_exact) {
@@ -342,6 +336,193 @@ TEST(Constrained3d, Chazelle) {
     std::printf("Chazelle n = %d: %zu vertices, Steiner on edges %u, on faces %u (n^2 = %d)\n", n, s.points.size(),
                 run.result.steiner_points.on_edges, run.result.steiner_points.on_faces, n * n);
   }
+}
+
+// Builds test surfaces: points merged by coordinates, triangles turned to the given outward
+// direction (the coordinates are small dyadic rationals: the cross product is exact).
+struct SurfaceMaker {
+  ClosedSurface3 s;
+  std::map<std::tuple<double, double, double>, std::uint32_t> ids;
+  std::uint32_t id(const Vec3& p) {
+    const auto [it, inserted] = ids.emplace(std::make_tuple(p.x, p.y, p.z), std::uint32_t(s.points.size()));
+    if (inserted) s.points.push_back(p);
+    return it->second;
+  }
+  void tri(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& out) {
+    const Vec3 n = cross(b - a, c - a);
+    if (dot(n, out) > 0) {
+      s.triangles.push_back({id(a), id(b), id(c)});
+    } else {
+      s.triangles.push_back({id(a), id(c), id(b)});
+    }
+  }
+  // A convex polygon fanned from its first vertex.
+  void fan(const std::vector<Vec3>& ring, const Vec3& out) {
+    for (std::size_t k = 1; k + 1 < ring.size(); ++k) tri(ring[0], ring[k], ring[k + 1], out);
+  }
+};
+
+TEST(Constrained3d, CubeWithAnInternalFace) {
+  SurfaceMaker m;
+  std::vector<int> refs;
+  const auto face = [&](const std::vector<Vec3>& ring, const Vec3& out, int ref) {
+    m.fan(ring, out);
+    refs.resize(m.s.triangles.size(), ref);
+  };
+  face({{0, 0, 0}, {0, 2, 0}, {0, 2, 2}, {0, 0, 2}}, {-1, 0, 0}, 1);
+  face({{2, 0, 0}, {2, 2, 0}, {2, 2, 2}, {2, 0, 2}}, {1, 0, 0}, 1);
+  for (const double x0 : {0.0, 1.0}) {
+    const double x1 = x0 + 1;
+    face({{x0, 0, 0}, {x1, 0, 0}, {x1, 0, 2}, {x0, 0, 2}}, {0, -1, 0}, 1);
+    face({{x0, 2, 0}, {x1, 2, 0}, {x1, 2, 2}, {x0, 2, 2}}, {0, 1, 0}, 1);
+    face({{x0, 0, 0}, {x1, 0, 0}, {x1, 2, 0}, {x0, 2, 0}}, {0, 0, -1}, 1);
+    face({{x0, 0, 2}, {x1, 0, 2}, {x1, 2, 2}, {x0, 2, 2}}, {0, 0, 1}, 1);
+  }
+  face({{1, 0, 0}, {1, 2, 0}, {1, 2, 2}, {1, 0, 2}}, {1, 0, 0}, 2);
+  const auto run = run_and_check(m.s, "conforming", refs);
+  EXPECT_EQ(run.result.region_count, 2u);
+  ASSERT_EQ(run.region_volume6.size(), 2u);
+  EXPECT_EQ(run.region_volume6.at(1), Rational(24));
+  EXPECT_EQ(run.region_volume6.at(2), Rational(24));
+  // The internal face's pieces keep its reference.
+  for (std::size_t k = 0; k < run.result.triangles.size(); ++k)
+    EXPECT_EQ(run.result.triangle_refs[k], refs[run.result.triangle_face[k]]);
+}
+
+TEST(Constrained3d, TwoStackedBoxes) {
+  // [0,2]x[0,2]x[0,1] below [0,1]x[0,1]x[1,2]; the contact square is an internal face.
+  SurfaceMaker m;
+  std::vector<int> refs;
+  const auto tag = [&](int ref) { refs.resize(m.s.triangles.size(), ref); };
+  m.fan({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, {0, 0, -1});
+  m.fan({{2, 0, 0}, {2, 2, 0}, {2, 2, 1}, {2, 0, 1}}, {1, 0, 0});
+  m.fan({{0, 2, 0}, {2, 2, 0}, {2, 2, 1}, {0, 2, 1}}, {0, 1, 0});
+  m.fan({{0, 0, 0}, {2, 0, 0}, {2, 0, 1}, {1, 0, 1}, {0, 0, 1}}, {0, -1, 0});
+  m.fan({{0, 0, 0}, {0, 2, 0}, {0, 2, 1}, {0, 1, 1}, {0, 0, 1}}, {-1, 0, 0});
+  m.tri({1, 0, 1}, {2, 0, 1}, {1, 1, 1}, {0, 0, 1});
+  m.tri({2, 0, 1}, {2, 2, 1}, {1, 1, 1}, {0, 0, 1});
+  m.tri({1, 1, 1}, {2, 2, 1}, {0, 2, 1}, {0, 0, 1});
+  m.tri({1, 1, 1}, {0, 2, 1}, {0, 1, 1}, {0, 0, 1});
+  m.fan({{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}, {0, 0, 1});
+  tag(1);
+  const std::size_t contact = m.s.triangles.size() - 2;
+  m.fan({{0, 0, 1}, {0, 1, 1}, {0, 1, 2}, {0, 0, 2}}, {-1, 0, 0});
+  m.fan({{1, 0, 1}, {1, 1, 1}, {1, 1, 2}, {1, 0, 2}}, {1, 0, 0});
+  m.fan({{0, 0, 1}, {1, 0, 1}, {1, 0, 2}, {0, 0, 2}}, {0, -1, 0});
+  m.fan({{0, 1, 1}, {1, 1, 1}, {1, 1, 2}, {0, 1, 2}}, {0, 1, 0});
+  m.fan({{0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2}}, {0, 0, 1});
+  tag(1);
+  refs[contact] = refs[contact + 1] = 2;
+  const auto run = run_and_check(m.s, "conforming", refs);
+  EXPECT_EQ(run.result.region_count, 2u);
+  std::multiset<std::string> volumes;
+  for (const auto& [region, v6] : run.region_volume6) volumes.insert(v6.to_string());
+  EXPECT_EQ(volumes, (std::multiset<std::string>{"24", "6"}));
+}
+
+TEST(Constrained3d, FaceRecoveryBetweenTwoNearbyShells) {
+  // A big cube with a thin tetrahedron just outside the middle of one face and a hole just
+  // inside it: no sphere through that face is empty, so its edges alone do not bring it back.
+  ClosedSurface3 s = cube(0, 8);
+  const double gap = 1.0 / 64;
+  const auto add_tet = [&](std::array<Vec3, 4> v, bool outward) {
+    const std::uint32_t b = std::uint32_t(s.points.size());
+    for (const auto& p : v) s.points.push_back(p);
+    if (orient3d(v[0], v[1], v[2], v[3]) == Sign::Negative) std::swap(s.points[b + 2], s.points[b + 3]);
+    // Positive (0 1 2 3): outward faces (1 2 3), (0 3 2), (0 1 3), (0 2 1).
+    std::array<Ids3, 4> f{{{b + 1, b + 2, b + 3}, {b, b + 3, b + 2}, {b, b + 1, b + 3}, {b, b + 2, b + 1}}};
+    for (auto& t : f) {
+      if (!outward) std::swap(t[1], t[2]);
+      s.triangles.push_back(t);
+    }
+  };
+  add_tet({Vec3{8 + gap, 5, 3}, {9, 5, 3}, {9, 6, 3}, {9, 5, 4}}, true);
+  add_tet({Vec3{8 - gap, 5, 3}, {7, 5, 3}, {7, 6, 3}, {7, 5, 4}}, false);  // a cavity: turned inward
+  const std::vector<Vec3> holes{{7.25, 5.25, 3.25}};
+  const auto run = run_and_check(s, "conforming", {}, holes);
+  std::printf("face recovery case: Steiner on edges %u, on faces %u\n", run.result.steiner_points.on_edges,
+              run.result.steiner_points.on_faces);
+  EXPECT_EQ(run.result.region_count, 2u);  // the cube less the hole, the outer tetrahedron
+}
+
+TEST(Constrained3d, RefusesBadInput) {
+  const auto s = cube();
+  EXPECT_THROW(constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {}, .regions = {}},
+                             {.method = "no-such-method"}),
+               InputError);
+  const std::vector<int> refs(3, 1);
+  EXPECT_THROW(constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = refs, .holes = {}, .regions = {}}),
+               InputError);
+  // An open surface: check_plc names the free edges.
+  const std::vector<Ids3> open(s.triangles.begin(), s.triangles.end() - 1);
+  EXPECT_THROW(constrained3d({.points = s.points, .triangles = open, .triangle_refs = {}, .holes = {}, .regions = {}}),
+               InputError);
+  // A duplicate vertex.
+  ClosedSurface3 d = s;
+  d.points.push_back(d.points[0]);
+  d.triangles[0][0] = std::uint32_t(d.points.size() - 1);
+  EXPECT_THROW(constrained3d({.points = d.points, .triangles = d.triangles, .triangle_refs = {}, .holes = {}, .regions = {}}),
+               InputError);
+  // A steiner limit too small for Schönhardt names a triangle.
+  const auto sch = schonhardt_polyhedron(30);
+  try {
+    constrained3d({.points = sch.points, .triangles = sch.triangles, .triangle_refs = {}, .holes = {}, .regions = {}},
+                  {.steiner_limit_factor = 0});
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.items().size(), 1u);
+  }
+}
+
+TEST(Constrained3d, RegionSeedsAndKeptExterior) {
+  const auto s = cube();
+  const std::vector<RegionSeed3> seeds{{{0.5, 0.5, 0.5}, 7}};
+  const auto r = constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {}, .regions = seeds});
+  ASSERT_FALSE(r.tetrahedron_regions.empty());
+  for (const int k : r.tetrahedron_regions) EXPECT_EQ(k, 7);
+  const auto all = constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {}, .regions = {}},
+                                 {.keep_exterior = true});
+  EXPECT_EQ(all.tetrahedra.size(), all.tetrahedralization.finite_tetrahedron_count());
+}
+
+// A star-shaped closed surface: the convex hull of random lattice points around the origin
+// (the hull facets of their Delaunay tetrahedralization), each vertex moved along its ray by a
+// random factor k/8. The cones from the origin over the facets do not change, so the surface
+// stays simple.
+ClosedSurface3 random_star(const std::vector<std::array<int, 3>>& lattice, const std::vector<int>& factors) {
+  std::vector<Vec3> pts{{120, 0, 0}, {-120, 0, 0}, {0, 120, 0}, {0, -120, 0}, {0, 0, 120}, {0, 0, -120}};
+  for (const auto& q : lattice) pts.push_back({double(q[0]), double(q[1]), double(q[2])});
+  std::sort(pts.begin(), pts.end());
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  const Tetrahedralization3 t = delaunay3d(pts).tetrahedralization;
+  ClosedSurface3 s;
+  std::map<std::uint32_t, std::uint32_t> used;
+  const auto id = [&](std::uint32_t v) {
+    const auto [it, inserted] = used.emplace(v, std::uint32_t(s.points.size()));
+    if (inserted) {
+      const double k = factors[v % factors.size()] / 8.0;
+      s.points.push_back({pts[v].x * k, pts[v].y * k, pts[v].z * k});
+    }
+    return it->second;
+  };
+  for (std::uint32_t g = 0; g < t.tetrahedron_count(); ++g) {
+    if (!t.is_ghost(g)) continue;
+    const auto& v = t.records()[g].vertex;  // (inf, a, b, c): (a, c, b) is outward
+    s.triangles.push_back({id(v[1]), id(v[3]), id(v[2])});
+  }
+  return s;
+}
+
+RC_GTEST_PROP(Constrained3dProperty, RandomStarShapedSurfaces, ()) {
+  const auto lattice = *rc::gen::container<std::vector<std::array<int, 3>>>(
+      *rc::gen::inRange<std::size_t>(0, 60), rc::gen::container<std::array<int, 3>>(rc::gen::inRange(-100, 101)));
+  const auto factors = *rc::gen::container<std::vector<int>>(7, rc::gen::inRange(3, 17));
+  const ClosedSurface3 s = random_star(lattice, factors);
+  RC_ASSERT(exact_volume6(s.points, s.triangles).sign() == Sign::Positive);
+  const auto run = run_and_check(s);
+  RC_ASSERT(!::testing::Test::HasFailure());
+  RC_ASSERT(run.result.region_count == 1u);
+  RC_TAG(run.result.steiner_points.total() == 0 ? "no Steiner point" : "Steiner points");
 }
 
 }  // namespace
