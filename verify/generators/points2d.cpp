@@ -7,75 +7,17 @@
 #include <utility>
 
 #include "kernel/error.hpp"
+#include "verify/generators/portable_random.hpp"
 
 namespace dtlab {
 
 namespace {
 
-using Rng = std::mt19937_64;
-
-// --- portable numbers -------------------------------------------------------------------------
-
-// Uniform in [0, 1): the top 53 bits of one draw.
-double unit(Rng& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-
-// Uniform in [0, k) for k >= 1 (modulo bias below k / 2^64: irrelevant here, and portable).
-std::uint64_t below(Rng& rng, std::uint64_t k) { return rng() % k; }
-
-// Natural logarithm of x > 0: x = m 2^e exactly (frexp), then the atanh series of m near 1.
-double portable_log(double x) {
-  int e = 0;
-  double m = std::frexp(x, &e);  // m in [0.5, 1)
-  if (m < 0.70710678118654752) {
-    m *= 2.0;
-    --e;
-  }
-  const double s = (m - 1.0) / (m + 1.0);  // |s| <= 0.172
-  const double s2 = s * s;
-  double sum = 0.0;
-  for (int k = 21; k >= 1; k -= 2) sum = sum * s2 + 1.0 / k;
-  return 2.0 * s * sum + e * 0.69314718055994531;
-}
-
-// (cos, sin) of 2 pi u for u in [0, 1): quadrant by 4u, then Taylor series on [0, pi/4].
-Vec2 portable_unit_circle(double u) {
-  constexpr double kHalfPi = 1.5707963267948966;
-  const double t = 4.0 * u;
-  const int quadrant = static_cast<int>(t) & 3;
-  double r = t - std::floor(t);  // exact
-  const bool complement = r > 0.5;
-  if (complement) r = 1.0 - r;  // exact for r in (0.5, 1)
-  const double a = r * kHalfPi;
-  const double a2 = a * a;
-  double sin_sum = 0.0, cos_sum = 0.0;
-  double sin_term = a, cos_term = 1.0;
-  for (int k = 1; k <= 11; ++k) {
-    sin_sum += sin_term;
-    cos_sum += cos_term;
-    sin_term *= -a2 / ((2.0 * k) * (2.0 * k + 1.0));
-    cos_term *= -a2 / ((2.0 * k - 1.0) * (2.0 * k));
-  }
-  double c = cos_sum, s = sin_sum;
-  if (complement) std::swap(c, s);
-  switch (quadrant) {
-    case 0: return {c, s};
-    case 1: return {-s, c};
-    case 2: return {-c, -s};
-    default: return {s, -c};
-  }
-}
-
-// A standard normal pair by Box-Muller.
-Vec2 normal_pair(Rng& rng) {
-  const double u1 = 1.0 - unit(rng);  // (0, 1]
-  const double r = std::sqrt(-2.0 * portable_log(u1));
-  return r * portable_unit_circle(unit(rng));
-}
-
-template <class T>
-void shuffle(std::vector<T>& v, Rng& rng) {
-  for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[below(rng, i)]);
-}
+using portable::below;
+using portable::normal_pair;
+using portable::Rng;
+using portable::shuffle;
+using portable::unit;
 
 // --- distributions ------------------------------------------------------------------------------
 
@@ -105,7 +47,7 @@ std::vector<Vec2> grid(std::size_t n, Rng& rng) {
 
 std::vector<Vec2> circle(std::size_t n, Rng& rng) {
   std::vector<Vec2> p(n);
-  for (Vec2& q : p) q = portable_unit_circle(unit(rng));
+  for (Vec2& q : p) q = portable::unit_circle(unit(rng));
   return p;
 }
 
