@@ -1,8 +1,10 @@
 // `dtlab constrain`: the constrained triangulation of a planar straight line graph (Triangle's
-// .poly: vertices, segments with markers, holes, regions) with any registered method
-// (algorithms/constrained2d), written as Medit .mesh: Vertices (input first, in input order,
-// then Steiner points), Edges (the constrained edges with their segments' markers), Triangles
-// (ccw, region attribute as reference).
+// .poly: vertices, segments with markers, holes, regions; or Medit .mesh: Vertices, and Edges
+// with their references as markers) with any registered method (algorithms/constrained2d),
+// written as Medit .mesh: Vertices (input first, in input order, then Steiner points), Edges
+// (the constrained edges with their segments' markers), Triangles (ccw, region attribute as
+// reference); --verify runs the exact checks (verify/checks_constrained2d.hpp). Messages number
+// points and segments as the input file does (Medit from 1, .poly from its first vertex number).
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -15,6 +17,7 @@
 #include "kernel/error.hpp"
 #include "mesh/io/medit.hpp"
 #include "mesh/io/poly_format.hpp"
+#include "verify/checks_constrained2d.hpp"
 
 namespace dtlab::cli {
 
@@ -26,16 +29,45 @@ struct ConstrainArgs {
   std::string method = "cdt";
   bool keep_exterior = false;
   bool stats = false;
+  bool verify = false;
   bool list = false;
 };
+
+// The input graph, whichever the file format: a .poly as it is, a Medit .mesh as vertices and
+// edges (references as markers; triangles in it are ignored).
+struct GraphInput {
+  PolyData2 poly;
+  std::uint32_t first_number = 1;
+};
+
+GraphInput read_graph(const std::string& path) {
+  const std::string ext = extension_of(path);
+  if (ext == "poly") {
+    GraphInput in{read_triangle_poly(path), 0};
+    in.first_number = static_cast<std::uint32_t>(in.poly.first_index);
+    return in;
+  }
+  if (ext != "mesh") throw InputError(path + ": give a Triangle .poly or a Medit .mesh (with Edges) file");
+  const MeshData2 mesh = read_medit2(path);
+  if (!mesh.triangles.empty())
+    std::cerr << "dtlab: " << path << ": its " << mesh.triangles.size()
+              << " Triangles are ignored; the graph is its Vertices and Edges\n";
+  GraphInput in;
+  in.poly.points = mesh.vertices;
+  in.poly.segments = mesh.edges;
+  in.poly.has_segment_markers = true;
+  in.poly.segment_markers = mesh.edge_refs;
+  return in;
+}
 
 int run_constrain(const ConstrainArgs& args) {
   if (args.list) {
     for (const Constrained2dMethod& m : constrained2d_methods()) std::cout << m.name << "\t" << m.description << "\n";
     return 0;
   }
-  if (args.input.empty()) throw InputError("give an INPUT .poly file");
-  const PolyData2 poly = read_triangle_poly(args.input);
+  if (args.input.empty()) throw InputError("give an INPUT .poly or .mesh file");
+  const GraphInput graph = read_graph(args.input);
+  const PolyData2& poly = graph.poly;
   std::vector<RegionSeed2> regions;
   for (const PolyRegion& r : poly.regions) {
     const double rounded = std::nearbyint(r.attribute);
@@ -48,8 +80,16 @@ int run_constrain(const ConstrainArgs& args) {
                           .segment_markers = poly.segment_markers,
                           .holes = poly.holes,
                           .regions = regions};
-  const Constrained2dResult result =
-      constrained2d(input, {.method = args.method, .keep_exterior = args.keep_exterior});
+  Constrained2dOptions options;
+  options.method = args.method;
+  options.keep_exterior = args.keep_exterior;
+  options.first_number = graph.first_number;
+  Constrained2dResult result;
+  try {
+    result = constrained2d(input, options);
+  } catch (const InputError& e) {
+    throw InputError(args.input + ": " + e.what(), e.items());
+  }
   const double peak_mb = peak_rss_mb();
   for (const std::string& m : result.messages) std::cerr << "dtlab: " << m << "\n";
   if (result.message_count > result.messages.size())
@@ -69,6 +109,13 @@ int run_constrain(const ConstrainArgs& args) {
     mesh.triangle_refs = result.triangle_region;
     write_medit2(args.output, mesh);
   }
+  bool verified_ok = true;
+  if (args.verify) {
+    const ConstrainedCheckReport2 report = verify_constrained2d(
+        input, result, {.method = args.method, .keep_exterior = args.keep_exterior, .first_number = graph.first_number});
+    std::cout << to_text(report);
+    verified_ok = report.ok;
+  }
   if (args.stats) {
     const double per_minute =
         result.seconds > 0 ? static_cast<double>(result.triangles.size()) * 60.0 / result.seconds : 0.0;
@@ -83,21 +130,26 @@ int run_constrain(const ConstrainArgs& args) {
          << ",\"peak_rss_mb\":" << json_number(peak_mb) << ",\"predicates\":" << result.predicate_stats.to_json() << "}";
     std::cout << json.str() << "\n";
   }
-  return result.rounding_checks_failed == 0 ? 0 : 3;
+  return verified_ok && result.rounding_checks_failed == 0 ? 0 : 3;
 }
 
 }  // namespace
 
 void add_constrain(CLI::App& app) {
   auto args = std::make_shared<ConstrainArgs>();
-  CLI::App* cmd = app.add_subcommand("constrain", "Constrained triangulation of a planar straight line graph (.poly)");
-  cmd->add_option("input", args->input, "Triangle .poly file (vertices, segments with markers, holes, regions)");
+  CLI::App* cmd = app.add_subcommand("constrain", "Constrained triangulation of a planar straight line graph (.poly, .mesh)");
+  cmd->add_option("input", args->input,
+                  "Triangle .poly file (vertices, segments with markers, holes, regions) or Medit .mesh (Vertices, "
+                  "Edges with references as markers)");
   cmd->add_option("-o,--output", args->output, "Write OUT.mesh (Medit): Vertices, Edges with markers, Triangles with regions");
   std::string names;
   for (const Constrained2dMethod& m : constrained2d_methods()) names += (names.empty() ? "" : "|") + std::string(m.name);
   cmd->add_option("--method", args->method, "Method: " + names)->capture_default_str();
   cmd->add_flag("--keep-exterior", args->keep_exterior, "Keep the triangles outside the segments (holes are still removed)");
   cmd->add_flag("--stats", args->stats, "Print one JSON object with counts, seconds and predicate stages as the last line");
+  cmd->add_flag("--verify", args->verify,
+                "Check the result exactly (constraints as chains, Steiner rounding bounds, validity in doubles, the "
+                "method's Delaunay property), print the report; exit 3 if it fails");
   cmd->add_flag("--list-methods", args->list, "List the registered methods (name, tab, description) and exit");
   cmd->callback([args] { exit_code() = run_constrain(*args); });
 }

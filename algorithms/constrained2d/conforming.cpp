@@ -65,20 +65,20 @@ void constrained2d_conforming(const Constrained2dContext& context) {
         const RoundedPoint2 m =
             split_point(mesh.point(p.a), mesh.point(p.b), p.a < corners, p.b < corners);
         if (!coordinate_in_range(m.point.x) || !coordinate_in_range(m.point.y))
-          throw InputError("conforming: a split point of segment " + std::to_string(p.segment) +
+          throw InputError("conforming: a split point of segment " + context.number(p.segment) +
                                " falls outside the supported coordinate range",
                            {p.segment});
         const ConstrainedMesh2::Location where = mesh.locate(m.point, mesh.triangle_of_vertex(p.a));
         if (where.where == ConstrainedMesh2::Where::Vertex) {
           w = where.handle;
           if (w == p.a || w == p.b)
-            throw InputError("conforming: segment " + std::to_string(p.segment) + " cannot be split further: its piece " +
-                                 std::to_string(p.a) + "-" + std::to_string(p.b) + " has no double point between its ends",
+            throw InputError("conforming: segment " + context.number(p.segment) + " cannot be split further: its piece " +
+                                 context.number(p.a) + "-" + context.number(p.b) + " has no double point between its ends",
                              {p.segment});
         } else {
           if (result.split_steiner_points >= limit)
             throw InputError("conforming: Steiner point limit (" + std::to_string(limit) + ") reached while splitting segment " +
-                                 std::to_string(p.segment),
+                                 context.number(p.segment),
                              {p.segment});
           w = mesh.insert(m.point, where, &outward);
           mesh.lawson(outward, false);

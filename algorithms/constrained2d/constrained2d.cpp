@@ -30,14 +30,15 @@ Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrai
   const PredicateStats before = predicate_stats();
   const auto start = std::chrono::steady_clock::now();
   const std::size_t n = input.points.size();
+  const auto number = [&options](std::uint64_t i) { return std::to_string(i + options.first_number); };
   if (!input.segment_markers.empty() && input.segment_markers.size() != input.segments.size())
     throw InputError("segment markers: " + std::to_string(input.segment_markers.size()) + " markers for " +
                      std::to_string(input.segments.size()) + " segments");
   for (std::size_t k = 0; k < input.segments.size(); ++k)
     for (const std::uint32_t v : input.segments[k])
       if (v >= n)
-        throw InputError("segment " + std::to_string(k) + ": endpoint " + std::to_string(v) + " is out of range (" +
-                             std::to_string(n) + " points)",
+        throw InputError("segment " + number(k) + ": endpoint " + number(v) + " is out of range (" +
+                             std::to_string(n) + " points, numbered from " + number(0) + ")",
                          {k});
 
   Delaunay2dResult delaunay = delaunay2d(input.points, {.algorithm = "incremental", .seed = options.seed});
@@ -54,8 +55,8 @@ Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrai
     const auto [a0, b0] = input.segments[k];
     const std::uint32_t a = keep[a0], b = keep[b0];
     if (a == b)
-      throw InputError("segment " + std::to_string(k) + " has zero length (endpoints " + std::to_string(a0) + " and " +
-                           std::to_string(b0) + (a0 == b0 ? " are the same point)" : " have equal coordinates)"),
+      throw InputError("segment " + number(k) + " has zero length (endpoints " + number(a0) + " and " +
+                           number(b0) + (a0 == b0 ? " are the same point)" : " have equal coordinates)"),
                        {k});
     keyed.push_back({std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(k)});
   }
@@ -68,8 +69,8 @@ Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrai
       std::size_t first = k - 1;
       while (first > 0 && keyed[first - 1][0] == keyed[k][0] && keyed[first - 1][1] == keyed[k][1]) --first;
       if (result.messages.size() < Constrained2dResult::kMaxMessages)
-        result.messages.push_back("segment " + std::to_string(keyed[k][2]) + " duplicates segment " +
-                                  std::to_string(keyed[first][2]) + ": kept " + std::to_string(keyed[first][2]));
+        result.messages.push_back("segment " + number(keyed[k][2]) + " duplicates segment " +
+                                  number(keyed[first][2]) + ": kept " + number(keyed[first][2]));
       ++result.message_count;
       continue;
     }

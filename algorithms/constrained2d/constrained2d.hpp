@@ -54,6 +54,9 @@ struct Constrained2dOptions {
   // Conforming only: the most Steiner points its splitting may add, as a multiple of
   // (points + segments); past it constrained2d throws InputError naming the segment.
   std::uint32_t conforming_steiner_factor = 64;
+  // The number of the first point, segment, hole and region in messages and error texts: 0 for
+  // the API (as InputError::items), the input file's numbering in the CLI (Medit 1, .poly 0 or 1).
+  std::uint32_t first_number = 0;
 };
 
 struct ConstrainedEdge2 {
@@ -91,8 +94,8 @@ struct Constrained2dResult {
   double seconds = 0.0;
 };
 
-// Throws InputError for: an unknown method; a point out of range (as delaunay2d); a segment
-// endpoint out of range, a zero-length segment (equal indices or equal coordinates), a marker
+// Throws InputError (items 0-based, texts numbered from options.first_number) for: an unknown
+// method; a point out of range (as delaunay2d); a segment endpoint out of range, a zero-length segment (equal indices or equal coordinates), a marker
 // list of the wrong length; naming the segment. Duplicate segments are reported and one kept.
 Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrained2dOptions& options = {});
 

@@ -21,6 +21,9 @@ struct Constrained2dContext {
   const Constrained2dOptions& options;
   Constrained2dResult& result;
 
+  // Item i (0-based) as messages number it (Constrained2dOptions::first_number).
+  std::string number(std::uint64_t i) const { return std::to_string(i + options.first_number); }
+
   void note(std::string message) const {
     if (result.messages.size() < Constrained2dResult::kMaxMessages) result.messages.push_back(std::move(message));
     ++result.message_count;

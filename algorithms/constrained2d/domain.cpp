@@ -26,9 +26,9 @@ std::uint32_t finite_triangle_at(ConstrainedMesh2& mesh, const Vec2& p, std::uin
   return T2::kNone;
 }
 
-void check_seed(const Vec2& p, const std::string& what, std::size_t k) {
+void check_seed(const Vec2& p, const std::string& what, std::size_t k, std::uint32_t first_number) {
   if (!coordinate_in_range(p.x) || !coordinate_in_range(p.y))
-    throw InputError(what + " " + std::to_string(k) + " has a coordinate out of the supported range (" +
+    throw InputError(what + " " + std::to_string(k + first_number) + " has a coordinate out of the supported range (" +
                          coordinate_problem(coordinate_in_range(p.x) ? p.y : p.x) + ")",
                      {k});
 }
@@ -41,8 +41,8 @@ void build_domain(const Constrained2dContext& context, std::span<const Vec2> hol
   const Triangulation2& tri = mesh.tri();
   Constrained2dResult& result = context.result;
   const auto count = static_cast<std::uint32_t>(tri.triangle_count());
-  for (std::size_t k = 0; k < holes.size(); ++k) check_seed(holes[k], "hole", k);
-  for (std::size_t k = 0; k < regions.size(); ++k) check_seed(regions[k].point, "region", k);
+  for (std::size_t k = 0; k < holes.size(); ++k) check_seed(holes[k], "hole", k, context.options.first_number);
+  for (std::size_t k = 0; k < regions.size(); ++k) check_seed(regions[k].point, "region", k, context.options.first_number);
 
   std::vector<std::uint32_t> component(count, T2::kNone);
   std::uint32_t components = 0;
@@ -80,7 +80,7 @@ void build_domain(const Constrained2dContext& context, std::span<const Vec2> hol
   for (std::size_t k = 0; k < holes.size(); ++k) {
     const std::uint32_t t = finite_triangle_at(mesh, holes[k], start);
     if (t == T2::kNone) {
-      context.note("hole " + std::to_string(k) + " lies outside the convex hull: ignored");
+      context.note("hole " + context.number(k) + " lies outside the convex hull: ignored");
       continue;
     }
     removed[component[t]] = 1;
@@ -88,7 +88,7 @@ void build_domain(const Constrained2dContext& context, std::span<const Vec2> hol
   for (std::size_t k = 0; k < regions.size(); ++k) {
     const std::uint32_t t = finite_triangle_at(mesh, regions[k].point, start);
     if (t == T2::kNone || removed[component[t]]) {
-      context.note("region " + std::to_string(k) + " lies outside the domain: ignored");
+      context.note("region " + context.number(k) + " lies outside the domain: ignored");
       continue;
     }
     attribute[component[t]] = regions[k].attribute;

@@ -118,7 +118,7 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
     const Pipe2 pipe_ab = pipe(mesh.tri(), mesh.triangle_of_vertex(a), a, b);
     std::uint32_t from = a;
     for (const std::uint32_t v : pipe_ab.through) {
-      context.note("segment " + std::to_string(context.ids[k]) + " passes through vertex " + std::to_string(v) +
+      context.note("segment " + context.number(context.ids[k]) + " passes through vertex " + context.number(v) +
                    ": split there");
       pieces.push_back({from, v, context.ids[k]});
       from = v;
@@ -139,10 +139,10 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
       while (dropped[order[first]]) --first;
       dropped[order[i]] = 1;
       if (pieces[order[i]].segment != pieces[order[first]].segment)
-        context.note("segments " + std::to_string(pieces[order[first]].segment) + " and " +
-                     std::to_string(pieces[order[i]].segment) + " overlap along " + std::to_string(key(order[i]).first) +
-                     "-" + std::to_string(key(order[i]).second) + "; the piece keeps segment " +
-                     std::to_string(pieces[order[first]].segment));
+        context.note("segments " + context.number(pieces[order[first]].segment) + " and " +
+                     context.number(pieces[order[i]].segment) + " overlap along " + context.number(key(order[i]).first) +
+                     "-" + context.number(key(order[i]).second) + "; the piece keeps segment " +
+                     context.number(pieces[order[first]].segment));
     }
     std::size_t kept = 0;
     for (std::size_t i = 0; i < pieces.size(); ++i)
@@ -158,7 +158,7 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
       stack.pop_back();
       if (p.a == p.b) continue;
       if (++steps > 64 + 16 * (pieces.size() + 2 * crossings))
-        throw InternalError("segment resolution did not converge (at segment " + std::to_string(p.segment) + ")");
+        throw InternalError("segment resolution did not converge (at segment " + context.number(p.segment) + ")");
       const ConstrainedMesh2::SegmentWalk walk = mesh.walk(p.a, p.b);
       const auto hit = std::find_if(walk.crossed.begin(), walk.crossed.end(),
                                     [&](std::uint32_t h) { return mesh.constraint(h) != kNone; });
@@ -166,15 +166,15 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
         const std::uint32_t h = enforce_by_swaps(mesh, p.a, walk.stop, walk.crossed);
         const std::uint32_t existing = mesh.constraint(h);
         if (existing != kNone && existing != p.segment) {
-          context.note("segments " + std::to_string(existing) + " and " + std::to_string(p.segment) +
-                       " overlap along edge " + std::to_string(p.a) + "-" + std::to_string(walk.stop) +
-                       "; the edge keeps segment " + std::to_string(std::min(existing, p.segment)));
+          context.note("segments " + context.number(existing) + " and " + context.number(p.segment) +
+                       " overlap along edge " + context.number(p.a) + "-" + context.number(walk.stop) +
+                       "; the edge keeps segment " + context.number(std::min(existing, p.segment)));
         }
         mesh.set_constraint(h, std::min(existing, p.segment));
         if (walk.stop != p.b) {
           if (walk.stop < input_points)
-            context.note("segment " + std::to_string(p.segment) + " passes through vertex " +
-                         std::to_string(walk.stop) + ": split there");
+            context.note("segment " + context.number(p.segment) + " passes through vertex " +
+                         context.number(walk.stop) + ": split there");
           stack.push_back({walk.stop, p.b, p.segment});
         }
         continue;
@@ -185,8 +185,8 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
       const std::uint32_t h = *hit;
       const std::uint32_t u = tri.origin(h), v = tri.destination(h), j = mesh.constraint(h);
       if (++crossings > max_crossings)
-        throw InternalError("segment resolution: more crossings than segments allow (segments " + std::to_string(j) +
-                            " and " + std::to_string(p.segment) + ")");
+        throw InternalError("segment resolution: more crossings than segments allow (segments " + context.number(j) +
+                            " and " + context.number(p.segment) + ")");
       // The exact point: where the two INPUT segments meet, so that every crossing of the same
       // two segments, and every segment through the same exact point, finds the same vertex.
       // Only if that point is not strictly inside both input segments (their chains crossing
@@ -202,7 +202,7 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
       const RoundedPoint2 rounded = round_point_checked(*exact);
       const Vec2 x = rounded.point;
       if (!coordinate_in_range(x.x) || !coordinate_in_range(x.y))
-        throw InputError("segments " + std::to_string(j) + " and " + std::to_string(p.segment) +
+        throw InputError("segments " + context.number(j) + " and " + context.number(p.segment) +
                              " cross at a point outside the supported coordinate range " + point_text(x),
                          {j, p.segment});
       if (!within_rounding_bound(*exact, x)) ++result.rounding_checks_failed;
@@ -215,14 +215,14 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
         w = known->second;
       } else if (where.where == ConstrainedMesh2::Where::Vertex) {
         w = where.handle;
-        context.note("segments " + std::to_string(j) + " and " + std::to_string(p.segment) + " cross at vertex " +
-                     std::to_string(w) + (rounded.exact ? "" : " (their intersection rounds to it)"));
+        context.note("segments " + context.number(j) + " and " + context.number(p.segment) + " cross at vertex " +
+                     context.number(w) + (rounded.exact ? "" : " (their intersection rounds to it)"));
       } else {
         w = mesh.insert(x, where);
         steiner_at.emplace(std::pair{exact->x, exact->y}, w);
         ++result.crossing_steiner_points;
-        context.note("segments " + std::to_string(j) + " and " + std::to_string(p.segment) + " cross: Steiner vertex " +
-                     std::to_string(w) + " at " + point_text(x) +
+        context.note("segments " + context.number(j) + " and " + context.number(p.segment) + " cross: Steiner vertex " +
+                     context.number(w) + " at " + point_text(x) +
                      (rounded.exact ? " (exact)" : " (rounded; the pieces bend there by at most ulp/2)"));
       }
       // Process order (a stack): first segment j's chain through w, then p's.
