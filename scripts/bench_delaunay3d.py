@@ -8,8 +8,8 @@ For each size n and distribution D (verify/generators/points3d.hpp), runs on the
                                   cgal_delaunay3d_run_bench --write-node; no output files)
 RUNS times each (interleaved: round 1 of every program, then round 2, ...), and prints a Markdown
 table row per (n, distribution, program): seconds (the program's own timing of the
-tetrahedralization: dtlab's and CGAL's JSON, TetGen's "Delaunay seconds" line; minimum over the
-runs), million tetrahedra per minute, peak resident MB of the process (maximum over the runs),
+tetrahedralization: dtlab's and CGAL's JSON: wall clock; TetGen's "Delaunay seconds" line: its
+clock(), CPU time; minimum over the runs), million tetrahedra per minute, peak resident MB of the process (maximum over the runs),
 bytes of peak RSS per tetrahedron, time / CGAL, time / TetGen and time / the same program on
 uniform points of the same n (ratios of this invocation's minima), nanoseconds per point, and the
 process's CPU time. Then, per program, how flat the time per point stays from 10^4
@@ -50,6 +50,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CGAL = "cgal"
 TETGEN = "tetgen"
 PEERS = (CGAL, TETGEN)
+# TetGen times its phases with clock(), the process's CPU time; dtlab and CGAL report wall time.
+TETGEN_NOTE = ("‡ TetGen's own timing is CPU time (clock()), the others' wall time: equal on an idle "
+               "machine; on a busy one the ratios to TetGen favour TetGen (compare the process CPU column)")
 PRODUCER = ("Produced by `scripts/bench_delaunay3d.py --update-readme` (dtlab's variants through "
             "`dtlab delaunay --dim 3 --stats`, CGAL's Delaunay_triangulation_3 through "
             "`bench/cgal_delaunay3d_run_bench`, TetGen 1.5 through its Debian binary, same points).")
@@ -215,8 +218,9 @@ def table(summary, programs, cases, runs):
             per_minute = tets * 60.0 / s["seconds"] / 1e6 if s["seconds"] else None
             per_tet = s["mb"] * 1024 * 1024 / tets if s["mb"] is not None and tets else None
             name = f"**{program}**" if program in PEERS else program
+            mark = (" †" if s["runs"] < runs else "") + (" ‡" if program == TETGEN else "")
             lines.append("| " + " | ".join([
-                size_label(n), distribution, name, fmt(s["seconds"]) + (" †" if s["runs"] < runs else ""),
+                size_label(n), distribution, name, fmt(s["seconds"]) + mark,
                 fmt(per_minute), fmt(s["mb"]), fmt(per_tet), fmt(ratio(s, cgal), 2), fmt(ratio(s, tetgen), 2),
                 fmt(ratio(s, uniform), 2), fmt(s["seconds"] * 1e9 / n), fmt(s["cpu"])]) + " |")
             if s["errors"]:
@@ -225,6 +229,8 @@ def table(summary, programs, cases, runs):
         if any(0 < summary.get((n, distribution, p), {}).get("runs", runs) < runs for p in programs) and \
                 not any(note.startswith("†") for note in notes):
             notes.append(f"† fewer runs than {runs}: a run longer than the --slow limit is not repeated")
+        if TETGEN in programs and not any(note.startswith("‡") for note in notes):
+            notes.append(TETGEN_NOTE)
         if len(counts) > 1:
             notes.append(f"n={n} {distribution}: the programs disagree on the number of tetrahedra "
                          f"({sorted(counts)}): different points, duplicates or degeneracies handled "

@@ -160,8 +160,9 @@ def run_gbench(binary, out_json, repetitions, min_time, bench_filter, extra=()):
         return json.load(f)
 
 
-def runner_args(module, bins, repeats, **overrides):
-    """The argparse namespace the 2D / 3D script's measure() expects, with its defaults."""
+def runner_args(module, bins, repeats, timeout, **overrides):
+    """The argparse namespace the 2D / 3D script's measure() expects, with its defaults and the
+    report's time limit per run (seconds at 10^6 points, scaled up with n, never below it)."""
     ap = argparse.ArgumentParser()
     if module is d3:
         d3.add_arguments(ap)
@@ -169,15 +170,16 @@ def runner_args(module, bins, repeats, **overrides):
         args.dtlab, args.cgal = bins["dtlab"], bins["cgal3d"]
         d3.resolve(args)
     else:
-        args = argparse.Namespace(seed=SEED, timeout=600, slow=60, dtlab=bins["dtlab"], cgal=bins["cgal2d"])
+        args = argparse.Namespace(seed=SEED, slow=60, dtlab=bins["dtlab"], cgal=bins["cgal2d"])
     args.runs = repeats
+    args.timeout = timeout
     args.seed = SEED
     for k, v in overrides.items():
         setattr(args, k, v)
     return args
 
 
-def measure_2d(bins, plan, repeats, out):
+def measure_2d(bins, plan, repeats, timeout, out):
     programs = d2.list_variants(bins["dtlab"])
     if os.access(bins["cgal2d"], os.X_OK):
         programs.append(d2.CGAL)
@@ -194,12 +196,12 @@ def measure_2d(bins, plan, repeats, out):
         with open(os.path.join(out, "delaunay2d.json"), "w") as f:
             json.dump(data, f, indent=1)
 
-    d2.measure(runner_args(d2, bins, repeats), programs, cases, save)
+    d2.measure(runner_args(d2, bins, repeats, timeout), programs, cases, save)
     return data
 
 
-def measure_3d(bins, plan, repeats, out):
-    args = runner_args(d3, bins, repeats)
+def measure_3d(bins, plan, repeats, timeout, out):
+    args = runner_args(d3, bins, repeats, timeout)
     if not os.access(bins["cgal3d"], os.X_OK):
         progress("3D: CGAL runner not built, CGAL (and TetGen, whose points it writes) left out")
         args.no_cgal = args.no_tetgen = True
@@ -217,9 +219,9 @@ def measure(args, bins, out):
     report["predicates"] = run_gbench(bins["predicates_bench"], os.path.join(out, "predicates_bench.json"),
                                       repeats, plan["pred_min_time"], plan["pred_filter"])
     progress("2D Delaunay, one process per run (2/4)")
-    report["delaunay2d"] = measure_2d(bins, plan, repeats, out)
+    report["delaunay2d"] = measure_2d(bins, plan, repeats, args.run_limit, out)
     progress("3D Delaunay, one process per run (3/4)")
-    report["delaunay3d"] = measure_3d(bins, plan, repeats, out)
+    report["delaunay3d"] = measure_3d(bins, plan, repeats, args.run_limit, out)
     progress("2D and 3D Delaunay in-process, heap per element (4/4)")
     for suite in ("delaunay2d", "delaunay3d"):
         report[f"{suite}_gbench"] = run_gbench(bins[f"{suite}_bench"], os.path.join(out, f"{suite}_bench.json"),
@@ -318,7 +320,8 @@ def process_table(rows, peers, element, prov):
         lo, med, hi, noise = r["seconds"]
         per_tet = r["mb"] * 1024 * 1024 / r["elements"] if r["mb"] is not None and r["elements"] else None
         cells = [d2.size_label(r["n"]), r["distribution"], name, fmt(r["elements"] * 60.0 / lo / 1e6),
-                 f"{fmt(lo)} / {fmt(med)} / {fmt(hi)}" + ("" if r["runs"] > 1 else " (1 run)"),
+                 f"{fmt(lo)} / {fmt(med)} / {fmt(hi)}" + ("" if r["runs"] > 1 else " (1 run)")
+                 + (" ‡" if r["program"] == d3.TETGEN else ""),
                  f"{noise:.0f} %", fmt(r["mb"]), fmt(per_tet)]
         for p in peers:
             ratio = r.get(f"ratio_{p}")
@@ -382,6 +385,17 @@ def flat_lines(data3d):
     return d3.flatness(summary, data3d["programs"], [tuple(c) for c in data3d["cases"]])
 
 
+def busy_warning(m, load_end):
+    """A paragraph when the load average exceeded the CPU count at the start or the end."""
+    loads = list(m.get("load_average", []))[:1] + list(load_end)[:1]
+    if not loads or max(loads) <= m["cpus"]:
+        return ""
+    return (f"**The machine was busy** (1-minute load average up to {max(loads):.1f} on {m['cpus']} CPUs): "
+            "wall-clock times include waiting for a core, so absolute figures are pessimistic, the noise "
+            "is high, and only ratios between neighbouring rows mean much. Rerun on an idle machine "
+            "for figures to publish.\n")
+
+
 def report_markdown(report, plots):
     m = report["provenance"]
     prov = provenance_cell(m)
@@ -407,6 +421,7 @@ def report_markdown(report, plots):
         f"TetGen {report['delaunay3d']['machine'].get('tetgen', 'not run')} |",
         f"| repeats | {repeats} of everything, interleaved across programs; seeds fixed ({SEED}) |",
         "",
+        busy_warning(m, report.get("load_average_end", [])),
         "How to read it: a ratio is taken from this one run (the minima, then the medians); the "
         "noise column is (max − min) / min of the repeats, so a second run on the same machine "
         "should reproduce a ratio within the two programs' noise added. Times of the Delaunay "
@@ -420,6 +435,8 @@ def report_markdown(report, plots):
         if "delaunay3d_rate.png" in plots else "(plots: matplotlib not available)",
         "",
         process_table(rows3, peers3, "tets", prov),
+        "",
+        d3.TETGEN_NOTE if d3.TETGEN in peers3 else "",
         "",
         "Time per point from 10^4 up (issue 5: flat within ±20 % from 10^4 to 10^7):",
         "",
@@ -584,6 +601,9 @@ def main():
     ap.add_argument("--out", help="report directory (default BUILD/bench-report)")
     ap.add_argument("--size", choices=sorted(SIZES), default="default")
     ap.add_argument("--repeats", type=int, help="repeats of everything (default: 2 for ci, 3 otherwise)")
+    ap.add_argument("--run-limit", type=float, default=120,
+                    help="seconds a Delaunay run of up to 10^6 points may take (scaled up with n); a "
+                         "run past it is killed and reported as timed out, and not repeated")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="build jobs when building")
     ap.add_argument("--no-build", action="store_true", help="fail instead of building missing binaries")
     ap.add_argument("--from-report", help="rebuild report.md and plots of an earlier report directory")
