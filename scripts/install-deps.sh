@@ -3,7 +3,7 @@
 # Debian 12 machine). Does nothing when every package is already there.
 set -euo pipefail
 packages=(
-  build-essential cmake git ccache python3 python3-matplotlib
+  build-essential cmake git ccache python3 python3-matplotlib time
   clang-14 libclang-rt-14-dev          # libFuzzer targets and their sanitizer runtimes
   libgmp-dev libmpfr-dev               # exact fallback and correctly rounded constructions
   libcgal-dev                          # reference implementation, verify/ and bench/ only
