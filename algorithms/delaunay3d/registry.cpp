@@ -23,7 +23,7 @@ constexpr std::array kVariants = {
                       "boundary, deleted tetrahedra recycled",
                       &delaunay3d_incremental},
     Delaunay3dVariant{"flip",
-                      "insertion by a 1->4 split followed by 2->3 / 3->2 / 4->4 flips on "
+                      "insertion by a 1->4 split (2->6 on a facet, n->2n on an edge) followed by 2->3 / 3->2 / 4->4 flips on "
                       "the perturbed in-sphere test (Joe 1991; Edelsbrunner-Shah 1996)",
                       &delaunay3d_flip},
     Delaunay3dVariant{"divide-conquer", "divide and conquer (DeWall, Cignoni-Montani-Scopigno 1998)",
