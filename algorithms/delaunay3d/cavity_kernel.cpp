@@ -59,22 +59,25 @@ void CavityKernel::start(std::uint32_t a, std::uint32_t b, std::uint32_t c, std:
   last_ = 0;
 }
 
-bool CavityKernel::insert(std::uint32_t p) {
+bool CavityKernel::insert(std::uint32_t p) { return restricted_ ? insert_as<true>(p) : insert_as<false>(p); }
+
+template <bool Restricted>
+bool CavityKernel::insert_as(std::uint32_t p) {
   // Abandoned, the next walk starts from as close to p as this one got: along the Hilbert
   // curve, the next point is near, and the way round an unowned region follows the curve.
   std::uint32_t stopped = kNone;
-  const std::uint32_t base = locate(p, &stopped);
+  const std::uint32_t base = walk<Restricted>(p, &stopped);
   if (base == kNone) {
     last_ = stopped;
     return false;
   }
-  if (!grow_cavity(base, p)) {
+  if (!grow_cavity<Restricted>(base, p)) {
     clear_marks();
     last_ = base;
     return false;
   }
   // A restricted kernel cannot grow the shared records: it checks its slots before writing.
-  if (restricted_ && boundary_.size() > cavity_.size() + spare_slots()) {
+  if (Restricted && boundary_.size() > cavity_.size() + spare_slots()) {
     clear_marks();
     return false;
   }
@@ -159,12 +162,17 @@ bool CavityKernel::conflicts(std::uint32_t t, const Vec3& p) const noexcept {
 // (Edelsbrunner 1990). Restricted, last_ is owned, the walk crosses only into tetrahedra it owns
 // (checking the one vertex a neighbour adds to the facet crossed), and where it can go no
 // further it gives kNone and, in *stopped, the owned tetrahedron it reached.
-std::uint32_t CavityKernel::locate(std::uint32_t pid, std::uint32_t* stopped) const {
+std::uint32_t CavityKernel::locate(std::uint32_t p, std::uint32_t* stopped) const {
+  return restricted_ ? walk<true>(p, stopped) : walk<false>(p, stopped);
+}
+
+template <bool Restricted>
+std::uint32_t CavityKernel::walk(std::uint32_t pid, std::uint32_t* stopped) const {
   const Vec3& p = p_[pid];
   std::uint32_t t = last_;
   if (r_[t].vertex[0] == kInf) {
     const std::uint32_t h = r_[t].neighbour[0];
-    if (!owns_apex(h)) {
+    if (!owns_apex<Restricted>(h)) {
       if (stopped != nullptr) *stopped = t;
       return kNone;
     }
@@ -181,7 +189,7 @@ std::uint32_t CavityKernel::locate(std::uint32_t pid, std::uint32_t* stopped) co
       if (i == entered) continue;
       const auto& f = kFacet[i];
       if (orient3d(p_[v[f[0]]], p_[v[f[1]]], p_[v[f[2]]], p) == Sign::Negative) {
-        if (!owns_apex(r_[t].neighbour[i])) {
+        if (!owns_apex<Restricted>(r_[t].neighbour[i])) {
           blocked = true;
           continue;
         }
@@ -213,6 +221,7 @@ void CavityKernel::enter_cavity(std::uint32_t t) noexcept {
 // each as the cavity tetrahedron lists it (counter-clockwise seen from P). Restricted: false as
 // soon as a tetrahedron in conflict is not owned; a neighbour not owned is not marked (it may
 // be tested again through another facet, with the same answer).
+template <bool Restricted>
 bool CavityKernel::grow_cavity(std::uint32_t base, std::uint32_t pid) {
   const Vec3& p = p_[pid];
   cavity_.clear();
@@ -226,11 +235,11 @@ bool CavityKernel::grow_cavity(std::uint32_t base, std::uint32_t pid) {
       const std::uint32_t mark = r_[u].vertex[3] & kMarks;
       if (mark == 0) {
         if (conflicts(u, p)) {
-          if (!owns_apex(outer)) return false;
+          if (!owns_apex<Restricted>(outer)) return false;
           enter_cavity(u);
           continue;
         }
-        if (owns_apex(outer)) r_[u].vertex[3] |= kOutside;  // cleared when B_P links to it
+        if (owns_apex<Restricted>(outer)) r_[u].vertex[3] |= kOutside;  // cleared when B_P links to it
       } else if (mark == kInCavity) {
         continue;
       }

@@ -118,7 +118,15 @@ class CavityKernel {
   std::uint32_t& twin(std::uint32_t h) noexcept { return r_[h >> 2].neighbour[h & 3u]; }
   // The vertex of the tetrahedron of h opposite h (marks removed).
   std::uint32_t apex(std::uint32_t h) const noexcept;
-  bool owns_apex(std::uint32_t h) const noexcept { return !restricted_ || owned_.owns(apex(h)); }
+  // Restricted is restricted_, as a constant: the sequential kernel carries no ownership test.
+  template <bool Restricted>
+  bool owns_apex(std::uint32_t h) const noexcept {
+    return !Restricted || owned_.owns(apex(h));
+  }
+  template <bool Restricted>
+  bool insert_as(std::uint32_t p);
+  template <bool Restricted>
+  std::uint32_t walk(std::uint32_t p, std::uint32_t* stopped) const;
 
   void grow_chunk(std::size_t k);
   std::uint32_t new_slot();
@@ -129,6 +137,7 @@ class CavityKernel {
   bool same_vertices(std::uint32_t g, std::uint32_t h) const noexcept;
   bool conflicts(std::uint32_t t, const Vec3& p) const noexcept;
   void enter_cavity(std::uint32_t t) noexcept;
+  template <bool Restricted>
   bool grow_cavity(std::uint32_t base, std::uint32_t p);
   void clear_marks() noexcept;
   void fill_ball(std::uint32_t p);

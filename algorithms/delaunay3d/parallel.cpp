@@ -71,7 +71,8 @@ class ParallelInsertion {
     CavityKernel& kernel = kernels_[0];
     kernel.refresh_views();
     kernel.lift_restriction();
-    for (const std::uint32_t p : pending_) DTLAB_ASSERT(kernel.insert(p));
+    for (const std::uint32_t p : pending_)
+      if (!kernel.insert(p)) throw InternalError("parallel 3D Delaunay: an unrestricted insertion was abandoned");
     inserted_ += pending_.size();
     pending_.clear();
   }
