@@ -38,7 +38,7 @@ class OpenFacets {
         if (++size_ * 2 > slots_.size()) rehash(2 * slots_.size());
         return kAbsent;
       }
-      if (s.key == k) {
+      if (same(s.key, k)) {
         const std::uint32_t found = s.handle;
         erase_at(i);
         return found;
@@ -52,7 +52,7 @@ class OpenFacets {
     std::size_t i = home(k);
     for (std::size_t probes = 0; probes <= mask_; ++probes, i = (i + 1) & mask_) {
       if (slots_[i].handle == kAbsent) break;
-      if (slots_[i].key == k) {
+      if (same(slots_[i].key, k)) {
         erase_at(i);
         return;
       }
@@ -65,6 +65,8 @@ class OpenFacets {
     Key key;
     std::uint32_t handle = kAbsent;
   };
+
+  static bool same(const Key& s, const Key& t) noexcept { return s[0] == t[0] && s[1] == t[1] && s[2] == t[2]; }
 
   std::size_t home(const Key& k) const noexcept {
     std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;

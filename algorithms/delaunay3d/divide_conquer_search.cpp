@@ -237,8 +237,8 @@ void ApexSearch::explore(std::uint32_t subtree, Query& q) {
     stack_.pop_back();
     const KdNode& node = nodes[k];
     ++nodes_visited_;
-    if (!q.plane.may_reach(node.low, node.high)) continue;
     if (q.sphere.bounded && !q.sphere.may_reach(node.low, node.high)) continue;
+    if (!q.plane.may_reach(node.low, node.high)) continue;
     if (node.is_leaf()) {
       for (std::uint32_t r = node.begin; r < node.end; ++r) {
         if (r == q.a || r == q.b || r == q.c) continue;  // on the plane; orient3d would need its slow stages to say so

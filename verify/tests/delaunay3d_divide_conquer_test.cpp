@@ -157,7 +157,7 @@ TEST(Delaunay3dDivideConquer, Clustered) {
   for (int c = 0; c < 12; ++c) {
     const Vec3 centre{u(rng), u(rng), u(rng)};
     const double spread = std::ldexp(1.0, -3 * c);
-    for (int k = 0; k < 400 + 50 * c; ++k)
+    for (int k = 0; k < 150 + 20 * c; ++k)
       points.push_back({centre.x + spread * g(rng), centre.y + spread * g(rng), centre.z + spread * g(rng)});
   }
   expect_matches_incremental(points, "clusters");
