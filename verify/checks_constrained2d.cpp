@@ -354,6 +354,7 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
 
   std::vector<std::pair<std::uint32_t, std::uint32_t>> steiner_on;  // (Steiner vertex, segment)
   std::vector<std::uint32_t> stamp(P.size(), 0), parent(P.size(), T2::kNone), stack, chain;
+  const std::size_t crossing_end = n + result.crossing_steiner_points;  // crossings come first
   for (std::size_t k = 0; k < input.segments.size(); ++k) {
     const auto [a0, b0] = input.segments[k];
     if (a0 >= n || b0 >= n) {
@@ -409,26 +410,39 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
     for (std::uint32_t v = b; v != a; v = parent[v]) chain.push_back(v);
     chain.push_back(a);
     r.chain_edges += chain.size() - 1;
-    // Each Steiner vertex within its rounding bound of an exact point of AB, or of the piece
-    // between its nearest older neighbours on the chain: the piece it split when it was
-    // inserted (vertex ids grow with insertion; later vertices only split pieces further).
+    // Each Steiner vertex within its rounding bound of an exact point of AB, or of the piece it
+    // split when it was inserted: a piece between two older vertices of the chain, one on each
+    // side (vertex ids grow with insertion). Later vertices only split pieces further, but an
+    // older vertex found exactly on a later piece joins the chain there, so the piece's ends are
+    // among the nearest few older vertices on each side, not always the nearest.
+    constexpr int kOlderTried = 4;
     for (std::size_t i = 1; i + 1 < chain.size(); ++i) {
       const std::uint32_t v = chain[i];
       if (v < n) continue;
       steiner_on.push_back({v, static_cast<std::uint32_t>(k)});
       if (within_rounding_bound_of_segment(P[v], A, B)) continue;
-      std::size_t lo = i + 1, hi = i - 1;
-      while (chain[lo] > v) ++lo;
-      while (chain[hi] > v) --hi;
-      if (!within_rounding_bound_of_segment(P[v], P[chain[hi]], P[chain[lo]]))
+      std::vector<std::uint32_t> before, after;
+      for (std::size_t j = i + 1; j < chain.size() && before.size() < kOlderTried; ++j)
+        if (chain[j] < v) before.push_back(chain[j]);
+      for (std::size_t j = i; j-- > 0 && after.size() < kOlderTried;)
+        if (chain[j] < v) after.push_back(chain[j]);
+      bool within = false;
+      for (std::size_t x = 0; x < before.size() && !within; ++x)
+        for (std::size_t y = 0; y < after.size() && !within; ++y)
+          within = within_rounding_bound_of_segment(P[v], P[before[x]], P[after[y]]);
+      if (!within)
         r.add_problem("Steiner " + name.point(v) + " " + coordinates(P[v]) + " on the chain of " + name.segment(k) +
-                      " is not within its rounding bound of the segment nor of the piece " +
-                      name.edge(chain[lo], chain[hi]) + " it splits");
+                      " is not within its rounding bound of the segment nor of a piece between older points of "
+                      "the chain around it (nearest: " +
+                      name.edge(before.front(), after.front()) + ")");
     }
   }
 
-  // Steiner points: on some chain; where two crossing segments' chains meet, within the rounding
-  // bound of their exact intersection.
+  // Steiner points: on some chain. The crossing points (numbered first among the Steiner
+  // points: segments are resolved before any method splits them) on the chains of two crossing
+  // segments: within the rounding bound of the exact intersection of some such pair. (A split
+  // point may lie on two chains too, where a later piece of another segment runs exactly
+  // through it; its bound is the piece's, checked above.)
   std::sort(steiner_on.begin(), steiner_on.end());
   std::size_t i = 0;
   for (std::uint32_t v = static_cast<std::uint32_t>(n); v < P.size(); ++v) {
@@ -438,6 +452,7 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
       r.add_problem("Steiner " + name.point(v) + " " + coordinates(P[v]) + " lies on no segment's chain");
       continue;
     }
+    if (v >= crossing_end) continue;
     const std::size_t end = std::min(i, begin + 16);  // pairs among the first 16 segments through it
     bool crossing = false, within = false;
     std::string pair;

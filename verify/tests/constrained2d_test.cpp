@@ -326,7 +326,7 @@ TEST(Constrained2dChecks, RejectAMovedSteinerPoint) {
   ASSERT_FALSE(within_rounding_bound(*exact, x));
   const std::string text = problems_of(b, r, "cdt");
   EXPECT_NE(text.find("is not within its rounding bound of their exact intersection"), std::string::npos) << text;
-  EXPECT_NE(text.find("is not within its rounding bound of the segment nor of the piece"), std::string::npos) << text;
+  EXPECT_NE(text.find("is not within its rounding bound of the segment nor of a piece"), std::string::npos) << text;
 }
 
 TEST(Constrained2dChecks, RejectAClockwiseTriangleAndABadDomain) {
