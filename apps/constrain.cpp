@@ -12,7 +12,9 @@
 
 #include "algorithms/constrained2d/constrained2d.hpp"
 #include "algorithms/constrained2d/registry.hpp"
+#include "algorithms/constrained3d/constrained3d.hpp"
 #include "apps/cli_util.hpp"
+#include "apps/constrain3d.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit.hpp"
@@ -26,7 +28,7 @@ namespace {
 struct ConstrainArgs {
   std::string input;
   std::string output;
-  std::string method = "cdt";
+  std::string method;  // empty: the dimension's default (cdt in 2D, conforming in 3D)
   bool keep_exterior = false;
   bool stats = false;
   bool verify = false;
@@ -60,12 +62,18 @@ GraphInput read_graph(const std::string& path) {
   return in;
 }
 
-int run_constrain(const ConstrainArgs& args) {
+int run_constrain(ConstrainArgs args) {
   if (args.list) {
+    std::cout << "2D (planar straight line graphs):\n";
     for (const Constrained2dMethod& m : constrained2d_methods()) std::cout << m.name << "\t" << m.description << "\n";
-    return 0;
+    std::cout << "3D (piecewise linear complexes):\n";
+    return list_constrained3d_methods();
   }
-  if (args.input.empty()) throw InputError("give an INPUT .poly or .mesh file");
+  if (args.input.empty()) throw InputError("give an INPUT file (.poly, .mesh; in 3D also .smesh, .off, .stl)");
+  if (is_surface_input(args.input))
+    return run_constrain3d({args.input, args.output, args.method.empty() ? "conforming" : args.method,
+                            args.keep_exterior, args.stats, args.verify});
+  if (args.method.empty()) args.method = "cdt";
   const GraphInput graph = read_graph(args.input);
   const PolyData2& poly = graph.poly;
   std::vector<RegionSeed2> regions;
@@ -137,14 +145,21 @@ int run_constrain(const ConstrainArgs& args) {
 
 void add_constrain(CLI::App& app) {
   auto args = std::make_shared<ConstrainArgs>();
-  CLI::App* cmd = app.add_subcommand("constrain", "Constrained triangulation of a planar straight line graph (.poly, .mesh)");
+  CLI::App* cmd = app.add_subcommand(
+      "constrain",
+      "Constrained triangulation of a planar straight line graph (.poly, .mesh) or tetrahedralization of a "
+      "piecewise linear complex (TetGen .poly/.smesh, Medit .mesh, OFF, STL)");
   cmd->add_option("input", args->input,
-                  "Triangle .poly file (vertices, segments with markers, holes, regions) or Medit .mesh (Vertices, "
-                  "Edges with references as markers)");
+                  "2D: Triangle .poly file (vertices, segments with markers, holes, regions) or Medit .mesh (Vertices, "
+                  "Edges with references as markers); 3D: TetGen .poly/.smesh, Medit .mesh (Dimension 3, Triangles), "
+                  ".off, .stl (a closed triangulated surface, internal faces allowed)");
   cmd->add_option("-o,--output", args->output, "Write OUT.mesh (Medit): Vertices, Edges with markers, Triangles with regions");
   std::string names;
   for (const Constrained2dMethod& m : constrained2d_methods()) names += (names.empty() ? "" : "|") + std::string(m.name);
-  cmd->add_option("--method", args->method, "Method: " + names)->capture_default_str();
+  std::string names3;
+  for (const auto& m : constrained3d_method_list()) names3 += (names3.empty() ? "" : "|") + std::string(m.name);
+  cmd->add_option("--method", args->method,
+                  "Method; 2D: " + names + " (default cdt); 3D: " + names3 + " (default conforming)");
   cmd->add_flag("--keep-exterior", args->keep_exterior, "Keep the triangles outside the segments (holes are still removed)");
   cmd->add_flag("--stats", args->stats, "Print one JSON object with counts, seconds and predicate stages as the last line");
   cmd->add_flag("--verify", args->verify,

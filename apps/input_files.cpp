@@ -22,24 +22,25 @@ std::string without_extension(const std::string& path) {
 
 int input_dimension(const std::string& path) {
   const std::string ext = extension_of(path);
-  if (ext != "node" && ext != "mesh") return point_file_dimension(path);
+  if (ext != "node" && ext != "mesh" && ext != "poly") return point_file_dimension(path);
   std::ifstream in(path);
   if (!in) throw InputError("cannot open '" + path + "'");
-  // The readers check everything else; this only looks for the dimension: a .node header's
-  // second number (absent: 2), a .mesh file's Dimension keyword (absent: 3, Medit's default).
+  // The readers check everything else; this only looks for the dimension: a .node or .poly
+  // header's second number (absent: 2, Triangle's default), a .mesh file's Dimension keyword
+  // (absent: 3, Medit's default).
   std::string line;
   while (std::getline(in, line)) {
     const std::string content = line.substr(0, line.find('#'));
     std::istringstream words(content);
     std::string first, second;
     if (!(words >> first)) continue;
-    if (ext == "node") return (words >> second) ? (second == "3" ? 3 : 2) : 2;
+    if (ext != "mesh") return (words >> second) ? (second == "3" ? 3 : 2) : 2;
     if (first == "Dimension") {
       if (!(words >> second) && !(in >> second)) break;
       return second == "2" ? 2 : 3;
     }
   }
-  return ext == "node" ? 2 : 3;
+  return ext == "mesh" ? 3 : 2;
 }
 
 std::vector<Vec2> read_points2(const std::string& path) {

@@ -10,8 +10,8 @@
 
 namespace dtlab::cli {
 
-// 2 or 3: the dimension of a point or mesh input: a .mesh file's Dimension keyword, a .node
-// file's header (Triangle's 2 or TetGen's 3), the numbers per line of a plain point file.
+// 2 or 3: the dimension of a point or mesh input: a .mesh file's Dimension keyword, a .node or
+// .poly file's header (Triangle's 2 or TetGen's 3), the numbers per line of a plain point file.
 int input_dimension(const std::string& path);
 
 // Points of a 2D input: Triangle .node, Medit .mesh (its Vertices), or a plain point file.

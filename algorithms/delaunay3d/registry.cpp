@@ -29,8 +29,8 @@ constexpr std::array kVariants = {
     Delaunay3dVariant{"divide-conquer", "divide and conquer (DeWall, Cignoni-Montani-Scopigno 1998)",
                       &delaunay3d_divide_conquer},
     Delaunay3dVariant{"parallel",
-                      "multi-threaded Delaunay kernel (--threads): Hilbert slices owned by threads, "
-                      "insertions whose cavity leaves the slice deferred (Marot-Pellerin-Remacle 2019)",
+                      "Delaunay kernel on several threads (--threads): each owns a slab of space (x, then y, then z "
+                      "cuts), insertions whose walk or cavity leaves it deferred (after Marot-Pellerin-Remacle 2019)",
                       &delaunay3d_parallel},
 };
 
