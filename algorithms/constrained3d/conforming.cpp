@@ -6,6 +6,7 @@
 // mesh faces (circumcentres; encroached boundary pieces split first). Every round adds a point,
 // so the Steiner limit bounds the rounds.
 #include <chrono>
+#include <string>
 #include <vector>
 
 #include "algorithms/constrained3d/recovery.hpp"
@@ -44,7 +45,12 @@ void constrained3d_conforming(Constrained3dContext& c) {
     const std::size_t added = splits.empty() && points.empty() ? 0 : inserter.insert(splits, points);
     c.face_seconds += std::chrono::duration<double>(Clock::now() - start).count();
     if (splits.empty() && points.empty()) break;
-    DTLAB_ASSERT(added > 0);
+    if (added == 0) {
+      const std::uint32_t f = inserter.stuck_facet();
+      throw InputError("constrained3d: triangle " + std::to_string(f + 1) +
+                           " cannot be recovered: its Steiner points round onto existing vertices",
+                       {f});
+    }
   }
   c.rounding_checks_failed = inserter.rounding_checks_failed();
 }

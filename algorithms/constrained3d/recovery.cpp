@@ -43,10 +43,6 @@ Vec3 triangle_circumcenter(const Vec3& a, const Vec3& b, const Vec3& c) {
   return {a.x + (ac2 * u.x + ab2 * v.x) / d, a.y + (ac2 * u.y + ab2 * v.y) / d, a.z + (ac2 * u.z + ab2 * v.z) / d};
 }
 
-double circumradius2(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 o = triangle_circumcenter(a, b, c), d = sub(a, o);
-  return dot(d, d);
-}
 
 std::uint64_t coordinate_hash(const Vec3& p) {
   std::uint64_t h = 0;
@@ -205,12 +201,17 @@ void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const F
   const auto p = c.mesh.points();
   const auto [u, v] = piece;
   const St &pu = st.at(u), &pv = st.at(v);
+  // The Delaunay apex: the smallest signed offset of the circumcentre from the midpoint of
+  // (u, v) towards the left, in the plane of the triangle.
+  const Vec3 normal = cross(p[facet.corners[1]] - p[facet.corners[0]], p[facet.corners[2]] - p[facet.corners[0]]);
+  const Vec3 left = cross(normal, p[v] - p[u]);
+  const Vec3 mid = 0.5 * (p[u] + p[v]);
   std::uint32_t w = T3::kNone;
   double best = 0;
   for (const auto& [x, px] : st) {
     if (orient_st(pu, pv, px).sign() != Sign::Positive) continue;
-    const double r2 = circumradius2(p[u], p[v], p[x]);
-    if (w == T3::kNone || r2 < best || (r2 == best && x < w)) w = x, best = r2;
+    const double offset = dot(triangle_circumcenter(p[u], p[v], p[x]) - mid, left);
+    if (w == T3::kNone || offset < best || (offset == best && x < w)) w = x, best = offset;
   }
   DTLAB_ASSERT(w != T3::kNone);
   // The circumcentre as (s, t): least squares on the triangle's edge vectors.
@@ -223,39 +224,45 @@ void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const F
     return std::isfinite(s0) && std::isfinite(t0) && s0 > 0 && t0 > 0 &&
            Rational(s0) + Rational(t0) < Rational(1);
   };
-  if (inside(s, t)) {
-    // Ruppert's rule: a point in the closed diametral ball of a boundary piece splits the piece.
-    const ExactPoint3 x = exact_facet_point(p, facet.corners, s, t);
-    bool encroached = false;
-    for (int k = 0; k < 3; ++k) {
-      const ConstraintEdge3& edge = c.edges[facet.edges[k]];
-      for (std::size_t j = 0; j + 1 < edge.chain.size(); ++j) {
-        const ExactPoint3 a = to_exact(p[edge.chain[j]]), b = to_exact(p[edge.chain[j + 1]]);
-        const Rational dot_ab =
-            (x.x - a.x) * (x.x - b.x) + (x.y - a.y) * (x.y - b.y) + (x.z - a.z) * (x.z - b.z);
-        if (dot_ab.sign() != Sign::Positive) {
-          splits.push_back({facet.edges[k], edge_split_parameter(c, facet.edges[k], j)});
-          encroached = true;
-        }
-      }
-    }
-    if (!encroached) points.push_back({f, s, t});
-    return;
-  }
-  // Outside the triangle: the pieces near it are split when they are encroached; the centroid
-  // of (u, v, w) is inside.
+  // The centroid of (u, v, w) is inside the triangle.
   const St& pw = st.at(w);
   const Rational third(1, 3);
-  s = round_to_double((pu[0] + pv[0] + pw[0]) * third);
-  t = round_to_double((pu[1] + pv[1] + pw[1]) * third);
-  if (!inside(s, t))
+  const double cs = round_to_double((pu[0] + pv[0] + pw[0]) * third);
+  const double ct = round_to_double((pu[1] + pv[1] + pw[1]) * third);
+  if (!inside(cs, ct))
     throw InputError("constrained3d: triangle " + std::to_string(f + 1) + " cannot be recovered in doubles", {f});
-  points.push_back({f, s, t});
+  if (!inside(s, t)) {
+    points.push_back({f, cs, ct, cs, ct, piece});
+    return;
+  }
+  // Ruppert's rule: a point in the closed diametral ball of a boundary piece splits the piece.
+  const ExactPoint3 x = exact_facet_point(p, facet.corners, s, t);
+  bool encroached = false;
+  for (int k = 0; k < 3; ++k) {
+    const ConstraintEdge3& edge = c.edges[facet.edges[k]];
+    for (std::size_t j = 0; j + 1 < edge.chain.size(); ++j) {
+      const ExactPoint3 a = to_exact(p[edge.chain[j]]), b = to_exact(p[edge.chain[j + 1]]);
+      const Rational dot_ab = (x.x - a.x) * (x.x - b.x) + (x.y - a.y) * (x.y - b.y) + (x.z - a.z) * (x.z - b.z);
+      if (dot_ab.sign() != Sign::Positive) {
+        splits.push_back({facet.edges[k], edge_split_parameter(c, facet.edges[k], j)});
+        encroached = true;
+      }
+    }
+  }
+  if (!encroached) points.push_back({f, s, t, cs, ct, piece});
 }
 
 SteinerInserter::SteinerInserter(Constrained3dContext& c) : c_(c), inserter_(c.mesh) {
   const auto p = c.mesh.points();
   for (std::uint32_t v = 0; v < p.size(); ++v) by_coordinates_[coordinate_hash(p[v])].push_back(v);
+}
+
+bool SteinerInserter::is_vertex(const Vec3& p) const {
+  const auto it = by_coordinates_.find(coordinate_hash(p));
+  if (it == by_coordinates_.end()) return false;
+  for (const std::uint32_t v : it->second)
+    if (c_.mesh.points()[v] == p) return true;
+  return false;
 }
 
 std::uint32_t SteinerInserter::add_vertex(const Vec3& p, const std::string& what, std::uint32_t item) {
@@ -277,40 +284,63 @@ std::uint32_t SteinerInserter::add_vertex(const Vec3& p, const std::string& what
   return id;
 }
 
+bool SteinerInserter::insert_split(const EdgeSplit& r) {
+  const auto p = c_.mesh.points();
+  ConstraintEdge3& edge = c_.edges[r.edge];
+  const auto at = std::lower_bound(edge.t.begin(), edge.t.end(), r.t);
+  if (at != edge.t.end() && *at == r.t) return false;
+  const RoundedPoint3 x = point_on_segment(p[edge.a], p[edge.b], Rational(r.t));
+  const std::string what = "the edge between vertices " + std::to_string(edge.a + 1) + " and " +
+                           std::to_string(edge.b + 1) + " (of triangle " + std::to_string(edge.face + 1) + ")";
+  SteinerPoint3 s{.kind = SteinerPoint3::Kind::OnEdge, .owner = edge.face, .support = {edge.a, edge.b, 0},
+                  .parameters = {r.t, 0}};
+  const auto pos = at - edge.t.begin();
+  const std::uint32_t id = add_vertex(x.point, what, edge.face);
+  if (!steiner_point_within_rounding_bound(c_.mesh.points(), s, x.point)) ++rounding_failed_;
+  c_.steiner.push_back(s);
+  edge.t.insert(edge.t.begin() + pos, r.t);
+  edge.chain.insert(edge.chain.begin() + pos, id);
+  return true;
+}
+
 std::size_t SteinerInserter::insert(const std::vector<EdgeSplit>& splits, const std::vector<FacetPoint>& points) {
   std::size_t count = 0;
   const auto p = [&] { return c_.mesh.points(); };
-  for (const auto& r : splits) {
-    ConstraintEdge3& edge = c_.edges[r.edge];
-    const auto at = std::lower_bound(edge.t.begin(), edge.t.end(), r.t);
-    if (at != edge.t.end() && *at == r.t) continue;
-    const RoundedPoint3 x = point_on_segment(p()[edge.a], p()[edge.b], Rational(r.t));
-    const std::string what = "the edge between vertices " + std::to_string(edge.a + 1) + " and " +
-                             std::to_string(edge.b + 1) + " (of triangle " + std::to_string(edge.face + 1) + ")";
-    SteinerPoint3 s{.kind = SteinerPoint3::Kind::OnEdge, .owner = edge.face, .support = {edge.a, edge.b, 0},
-                    .parameters = {r.t, 0}};
-    const std::uint32_t id = add_vertex(x.point, what, edge.face);
-    if (!steiner_point_within_rounding_bound(p(), s, x.point)) ++rounding_failed_;
-    c_.steiner.push_back(s);
-    const auto pos = at - edge.t.begin();
-    edge.t.insert(edge.t.begin() + pos, r.t);
-    edge.chain.insert(edge.chain.begin() + pos, id);
-    ++count;
-  }
+  for (const auto& r : splits) count += insert_split(r);
   for (const auto& r : points) {
     ConstraintFacet3& facet = c_.facets[r.facet];
+    // The same point asked for twice in a round (two missing pieces of one triangle): once.
     if (std::find(facet.interior_st.begin(), facet.interior_st.end(), std::array<double, 2>{r.s, r.t}) !=
         facet.interior_st.end())
       continue;
-    const Vec3 x = round_point(exact_facet_point(p(), facet.corners, r.s, r.t));
-    SteinerPoint3 s{.kind = SteinerPoint3::Kind::OnFace, .owner = r.facet, .support = facet.corners,
-                    .parameters = {r.s, r.t}};
-    const std::uint32_t id = add_vertex(x, "triangle " + std::to_string(r.facet + 1), r.facet);
-    if (!steiner_point_within_rounding_bound(p(), s, x)) ++rounding_failed_;
-    c_.steiner.push_back(s);
-    facet.interior.push_back(id);
-    facet.interior_st.push_back({r.s, r.t});
-    ++count;
+    for (const auto [s0, t0] : {std::array<double, 2>{r.s, r.t}, std::array<double, 2>{r.fallback_s, r.fallback_t}}) {
+      const Vec3 x = round_point(exact_facet_point(p(), facet.corners, s0, t0));
+      if (is_vertex(x) && (s0 != r.fallback_s || t0 != r.fallback_t)) continue;
+      if (is_vertex(x)) {
+        // Both placements are taken: split the missing piece itself if it is on the boundary.
+        bool split = false;
+        for (const std::uint32_t e : facet.edges) {
+          const auto& chain = c_.edges[e].chain;
+          for (std::size_t j = 0; j + 1 < chain.size() && !split; ++j)
+            if (MeshIndex::key(chain[j], chain[j + 1]) == MeshIndex::key(r.piece[0], r.piece[1])) {
+              count += insert_split({e, edge_split_parameter(c_, e, j)});
+              split = true;
+            }
+        }
+        if (split) break;
+        stuck_facet_ = r.facet;  // nothing to place: the caller decides whether that stalls it
+        break;
+      }
+      SteinerPoint3 s{.kind = SteinerPoint3::Kind::OnFace, .owner = r.facet, .support = facet.corners,
+                      .parameters = {s0, t0}};
+      const std::uint32_t id = add_vertex(x, "triangle " + std::to_string(r.facet + 1), r.facet);
+      if (!steiner_point_within_rounding_bound(p(), s, x)) ++rounding_failed_;
+      c_.steiner.push_back(s);
+      facet.interior.push_back(id);
+      facet.interior_st.push_back({s0, t0});
+      ++count;
+      break;
+    }
   }
   return count;
 }

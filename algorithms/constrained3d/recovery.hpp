@@ -41,6 +41,10 @@ struct EdgeSplit {
 struct FacetPoint {
   std::uint32_t facet = 0;
   double s = 0, t = 0;
+  // Taken instead when (s, t) rounds onto an existing vertex (a circumcentre can be one); when
+  // that does too, the missing piece is split if it is a boundary piece.
+  double fallback_s = 0, fallback_t = 0;
+  std::array<std::uint32_t, 2> piece{};
 };
 
 // The split parameter of piece [chain[i], chain[i + 1]] of edge e: on concentric shells
@@ -66,31 +70,40 @@ std::vector<std::array<std::uint32_t, 2>> facet_boundary(const Constrained3dCont
 bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& index,
                  std::vector<std::array<std::uint32_t, 2>>& missing);
 
-// Where facet f gets a point for its missing piece (u, v) (u, v on its left in (s, t)): the
-// circumcentre of (u, v, w), w the vertex of f on the left with the smallest circumradius, as
-// a point of the triangle; unless it lies in the closed diametral ball of boundary pieces of f,
-// which are split instead (Ruppert's rule), or outside the triangle (then the centroid of
-// (u, v, w)). Appends to `splits` or `points`.
+// Where facet f gets a point for its missing piece (u, v) (f on its left in (s, t)): the
+// circumcentre of (u, v, w), w the Delaunay apex of (u, v) among the vertices of f on its left
+// (the one whose circumcentre lies furthest back across (u, v), measured in the triangle's
+// plane in doubles: a placement, not a decision), as a point of the triangle; unless it lies
+// in the closed diametral ball of boundary pieces of f, which are split instead (Ruppert's
+// rule), or outside the triangle (then the centroid of (u, v, w), which is also the fallback).
+// Appends to `splits` or `points`.
 void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const FacetParameters& st,
                          std::array<std::uint32_t, 2> missing, std::vector<EdgeSplit>& splits,
                          std::vector<FacetPoint>& points);
 
 // Inserts requested points: each computed exactly, rounded to nearest, recorded in c.steiner,
 // added to its edge's chain (kept sorted) or its facet's interior, and inserted into c.mesh.
-// A request that repeats a parameter already there is dropped. Throws InputError naming the
-// edge or triangle when a rounded point equals an existing vertex or the Steiner limit is
-// reached. Returns the number inserted.
+// An edge split that repeats a parameter already there is dropped; a facet point that rounds
+// onto a vertex falls back as FacetPoint says, and is skipped (stuck_facet()) when every
+// placement is taken. Throws InputError naming the edge or triangle when an edge split rounds
+// onto a vertex or the Steiner limit is reached.
+// Returns the number inserted.
 class SteinerInserter {
  public:
   explicit SteinerInserter(Constrained3dContext& c);
   std::size_t insert(const std::vector<EdgeSplit>& splits, const std::vector<FacetPoint>& points);
   std::uint32_t rounding_checks_failed() const noexcept { return rounding_failed_; }
+  // The last triangle whose request could not be placed at all (kNone if none).
+  std::uint32_t stuck_facet() const noexcept { return stuck_facet_; }
 
  private:
   std::uint32_t add_vertex(const Vec3& p, const std::string& what, std::uint32_t item);
+  bool is_vertex(const Vec3& p) const;
+  bool insert_split(const EdgeSplit& r);
   Constrained3dContext& c_;
   DelaunayInserter inserter_;
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> by_coordinates_;
   std::uint32_t rounding_failed_ = 0;
+  std::uint32_t stuck_facet_ = Tetrahedralization3::kNone;
 };
 }  // namespace dtlab

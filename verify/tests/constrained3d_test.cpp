@@ -197,11 +197,12 @@ struct CheckedRun {
 
 // Everything the issue asks of a result, exactly. `triangles` are the input's.
 CheckedRun run_and_check(const ClosedSurface3& s, const std::string& method = "conforming",
-                         std::span<const int> refs = {}, std::span<const Vec3> holes = {}) {
+                         std::span<const int> refs = {}, std::span<const Vec3> holes = {},
+                         std::uint32_t steiner_limit_factor = 200) {
   CheckedRun out;
   Constrained3dResult& r = out.result;
   r = constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = refs, .holes = holes, .regions = {}},
-                    {.method = method});
+                    {.method = method, .steiner_limit_factor = steiner_limit_factor});
   const auto& v = r.vertices;
   EXPECT_EQ(r.input_point_count, s.points.size());
   EXPECT_TRUE(std::equal(s.points.begin(), s.points.end(), v.begin()));
@@ -519,7 +520,18 @@ RC_GTEST_PROP(Constrained3dProperty, RandomStarShapedSurfaces, ()) {
   const auto factors = *rc::gen::container<std::vector<int>>(7, rc::gen::inRange(3, 17));
   const ClosedSurface3 s = random_star(lattice, factors);
   RC_ASSERT(exact_volume6(s.points, s.triangles).sign() == Sign::Positive);
-  const auto run = run_and_check(s);
+  // Conforming Delaunay needs a number of points that grows with the square of (size / local
+  // feature size); a vertex that lands very near a face makes that impractical. Such cases must
+  // end with the limit's InputError naming a triangle, and are counted, not checked further.
+  CheckedRun run;
+  try {
+    run = run_and_check(s, "conforming", {}, {}, 20);
+  } catch (const InputError& e) {
+    RC_ASSERT(std::string(e.what()).find("limit") != std::string::npos);
+    RC_ASSERT(e.items().size() == 1u);
+    RC_TAG("Steiner limit reached");
+    return;
+  }
   RC_ASSERT(!::testing::Test::HasFailure());
   RC_ASSERT(run.result.region_count == 1u);
   RC_TAG(run.result.steiner_points.total() == 0 ? "no Steiner point" : "Steiner points");
