@@ -48,7 +48,7 @@ int run_verify3(const VerifyArgs& args) {
 }
 
 int run_verify(const VerifyArgs& args) {
-  if (input_dimension(args.mesh) == 3) return run_verify3(args);
+  if (input_dimension(args.points) == 3) return run_verify3(args);
   const std::vector<Vec2> points = read_points2(args.points);
   const MeshData2 mesh = read_mesh2(args.mesh);
   // The mesh must be on exactly these points, in this order.

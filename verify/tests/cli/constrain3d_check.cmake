@@ -1,40 +1,7 @@
 # One case of the CLI tests declared in ../cli_constrain3d.cmake:
 #   cmake -DDTLAB=<dtlab binary> -DWORK=<scratch dir> -DCASE=<name> -P constrain3d_check.cmake
-cmake_minimum_required(VERSION 3.25)
-foreach(v DTLAB WORK CASE)
-  if(NOT DEFINED ${v})
-    message(FATAL_ERROR "pass -D${v}=...")
-  endif()
-endforeach()
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
-
-macro(run)
-  execute_process(COMMAND "${DTLAB}" ${ARGN} WORKING_DIRECTORY "${WORK}"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  set(last_command "dtlab ${ARGN}")
-endmacro()
-
-function(fail what)
-  message(FATAL_ERROR "${what}\n  command: ${last_command}\n  exit: ${rc}\n  stdout: ${out}\n  stderr: ${err}")
-endfunction()
-
-macro(expect_success)
-  if(NOT rc EQUAL 0)
-    fail("expected exit code 0")
-  endif()
-endmacro()
-
-macro(expect_failure)
-  if(rc EQUAL 0)
-    fail("expected a non-zero exit code")
-  endif()
-  foreach(regex ${ARGN})
-    if(NOT err MATCHES "${regex}")
-      fail("stderr does not match '${regex}'")
-    endif()
-  endforeach()
-endmacro()
+set(DTLAB_CLI_REQUIRED DTLAB WORK CASE)
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake)
 
 # The unit cube's 8 corners (shifted by OFFSET) and its 12 faces, outward, as OFF lines.
 set(cube_vertices "0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n")

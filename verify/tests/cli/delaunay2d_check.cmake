@@ -2,43 +2,8 @@
 #   cmake -DDTLAB=<dtlab binary> -DDEFAULT_INPUT=<data/default.node> -DWORK=<scratch dir>
 #         -DCASE=<name> -P delaunay2d_check.cmake
 # Fails (FATAL_ERROR) with the command's exit code, stdout and stderr when a check does not hold.
-cmake_minimum_required(VERSION 3.25)
-foreach(v DTLAB DEFAULT_INPUT WORK CASE)
-  if(NOT DEFINED ${v})
-    message(FATAL_ERROR "pass -D${v}=...")
-  endif()
-endforeach()
-file(REMOVE_RECURSE "${WORK}")
-file(MAKE_DIRECTORY "${WORK}")
-
-# run(<args...>): runs dtlab in WORK; sets rc, out, err.
-macro(run)
-  execute_process(COMMAND "${DTLAB}" ${ARGN} WORKING_DIRECTORY "${WORK}"
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  set(last_command "dtlab ${ARGN}")
-endmacro()
-
-function(fail what)
-  message(FATAL_ERROR "${what}\n  command: ${last_command}\n  exit: ${rc}\n  stdout: ${out}\n  stderr: ${err}")
-endfunction()
-
-macro(expect_success)
-  if(NOT rc EQUAL 0)
-    fail("expected exit code 0")
-  endif()
-endmacro()
-
-# The command failed, and stderr matches every regular expression given.
-macro(expect_failure)
-  if(rc EQUAL 0)
-    fail("expected a non-zero exit code")
-  endif()
-  foreach(regex ${ARGN})
-    if(NOT err MATCHES "${regex}")
-      fail("stderr does not match '${regex}'")
-    endif()
-  endforeach()
-endmacro()
+set(DTLAB_CLI_REQUIRED DTLAB DEFAULT_INPUT WORK CASE)
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake)
 
 # The number of triangles a Medit .mesh file declares (0 without a Triangles section).
 function(mesh_triangle_count file result)
