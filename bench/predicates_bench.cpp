@@ -3,7 +3,8 @@
 //   plain       the same determinant in doubles, no filter (not robust: the baseline);
 //   filtered    dtlab's predicate as algorithms call it (stage counters on);
 //   uncounted   the same without counters: filtered - uncounted is what counting costs;
-//   semistatic, adaptive, exact   each stage alone (undecided share reported by the filters);
+//   semistatic, adaptive, expansion, exact   each stage alone (undecided share reported by the
+//               filters; expansion is stage 3, exact is GMP);
 //   cgal_epick  CGAL's Exact_predicates_inexact_constructions_kernel, same cases, same binary
 //               (predicates_cgal.cpp, only when CGAL is found).
 // and two consumers of the sign (sum: the predicate's own cost; branch: as a caller that
@@ -50,6 +51,7 @@ void register_orient2d(Dist d) {
   add(p, "uncounted", d, cs, [](const C& t) { return uncounted::orient2d(t[0], t[1], t[2]); });
   add(p, "semistatic", d, cs, [](const C& t) { return stage::orient2d_semistatic(t[0], t[1], t[2]); });
   add(p, "adaptive", d, cs, [](const C& t) { return stage::orient2d_adaptive(t[0], t[1], t[2]); });
+  add(p, "expansion", d, cs, [](const C& t) { return stage::orient2d_expansion(t[0], t[1], t[2]); });
   add(p, "exact", d, cs, [](const C& t) { return stage::orient2d_exact(t[0], t[1], t[2]); });
 }
 
@@ -63,6 +65,7 @@ void register_incircle(Dist d) {
   add(p, "semistatic", d, cs,
       [](const C& t) { return stage::incircle_semistatic(t[0], t[1], t[2], t[3]); });
   add(p, "adaptive", d, cs, [](const C& t) { return stage::incircle_adaptive(t[0], t[1], t[2], t[3]); });
+  add(p, "expansion", d, cs, [](const C& t) { return stage::incircle_expansion(t[0], t[1], t[2], t[3]); });
   add(p, "exact", d, cs, [](const C& t) { return stage::incircle_exact(t[0], t[1], t[2], t[3]); });
 }
 
@@ -76,6 +79,7 @@ void register_orient3d(Dist d) {
   add(p, "semistatic", d, cs,
       [](const C& t) { return stage::orient3d_semistatic(t[0], t[1], t[2], t[3]); });
   add(p, "adaptive", d, cs, [](const C& t) { return stage::orient3d_adaptive(t[0], t[1], t[2], t[3]); });
+  add(p, "expansion", d, cs, [](const C& t) { return stage::orient3d_expansion(t[0], t[1], t[2], t[3]); });
   add(p, "exact", d, cs, [](const C& t) { return stage::orient3d_exact(t[0], t[1], t[2], t[3]); });
 }
 
@@ -91,6 +95,7 @@ void register_insphere(Dist d) {
       [](const C& t) { return stage::insphere_semistatic(t[0], t[1], t[2], t[3], t[4]); });
   add(p, "adaptive", d, cs,
       [](const C& t) { return stage::insphere_adaptive(t[0], t[1], t[2], t[3], t[4]); });
+  add(p, "expansion", d, cs, [](const C& t) { return stage::insphere_expansion(t[0], t[1], t[2], t[3], t[4]); });
   add(p, "exact", d, cs, [](const C& t) { return stage::insphere_exact(t[0], t[1], t[2], t[3], t[4]); });
 }
 

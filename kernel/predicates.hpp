@@ -1,10 +1,15 @@
 // The filtered exact predicates of dtlab (book §1): orient2d, incircle, orient3d, insphere.
 //
-// Each predicate runs three stages, and each stage is callable on its own (namespace stage):
+// Each predicate runs up to four stages, and each stage is callable on its own (namespace stage):
 //   1. semi-static filter (semistatic.hpp): doubles, error bound from the operands' maxima;
-//   2. dynamic filter (adaptive.cpp): the determinant of the rounded differences evaluated
-//      exactly in floating-point expansions, certified against the differences' rounding;
-//   3. exact fallback (exact.cpp): GMP integers, doubles converted exactly.
+//   2. dynamic filter (adaptive.cpp): the determinant of the exact coordinate differences,
+//      estimated in double-word arithmetic and certified against the estimate's error bound, or
+//      evaluated exactly in floating-point expansions when the differences are exact;
+//   3. exact expansion (exact_expansion.cpp): each difference as an exact two-component
+//      expansion, the determinant exactly in expansion arithmetic; reached only when stage 2's
+//      estimate is within 2^-89 of Perm from zero with rounded differences;
+//   4. exact fallback (exact.cpp): GMP integers, doubles converted exactly; reached only if a
+//      stage-3 expansion outgrows its buffer. Kept as the oracle the other stages are tested on.
 // Stage counts go to this thread's PredicateStats (stats.hpp).
 //
 // Sign conventions:
@@ -27,14 +32,23 @@
 namespace dtlab {
 
 namespace stage {
-// Stage 2: decides unless the rounding of the coordinate differences could change the sign.
+// Stage 2: decides unless the differences were rounded and the determinant is within 2^-89 of
+// its permanent from zero (in practice: zero).
 FilteredSign orient2d_adaptive(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 FilteredSign incircle_adaptive(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
 FilteredSign orient3d_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
 FilteredSign insphere_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
                                const Vec3& e) noexcept;
 
-// Stage 3: always decides, with GMP.
+// Stage 3: decides unless an expansion outgrows its fixed buffer (never seen on the supported
+// range; the tests check it on extreme magnitudes).
+FilteredSign orient2d_expansion(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
+FilteredSign incircle_expansion(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
+FilteredSign orient3d_expansion(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
+FilteredSign insphere_expansion(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                                const Vec3& e) noexcept;
+
+// Stage 4: always decides, with GMP.
 Sign orient2d_exact(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 Sign incircle_exact(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
 Sign orient3d_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
@@ -42,7 +56,7 @@ Sign insphere_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, 
 }  // namespace stage
 
 namespace detail {
-// Stages 2 and 3 with counting, out of line: the filtered predicates' slow path.
+// Stages 2 to 4 with counting, out of line: the filtered predicates' slow path.
 Sign orient2d_slow(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 Sign incircle_slow(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
 Sign orient3d_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
@@ -88,21 +102,25 @@ namespace uncounted {
 inline Sign orient2d(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
   if (const FilteredSign s = stage::orient2d_semistatic(a, b, c)) return *s;
   if (const FilteredSign s = stage::orient2d_adaptive(a, b, c)) return *s;
+  if (const FilteredSign s = stage::orient2d_expansion(a, b, c)) return *s;
   return stage::orient2d_exact(a, b, c);
 }
 inline Sign incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
   if (const FilteredSign s = stage::incircle_semistatic(a, b, c, d)) return *s;
   if (const FilteredSign s = stage::incircle_adaptive(a, b, c, d)) return *s;
+  if (const FilteredSign s = stage::incircle_expansion(a, b, c, d)) return *s;
   return stage::incircle_exact(a, b, c, d);
 }
 inline Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
   if (const FilteredSign s = stage::orient3d_semistatic(a, b, c, d)) return *s;
   if (const FilteredSign s = stage::orient3d_adaptive(a, b, c, d)) return *s;
+  if (const FilteredSign s = stage::orient3d_expansion(a, b, c, d)) return *s;
   return stage::orient3d_exact(a, b, c, d);
 }
 inline Sign insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept {
   if (const FilteredSign s = stage::insphere_semistatic(a, b, c, d, e)) return *s;
   if (const FilteredSign s = stage::insphere_adaptive(a, b, c, d, e)) return *s;
+  if (const FilteredSign s = stage::insphere_expansion(a, b, c, d, e)) return *s;
   return stage::insphere_exact(a, b, c, d, e);
 }
 }  // namespace uncounted

@@ -17,6 +17,7 @@ StageCounts& StageCounts::operator+=(const StageCounts& o) noexcept {
   adaptive += o.adaptive;
   exact += o.exact;
   perturbed += o.perturbed;
+  gmp += o.gmp;
   return *this;
 }
 
@@ -25,6 +26,7 @@ StageCounts& StageCounts::operator-=(const StageCounts& o) noexcept {
   adaptive -= o.adaptive;
   exact -= o.exact;
   perturbed -= o.perturbed;
+  gmp -= o.gmp;
   return *this;
 }
 
@@ -52,7 +54,7 @@ std::string PredicateStats::to_json() const {
     out.append("\"").append(to_string(static_cast<Predicate>(i))).append("\":{\"semistatic\":");
     out.append(std::to_string(c.semistatic)).append(",\"adaptive\":").append(std::to_string(c.adaptive));
     out.append(",\"exact\":").append(std::to_string(c.exact)).append(",\"perturbed\":");
-    out.append(std::to_string(c.perturbed)).append("}");
+    out.append(std::to_string(c.perturbed)).append(",\"gmp\":").append(std::to_string(c.gmp)).append("}");
   }
   return out + "}";
 }

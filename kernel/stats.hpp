@@ -18,8 +18,9 @@ const char* to_string(Predicate p) noexcept;
 struct StageCounts {
   std::uint64_t semistatic = 0;  // decided by the semi-static filter
   std::uint64_t adaptive = 0;    // decided by the dynamic (expansion) stage
-  std::uint64_t exact = 0;       // decided by the GMP fallback
+  std::uint64_t exact = 0;       // decided by an exact stage: expansions (stage 3) or GMP
   std::uint64_t perturbed = 0;   // exact zero resolved by the symbolic perturbation
+  std::uint64_t gmp = 0;         // of the `exact` ones, those that needed GMP (stage 4)
 
   std::uint64_t calls() const noexcept { return semistatic + adaptive + exact; }
   StageCounts& operator+=(const StageCounts& o) noexcept;
@@ -36,7 +37,8 @@ struct PredicateStats {
   PredicateStats& operator-=(const PredicateStats& o) noexcept;
   friend PredicateStats operator-(PredicateStats a, const PredicateStats& b) noexcept { return a -= b; }
 
-  // {"orient2d":{"semistatic":..,"adaptive":..,"exact":..,"perturbed":..}, ...}
+  // {"orient2d":{"semistatic":..,"adaptive":..,"exact":..,"perturbed":..,"gmp":..}, ...}
+  // semistatic + adaptive + exact = calls; perturbed and gmp count subsets of those.
   std::string to_json() const;
 };
 

@@ -112,6 +112,40 @@ inline int scale_raw(const double* e, int ne, double b, double* h) noexcept {
   return nh;
 }
 
+// e compressed in place (Shewchuk's Compress, §2.8): the same value in as few components as two
+// sweeps of fast two-sums find, one from the largest component down and one back up; returns the
+// new size. The result is nonoverlapping and its largest component approximates the value to
+// within one ulp, so products of compressed expansions stay short.
+inline int compress_raw(double* e, int n) noexcept {
+  if (n == 0) return 0;
+  // Downward sweep: each carry that leaves a nonzero error is parked at the top end; writes stay
+  // above the component being read.
+  int bottom = n - 1;
+  double q = e[n - 1];
+  for (int i = n - 2; i >= 0; --i) {
+    double big, small;
+    fast_two_sum(q, e[i], big, small);
+    if (small != 0.0) {
+      e[bottom--] = big;
+      q = small;
+    } else {
+      q = big;
+    }
+  }
+  e[bottom] = q;
+  // Upward sweep over the parked components; writes stay below the component being read.
+  int top = 0;
+  q = e[bottom];
+  for (int i = bottom + 1; i < n; ++i) {
+    double big, small;
+    fast_two_sum(e[i], q, big, small);
+    if (small != 0.0) e[top++] = small;
+    q = big;
+  }
+  e[top++] = q;
+  return top;
+}
+
 // An expansion of at most N components, stored in increasing magnitude with zeros eliminated;
 // the empty expansion is zero. The components are left uninitialised beyond `size`.
 template <int N>

@@ -1,6 +1,7 @@
 // The filtered predicates' slow path (predicates.hpp): stage 2, then stage 3 when stage 2 cannot
-// certify, each counted in this thread's PredicateStats. Out of line so that the inline stage 1
-// stays small at every call site.
+// certify, then stage 4 (GMP) if stage 3 cannot either, each counted in this thread's
+// PredicateStats: stages 3 and 4 both as "exact", stage 4 also as "gmp". Out of line so that the
+// inline stage 1 stays small at every call site.
 #include "kernel/predicates.hpp"
 
 namespace dtlab::detail {
@@ -12,6 +13,8 @@ Sign orient2d_slow(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
     return *s;
   }
   ++counts.exact;
+  if (const FilteredSign s = stage::orient2d_expansion(a, b, c)) return *s;
+  ++counts.gmp;
   return stage::orient2d_exact(a, b, c);
 }
 
@@ -22,6 +25,8 @@ Sign incircle_slow(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) n
     return *s;
   }
   ++counts.exact;
+  if (const FilteredSign s = stage::incircle_expansion(a, b, c, d)) return *s;
+  ++counts.gmp;
   return stage::incircle_exact(a, b, c, d);
 }
 
@@ -32,6 +37,8 @@ Sign orient3d_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) n
     return *s;
   }
   ++counts.exact;
+  if (const FilteredSign s = stage::orient3d_expansion(a, b, c, d)) return *s;
+  ++counts.gmp;
   return stage::orient3d_exact(a, b, c, d);
 }
 
@@ -42,6 +49,8 @@ Sign insphere_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, c
     return *s;
   }
   ++counts.exact;
+  if (const FilteredSign s = stage::insphere_expansion(a, b, c, d, e)) return *s;
+  ++counts.gmp;
   return stage::insphere_exact(a, b, c, d, e);
 }
 

@@ -44,6 +44,7 @@ struct Orient2d {
   static Sign uncounted(const Tuple& p) { return std::apply(dtlab::uncounted::orient2d, p); }
   static FilteredSign semistatic(const Tuple& p) { return std::apply(stage::orient2d_semistatic, p); }
   static FilteredSign adaptive(const Tuple& p) { return std::apply(stage::orient2d_adaptive, p); }
+  static FilteredSign expansion(const Tuple& p) { return std::apply(stage::orient2d_expansion, p); }
   static Sign exact(const Tuple& p) { return std::apply(stage::orient2d_exact, p); }
   static Sign reference(const Tuple& p) { return std::apply(ref::orient2d, p); }
 };
@@ -58,6 +59,7 @@ struct Incircle {
   static Sign uncounted(const Tuple& p) { return std::apply(dtlab::uncounted::incircle, p); }
   static FilteredSign semistatic(const Tuple& p) { return std::apply(stage::incircle_semistatic, p); }
   static FilteredSign adaptive(const Tuple& p) { return std::apply(stage::incircle_adaptive, p); }
+  static FilteredSign expansion(const Tuple& p) { return std::apply(stage::incircle_expansion, p); }
   static Sign exact(const Tuple& p) { return std::apply(stage::incircle_exact, p); }
   static Sign reference(const Tuple& p) { return std::apply(ref::incircle, p); }
   static Sign perturbed(const Tuple& p) { return std::apply(dtlab::incircle_perturbed, p); }
@@ -75,6 +77,7 @@ struct Orient3d {
   static Sign uncounted(const Tuple& p) { return std::apply(dtlab::uncounted::orient3d, p); }
   static FilteredSign semistatic(const Tuple& p) { return std::apply(stage::orient3d_semistatic, p); }
   static FilteredSign adaptive(const Tuple& p) { return std::apply(stage::orient3d_adaptive, p); }
+  static FilteredSign expansion(const Tuple& p) { return std::apply(stage::orient3d_expansion, p); }
   static Sign exact(const Tuple& p) { return std::apply(stage::orient3d_exact, p); }
   static Sign reference(const Tuple& p) { return std::apply(ref::orient3d, p); }
 };
@@ -89,6 +92,7 @@ struct Insphere {
   static Sign uncounted(const Tuple& p) { return std::apply(dtlab::uncounted::insphere, p); }
   static FilteredSign semistatic(const Tuple& p) { return std::apply(stage::insphere_semistatic, p); }
   static FilteredSign adaptive(const Tuple& p) { return std::apply(stage::insphere_adaptive, p); }
+  static FilteredSign expansion(const Tuple& p) { return std::apply(stage::insphere_expansion, p); }
   static Sign exact(const Tuple& p) { return std::apply(stage::insphere_exact, p); }
   static Sign reference(const Tuple& p) { return std::apply(ref::insphere, p); }
   static Sign perturbed(const Tuple& p) { return std::apply(dtlab::insphere_perturbed, p); }
@@ -115,8 +119,8 @@ std::string describe(const T& tuple) {
   return out;
 }
 
-// Which stage should decide `p`: the first one that certifies a sign.
-enum class Decider { Semistatic, Adaptive, Exact };
+// Which stage should decide `p`: the first one that certifies a sign (Gmp: none before it).
+enum class Decider { Semistatic, Adaptive, Expansion, Gmp };
 
 // Compares every stage with the reference on one tuple, and checks that the counted predicate
 // counted exactly one call, in the stage that decides, while the uncounted one counted nothing.
@@ -130,8 +134,13 @@ std::string stage_disagreement(const typename P::Tuple& p, Decider* decider = nu
   };
   const FilteredSign s1 = P::semistatic(p);
   const FilteredSign s2 = P::adaptive(p);
+  const FilteredSign s3 = P::expansion(p);
   if (s1) expect("semistatic", *s1);
   if (s2) expect("adaptive", *s2);
+  if (s3) expect("expansion", *s3);
+  // Stage 3 claims to decide everything on the supported range (GMP is the fallback for an
+  // expansion that would outgrow its buffer): a deferral is reported too.
+  if (!s3) out += "; the expansion stage deferred";
   expect("exact", P::exact(p));
 
   const PredicateStats before = dtlab::predicate_stats();
@@ -140,10 +149,12 @@ std::string stage_disagreement(const typename P::Tuple& p, Decider* decider = nu
   expect("uncounted", P::uncounted(p));
   const PredicateStats after = dtlab::predicate_stats() - before;
 
-  const Decider d = s1 ? Decider::Semistatic : (s2 ? Decider::Adaptive : Decider::Exact);
+  const Decider d = s1 ? Decider::Semistatic
+                      : (s2 ? Decider::Adaptive : (s3 ? Decider::Expansion : Decider::Gmp));
   if (decider) *decider = d;
   StageCounts one;
   (d == Decider::Semistatic ? one.semistatic : (d == Decider::Adaptive ? one.adaptive : one.exact)) = 1;
+  one.gmp = d == Decider::Gmp ? 1 : 0;
   PredicateStats want_counts;
   want_counts[P::kId] = one;
   if (counted.to_json() != want_counts.to_json()) out += "; counters moved by " + counted.to_json();
@@ -296,7 +307,7 @@ TEST(ExactReference, AgreesWithIntegerDeterminantsOnSmallGrids) {
 template <class P>
 void sweep_families(int tuples_per_family) {
   gen::Rng rng(gen::kDefaultSeed + static_cast<std::uint64_t>(P::kId));
-  std::array<int, 3> decided{};
+  std::array<int, 4> decided{};
   for (int f = 0; f < gen::kFamilyCount; ++f) {
     int failures = 0;
     for (int k = 0; k < tuples_per_family && failures < 5; ++k) {
@@ -313,9 +324,10 @@ void sweep_families(int tuples_per_family) {
   // The sweep must reach every stage, or it tests less than it claims.
   EXPECT_GT(decided[0], 0) << "no call decided by the semi-static filter";
   EXPECT_GT(decided[1], 0) << "no call decided by the dynamic filter";
-  EXPECT_GT(decided[2], 0) << "no call decided by the exact stage";
-  std::printf("  %s stages deciding: semistatic %d, adaptive %d, exact %d\n", dtlab::to_string(P::kId),
-              decided[0], decided[1], decided[2]);
+  EXPECT_GT(decided[2], 0) << "no call decided by the expansion stage";
+  EXPECT_EQ(decided[3], 0) << "calls left to GMP: an expansion outgrew its buffer";
+  std::printf("  %s stages deciding: semistatic %d, adaptive %d, expansion %d, gmp %d\n",
+              dtlab::to_string(P::kId), decided[0], decided[1], decided[2], decided[3]);
 }
 
 TEST(PredicateStages, Orient2dAllFamilies) { sweep_families<Orient2d>(1500); }

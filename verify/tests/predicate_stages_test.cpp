@@ -1,4 +1,4 @@
-// Each stage of the predicates on its own (semi-static, expansion, GMP), the counted slow path,
+// Each stage of the predicates on its own (semi-static, adaptive, exact expansion, GMP), the counted slow path,
 // and the expansion arithmetic underneath, checked against a reference that shares no code with
 // them: the determinant of the lifted matrix by Gaussian elimination over GMP rationals.
 #include <gtest/gtest.h>
@@ -36,30 +36,35 @@ TEST(Reference, SignConventions) {
 
 // What each stage said about one input; nullopt where a stage did not decide.
 struct Verdicts {
-  FilteredSign semistatic, adaptive;
+  FilteredSign semistatic, adaptive, expansion;
   Sign exact, filtered, reference;
 };
 
 Verdicts judge(const Vec2& a, const Vec2& b, const Vec2& c) {
   return {stage::orient2d_semistatic(a, b, c), stage::orient2d_adaptive(a, b, c),
-          stage::orient2d_exact(a, b, c), orient2d(a, b, c), reference::orient2d(a, b, c)};
+          stage::orient2d_expansion(a, b, c), stage::orient2d_exact(a, b, c), orient2d(a, b, c),
+          reference::orient2d(a, b, c)};
 }
 Verdicts judge(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
   return {stage::incircle_semistatic(a, b, c, d), stage::incircle_adaptive(a, b, c, d),
-          stage::incircle_exact(a, b, c, d), incircle(a, b, c, d), reference::incircle(a, b, c, d)};
+          stage::incircle_expansion(a, b, c, d), stage::incircle_exact(a, b, c, d), incircle(a, b, c, d),
+          reference::incircle(a, b, c, d)};
 }
 Verdicts judge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return {stage::orient3d_semistatic(a, b, c, d), stage::orient3d_adaptive(a, b, c, d),
-          stage::orient3d_exact(a, b, c, d), orient3d(a, b, c, d), reference::orient3d(a, b, c, d)};
+          stage::orient3d_expansion(a, b, c, d), stage::orient3d_exact(a, b, c, d), orient3d(a, b, c, d),
+          reference::orient3d(a, b, c, d)};
 }
 Verdicts judge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) {
   return {stage::insphere_semistatic(a, b, c, d, e), stage::insphere_adaptive(a, b, c, d, e),
-          stage::insphere_exact(a, b, c, d, e), insphere(a, b, c, d, e), reference::insphere(a, b, c, d, e)};
+          stage::insphere_expansion(a, b, c, d, e), stage::insphere_exact(a, b, c, d, e),
+          insphere(a, b, c, d, e), reference::insphere(a, b, c, d, e)};
 }
 
-// How often each stage was the first to decide, over a family of inputs.
+// How often each stage was the first to decide, over a family of inputs. Stage 3 (expansion)
+// must decide every input on its own; GMP is never needed.
 struct Tally {
-  int semistatic = 0, adaptive = 0, exact = 0;
+  int semistatic = 0, adaptive = 0, expansion = 0;
   int zeros = 0;
 
   void add(const Verdicts& v, const std::string& what) {
@@ -71,12 +76,13 @@ struct Tally {
     if (v.adaptive) {
       EXPECT_EQ(*v.adaptive, v.reference) << what;
     }
+    EXPECT_EQ(v.expansion, v.reference) << what;
     if (v.semistatic) {
       ++semistatic;
     } else if (v.adaptive) {
       ++adaptive;
     } else {
-      ++exact;
+      ++expansion;
     }
     if (v.reference == Sign::Zero) ++zeros;
   }
@@ -190,23 +196,17 @@ TEST(Stage2, CertifiesDespiteRoundedDifferences) {
   EXPECT_EQ(v.reference, Sign::Positive);
 }
 
-// Differences that round and a determinant of the rounded differences that is exactly zero:
-// only GMP can tell.
-TEST(Stage2, DefersToExactWhenRoundingMatters) {
+// Differences that round, and a determinant of the rounded differences that is exactly zero
+// while the exact one is not: stage 2 estimates on the exact differences (rounded value and
+// tail), so it still certifies the sign; the expansion stage agrees.
+TEST(Stage2, CertifiesWhenOnlyTheRoundedDifferencesAreDegenerate) {
   const double r = 0x1p50, delta = 0x1p-10;  // r - delta rounds to r
-  {  // collinear along y = x, mixed magnitudes: D = 0 = E with rounded differences
-    const Vec2 a{3 * 0x1p-60, 3 * 0x1p-60}, b{1e15, 1e15}, c{2e15, 2e15};
-    const Verdicts v = judge(a, b, c);
-    EXPECT_FALSE(v.semistatic);
-    EXPECT_FALSE(v.adaptive);
-    EXPECT_EQ(v.exact, Sign::Zero);
-    EXPECT_EQ(v.reference, Sign::Zero);
-  }
   {  // rounded differences (2r,0), (r,r), (r,-r) are cocircular with d; d itself is inside
     const Vec2 a{2 * r, 0}, b{r, r}, c{r, -r}, d{delta, 0};
     const Verdicts v = judge(a, b, c, d);
     EXPECT_FALSE(v.semistatic);
-    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.adaptive, Sign::Positive);
+    EXPECT_EQ(v.expansion, Sign::Positive);
     EXPECT_EQ(v.exact, Sign::Positive);
     EXPECT_EQ(v.reference, Sign::Positive);
   }
@@ -214,7 +214,8 @@ TEST(Stage2, DefersToExactWhenRoundingMatters) {
     const Vec3 a{delta, 0, 0}, b{r, r, 0}, c{r, r, r}, d{2 * r, 2 * r, r};
     const Verdicts v = judge(a, b, c, d);
     EXPECT_FALSE(v.semistatic);
-    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.adaptive, Sign::Positive);
+    EXPECT_EQ(v.expansion, Sign::Positive);
     EXPECT_EQ(v.exact, Sign::Positive);
     EXPECT_EQ(v.reference, Sign::Positive);
   }
@@ -224,9 +225,46 @@ TEST(Stage2, DefersToExactWhenRoundingMatters) {
     ASSERT_NE(inside, Sign::Zero);
     const Verdicts v = judge(a, b, c, d, e);
     EXPECT_FALSE(v.semistatic);
-    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.adaptive, inside);
+    EXPECT_EQ(v.expansion, inside);
     EXPECT_EQ(v.exact, inside);
     EXPECT_EQ(v.reference, inside);
+  }
+}
+
+// Exact zeros with rounded differences: no estimate can certify zero, so stage 2 defers and
+// stage 3 (exact expansions on two-component differences) decides.
+TEST(Stage3, DecidesExactZeroWithRoundedDifferences) {
+  const double big = 0x1p60, one = 1.0, t = 3 * 0x1p-60;  // big + one rounds
+  {  // collinear along y = x, mixed magnitudes
+    const Verdicts v = judge(Vec2{t, t}, Vec2{1e15, 1e15}, Vec2{2e15, 2e15});
+    EXPECT_FALSE(v.semistatic);
+    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.expansion, Sign::Zero);
+    EXPECT_EQ(v.exact, Sign::Zero);
+    EXPECT_EQ(v.reference, Sign::Zero);
+  }
+  {  // (A, B), (B, A), (-A, -B), (-B, -A) lie on the circle x^2 + y^2 = A^2 + B^2
+    const Verdicts v = judge(Vec2{big, one}, Vec2{one, big}, Vec2{-big, -one}, Vec2{-one, -big});
+    EXPECT_FALSE(v.semistatic);
+    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.expansion, Sign::Zero);
+    EXPECT_EQ(v.reference, Sign::Zero);
+  }
+  {  // four points of the plane x = y, one of them tiny
+    const Verdicts v = judge(Vec3{t, t, 0}, Vec3{1e15, 1e15, 0}, Vec3{0, 0, 1e15}, Vec3{2e15, 2e15, 5e14});
+    EXPECT_FALSE(v.semistatic);
+    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.expansion, Sign::Zero);
+    EXPECT_EQ(v.reference, Sign::Zero);
+  }
+  {  // five points of the sphere |p|^2 = A^2 + B^2, not coplanar
+    const Verdicts v = judge(Vec3{big, one, 0}, Vec3{one, 0, big}, Vec3{0, big, one}, Vec3{-big, -one, 0},
+                             Vec3{-one, -big, 0});
+    EXPECT_FALSE(v.semistatic);
+    EXPECT_FALSE(v.adaptive);
+    EXPECT_EQ(v.expansion, Sign::Zero);
+    EXPECT_EQ(v.reference, Sign::Zero);
   }
 }
 
@@ -238,33 +276,40 @@ TEST(SlowPath, CountsTheStageThatDecided) {
     call();
     return predicate_stats() - before;
   };
-  const double r = 0x1p50, delta = 0x1p-10;
+  const double r = 0x1p50, delta = 0x1p-10, big = 0x1p60;
   struct Case {
     const char* name;
     Predicate predicate;
     std::function<Sign()> call;
     Sign expected;
-    int stage;  // 0 semistatic, 1 adaptive, 2 exact
+    int stage;  // 0 semistatic, 1 adaptive, 2 exact (stage 3: expansions; GMP is never needed)
   };
   const std::vector<Case> cases = {
       {"orient2d easy", Predicate::Orient2d, [] { return orient2d({0, 0}, {1, 0}, {0, 1}); }, Sign::Positive, 0},
       {"orient2d grid", Predicate::Orient2d, [] { return orient2d({0, 0}, {1, 1}, {2, 2}); }, Sign::Zero, 1},
-      {"orient2d rounded", Predicate::Orient2d,
+      {"orient2d rounded zero", Predicate::Orient2d,
        [] { return orient2d({3 * 0x1p-60, 3 * 0x1p-60}, {1e15, 1e15}, {2e15, 2e15}); }, Sign::Zero, 2},
       {"incircle easy", Predicate::Incircle, [] { return incircle({0, 0}, {1, 0}, {0, 1}, {5, 5}); }, Sign::Negative, 0},
       {"incircle grid", Predicate::Incircle, [] { return incircle({0, 0}, {1, 0}, {1, 1}, {0, 1}); }, Sign::Zero, 1},
       {"incircle rounded", Predicate::Incircle,
-       [=] { return incircle({2 * r, 0}, {r, r}, {r, -r}, {delta, 0}); }, Sign::Positive, 2},
+       [=] { return incircle({2 * r, 0}, {r, r}, {r, -r}, {delta, 0}); }, Sign::Positive, 1},
+      {"incircle rounded zero", Predicate::Incircle,
+       [=] { return incircle({big, 1}, {1, big}, {-big, -1}, {-1, -big}); }, Sign::Zero, 2},
       {"orient3d easy", Predicate::Orient3d,
        [] { return orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}); }, Sign::Positive, 0},
       {"orient3d grid", Predicate::Orient3d,
        [] { return orient3d({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}); }, Sign::Zero, 1},
       {"orient3d rounded", Predicate::Orient3d,
-       [=] { return orient3d({delta, 0, 0}, {r, r, 0}, {r, r, r}, {2 * r, 2 * r, r}); }, Sign::Positive, 2},
+       [=] { return orient3d({delta, 0, 0}, {r, r, 0}, {r, r, r}, {2 * r, 2 * r, r}); }, Sign::Positive, 1},
+      {"orient3d rounded zero", Predicate::Orient3d,
+       [=] { return orient3d({0x1p-60, 0x1p-60, 0}, {1e15, 1e15, 0}, {0, 0, 1e15}, {2e15, 2e15, 5e14}); },
+       Sign::Zero, 2},
       {"insphere easy", Predicate::Insphere,
        [] { return insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {9, 9, 9}); }, Sign::Negative, 0},
       {"insphere grid", Predicate::Insphere,
        [] { return insphere({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}); }, Sign::Zero, 1},
+      {"insphere rounded zero", Predicate::Insphere,
+       [=] { return insphere({big, 1, 0}, {1, 0, big}, {0, big, 1}, {-big, -1, 0}, {-1, -big, 0}); }, Sign::Zero, 2},
   };
   for (const Case& c : cases) {
     Sign got = Sign::Zero;
@@ -274,6 +319,7 @@ TEST(SlowPath, CountsTheStageThatDecided) {
     EXPECT_EQ(s.semistatic, c.stage == 0 ? 1u : 0u) << c.name;
     EXPECT_EQ(s.adaptive, c.stage == 1 ? 1u : 0u) << c.name;
     EXPECT_EQ(s.exact, c.stage == 2 ? 1u : 0u) << c.name;
+    EXPECT_EQ(s.gmp, 0u) << c.name;
     EXPECT_EQ(d.total().calls(), 1u) << c.name << ": no other predicate counted";
   }
 }
@@ -331,6 +377,10 @@ TEST(AllStages, AgreeWithExactSignOnNearDegenerate2d) {
       const double rr = std::ldexp(1.0, in.integer(40, 60));
       const Vec2 p{2 * rr, 0}, q{rr, rr}, w{rr, -rr}, d{in.uniform(-1, 1) * 0x1p-12, 0};
       circle.add(judge(p, q, w, d), describe({p, q, w, d}));
+      // (A, B), (B, A), (-A, -B), (-B, -A): cocircular, with rounded differences
+      const double one = in.integer(1, 9);
+      const Vec2 c0{rr, one}, c1{one, rr}, c2{-rr, -one}, c3{-one, -rr};
+      circle.add(judge(c0, c1, c2, c3), describe({c0, c1, c2, c3}));
     } else if (trial % 8 == 3) {  // rectangles in [1, 2)^2: exact zeros, long mantissas
       const double x0 = in.uniform(1, 1.5), y0 = in.uniform(1, 1.5);
       const double w = in.uniform(0, 0.5), h = in.uniform(0, 0.5);
@@ -347,7 +397,7 @@ TEST(AllStages, AgreeWithExactSignOnNearDegenerate2d) {
   for (const Tally* t : {&orient, &circle}) {
     EXPECT_GT(t->semistatic, 0);
     EXPECT_GT(t->adaptive, 0);
-    EXPECT_GT(t->exact, 0);
+    EXPECT_GT(t->expansion, 0);
     EXPECT_GT(t->zeros, 0);
   }
 }
@@ -385,6 +435,12 @@ TEST(AllStages, AgreeWithExactSignOnNearDegenerate3d) {
       orient.add(judge(a, b, c, d), describe({a, b, c, d}));
       const Vec3 p{2 * rr, 0, 0}, q{rr, rr, 0}, w{rr, -rr, 0}, x{rr, 0, rr};
       sphere.add(judge(p, q, w, x, a), describe({p, q, w, x, a}));
+      // exact zeros whose differences round: stage 3's cases
+      const double t = in.uniform(-1, 1) * 0x1p-30, one = in.integer(1, 9);
+      const Vec3 f{t, t, 0}, g{rr, rr, 0}, h{0, 0, rr}, k{2 * rr, 2 * rr, rr};
+      orient.add(judge(f, g, h, k), describe({f, g, h, k}));
+      const Vec3 s0{rr, one, 0}, s1{one, 0, rr}, s2{0, rr, one}, s3{-rr, -one, 0}, s4{-one, -rr, 0};
+      sphere.add(judge(s0, s1, s2, s3, s4), describe({s0, s1, s2, s3, s4}));
     } else if (trial % 8 == 3) {  // boxes in [1, 2)^3: exact zeros, long mantissas
       const double x0 = in.uniform(1, 1.5), y0 = in.uniform(1, 1.5), z0 = in.uniform(1, 1.5);
       const double w = in.uniform(0, 0.5), h = in.uniform(0, 0.5), l = in.uniform(0, 0.5);
@@ -402,7 +458,7 @@ TEST(AllStages, AgreeWithExactSignOnNearDegenerate3d) {
   for (const Tally* t : {&orient, &sphere}) {
     EXPECT_GT(t->semistatic, 0);
     EXPECT_GT(t->adaptive, 0);
-    EXPECT_GT(t->exact, 0);
+    EXPECT_GT(t->expansion, 0);
     EXPECT_GT(t->zeros, 0);
   }
 }
@@ -505,6 +561,12 @@ TEST(Expansion, ProductsAndSumsAreExactAndNonoverlapping) {
     const auto s = expansion::scale(lm, v[2]);
     ASSERT_TRUE(nonoverlapping(s.c, s.size));
     EXPECT_EQ((value(s.c, s.size) - value(lm.c, lm.size) * Rational(v[2])).sign(), Sign::Zero);
+    auto compressed = lm;
+    compressed.size = expansion::compress_raw(compressed.c, compressed.size);
+    ASSERT_TRUE(nonoverlapping(compressed.c, compressed.size));
+    EXPECT_LE(compressed.size, lm.size);
+    EXPECT_EQ((value(compressed.c, compressed.size) - value(lm.c, lm.size)).sign(), Sign::Zero);
+    EXPECT_EQ(compressed.sign(), lm.sign());
     const auto z = expansion::difference(lm, lm);
     EXPECT_EQ(z.size, 0);
     EXPECT_EQ(z.sign(), Sign::Zero);
