@@ -24,6 +24,7 @@
 #include "kernel/predicates.hpp"
 #include "kernel/rounding.hpp"
 #include "verify/checks3d.hpp"
+#include "verify/checks_constrained3d.hpp"
 
 namespace dtlab {
 namespace {
@@ -159,124 +160,25 @@ TEST(DelaunayInserter, SameTetrahedraAsDelaunayOfAllPoints) {
 
 // --- Constrained tetrahedralization: exact checks of a result ---------------------------------
 
-Rational tet_volume6(std::span<const Vec3> p, const std::array<std::uint32_t, 4>& t) {
-  return tetrahedra_volume6(p, std::span<const std::array<std::uint32_t, 4>>(&t, 1));
-}
-
-// (s, t) of a vertex of input triangle f, from the result's own records.
-std::array<Rational, 2> parameters_in(const Constrained3dResult& r, std::span<const Ids3> triangles, std::uint32_t f,
-                                      std::uint32_t v) {
-  const Ids3& c = triangles[f];
-  static const std::array<std::array<int, 2>, 3> kCorner = {{{0, 0}, {1, 0}, {0, 1}}};
-  for (int k = 0; k < 3; ++k)
-    if (v == c[k]) return {Rational(kCorner[k][0]), Rational(kCorner[k][1])};
-  EXPECT_GE(v, r.input_point_count) << "an input vertex that is no corner of triangle " << f;
-  if (v < r.input_point_count) return {Rational(-1), Rational(-1)};
-  const SteinerPoint3& s = r.steiner[v - r.input_point_count];
-  if (s.kind == SteinerPoint3::Kind::OnFace) {
-    EXPECT_EQ(s.owner, f);
-    return {Rational(s.parameters[0]), Rational(s.parameters[1])};
-  }
-  for (int k = 0; k < 3; ++k) {
-    const std::uint32_t a = c[k], b = c[(k + 1) % 3];
-    if (std::minmax(a, b) == std::minmax(s.support[0], s.support[1])) {
-      const Rational t = a == s.support[0] ? Rational(s.parameters[0]) : Rational(1) - Rational(s.parameters[0]);
-      const auto& p0 = kCorner[k];
-      const auto& p1 = kCorner[(k + 1) % 3];
-      return {Rational(p0[0]) + t * Rational(p1[0] - p0[0]), Rational(p0[1]) + t * Rational(p1[1] - p0[1])};
-    }
-  }
-  ADD_FAILURE() << "vertex " << v << " is on no edge of triangle " << f;
-  return {Rational(-1), Rational(-1)};
-}
-
 struct CheckedRun {
   Constrained3dResult result;
   std::map<int, Rational> region_volume6;
 };
 
-// Everything the issue asks of a result, exactly. `triangles` are the input's.
+// Everything the issue asks of a result, exactly (verify/checks_constrained3d.hpp), and the
+// volume each region encloses when there is one closed surface.
 CheckedRun run_and_check(const ClosedSurface3& s, const std::string& method = "conforming",
                          std::span<const int> refs = {}, std::span<const Vec3> holes = {},
                          std::uint32_t steiner_limit_factor = 200) {
   CheckedRun out;
-  Constrained3dResult& r = out.result;
-  r = constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = refs, .holes = holes, .regions = {}},
-                    {.method = method, .steiner_limit_factor = steiner_limit_factor});
-  const auto& v = r.vertices;
-  EXPECT_EQ(r.input_point_count, s.points.size());
-  EXPECT_TRUE(std::equal(s.points.begin(), s.points.end(), v.begin()));
-  EXPECT_EQ(r.steiner.size(), v.size() - s.points.size());
-  EXPECT_EQ(r.steiner_points.total(), r.steiner.size());
-  EXPECT_EQ(r.rounding_checks_failed, 0u);
-  for (std::size_t i = 0; i < r.steiner.size(); ++i)
-    EXPECT_TRUE(steiner_point_within_rounding_bound(s.points, r.steiner[i], v[s.points.size() + i])) << i;
-  // A valid mesh: closed, positive; "conforming" is moreover Delaunay.
-  const CheckReport3 check = method == "conforming" ? verify_delaunay3d(v, r.tetrahedralization) : check_topology3(r.tetrahedralization);
-  EXPECT_TRUE(check.ok) << to_text(check);
-  for (const auto& t : r.tetrahedra) EXPECT_EQ(orient3d(v[t[0]], v[t[1]], v[t[2]], v[t[3]]), Sign::Positive);
-  // Every input triangle is the union of its pieces: mesh faces, positive in its (s, t), whose
-  // doubled areas add up to 1 exactly.
-  std::set<Ids3> mesh_faces;
-  for (std::uint32_t t = 0; t < r.tetrahedralization.tetrahedron_count(); ++t)
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      auto f = r.tetrahedralization.facet_vertices(4 * t + i);
-      std::sort(f.begin(), f.end());
-      mesh_faces.insert(f);
-    }
-  std::vector<Rational> area(s.triangles.size());
-  for (std::size_t k = 0; k < r.triangles.size(); ++k) {
-    const std::uint32_t f = r.triangle_face[k];
-    auto sorted = r.triangles[k];
-    std::sort(sorted.begin(), sorted.end());
-    EXPECT_TRUE(mesh_faces.count(sorted)) << "piece " << k << " of triangle " << f << " is no mesh face";
-    const auto a = parameters_in(r, s.triangles, f, r.triangles[k][0]);
-    const auto b = parameters_in(r, s.triangles, f, r.triangles[k][1]);
-    const auto c = parameters_in(r, s.triangles, f, r.triangles[k][2]);
-    const Rational doubled = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-    EXPECT_EQ(doubled.sign(), Sign::Positive);
-    area[f] += doubled;
-  }
-  for (std::size_t f = 0; f < s.triangles.size(); ++f) EXPECT_EQ(area[f], Rational(1)) << "triangle " << f;
-  // Volumes: the tetrahedra of the regions fill exactly what the split surface encloses; that
-  // equals the input's volume exactly when no Steiner point was rounded, else within the
-  // rounding bound of the points on the surface.
-  Rational meshed;
-  for (std::size_t k = 0; k < r.tetrahedra.size(); ++k) {
-    const Rational v6 = tet_volume6(v, r.tetrahedra[k]);
-    meshed += v6;
-    out.region_volume6[r.tetrahedron_regions[k]] += v6;
-  }
-  const Rational split_surface = exact_volume6(v, r.triangles);
-  const Rational input_surface = exact_volume6(s.points, s.triangles);
-  bool all_exact = true;
-  double bound = 0;
-  for (std::size_t i = 0; i < r.steiner.size(); ++i) {
-    const Vec3& x = v[s.points.size() + i];
-    const auto& sp = r.steiner[i];
-    const ExactPoint3 e = sp.kind == SteinerPoint3::Kind::OnEdge
-                              ? point_on_segment_exact(s.points[sp.support[0]], s.points[sp.support[1]], Rational(sp.parameters[0]))
-                              : ExactPoint3{};
-    if (sp.kind != SteinerPoint3::Kind::OnEdge || !(to_exact(x) == e)) all_exact = false;
-    // 6 x (volume swept by moving x by its rounding error) <= 6 |error| x (area of its star).
-    double star = 0;
-    for (const auto& t : r.triangles)
-      if (t[0] == s.points.size() + i || t[1] == s.points.size() + i || t[2] == s.points.size() + i) {
-        const Vec3 &a = v[t[0]], &b = v[t[1]], &c = v[t[2]];
-        const Vec3 u{b.x - a.x, b.y - a.y, b.z - a.z}, w{c.x - a.x, c.y - a.y, c.z - a.z};
-        star += 0.5 * std::hypot(u.y * w.z - u.z * w.y, u.z * w.x - u.x * w.z, u.x * w.y - u.y * w.x);
-      }
-    bound += 6 * 2 * std::hypot(rounding_bound(x.x), rounding_bound(x.y), rounding_bound(x.z)) * star;
-  }
-  if (refs.empty()) {  // one closed surface, no internal faces
-    EXPECT_EQ(meshed, split_surface);
-    if (all_exact) {
-      EXPECT_EQ(meshed, input_surface);
-    } else {
-      const double diff = std::fabs(round_to_double(meshed - input_surface));
-      EXPECT_LE(diff, bound) << "meshed volume off the input's by more than the rounding bound";
-    }
-  }
+  const ConstrainedInput3 input{.points = s.points, .triangles = s.triangles, .triangle_refs = refs, .holes = holes,
+                                .regions = {}};
+  out.result = constrained3d(input, {.method = method, .steiner_limit_factor = steiner_limit_factor});
+  const ConstrainedCheckReport3 report = check_constrained3d(input, out.result, {.method = method});
+  EXPECT_TRUE(report.ok) << to_text(report);
+  EXPECT_EQ(report.regions, out.result.region_count);
+  EXPECT_EQ(report.input_triangles, s.triangles.size());
+  out.region_volume6 = report.region_volume6;
   return out;
 }
 
@@ -484,6 +386,59 @@ TEST(Constrained3d, RegionSeedsAndKeptExterior) {
   const auto all = constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {}, .regions = {}},
                                  {.keep_exterior = true});
   EXPECT_EQ(all.tetrahedra.size(), all.tetrahedralization.finite_tetrahedron_count());
+}
+
+TEST(ConstrainedChecks3, AcceptSeedsAndKeptExterior) {
+  const auto s = cube();
+  const std::vector<RegionSeed3> seeds{{{0.5, 0.5, 0.5}, 7}};
+  const ConstrainedInput3 in{.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {}, .regions = seeds};
+  const auto report = check_constrained3d(in, constrained3d(in));
+  EXPECT_TRUE(report.ok) << to_text(report);
+  EXPECT_EQ(report.region_volume6.at(7), Rational(6));
+  // Schönhardt's prism is not convex: its exterior within the hull is kept as region 0.
+  const auto p = schonhardt_polyhedron(30);
+  const ConstrainedInput3 prism{.points = p.points, .triangles = p.triangles, .triangle_refs = {}, .holes = {}, .regions = {}};
+  const auto all = constrained3d(prism, {.keep_exterior = true});
+  ASSERT_TRUE(std::count(all.tetrahedron_regions.begin(), all.tetrahedron_regions.end(), 0) > 0);
+  const auto kept = check_constrained3d(prism, all, {.keep_exterior = true});
+  EXPECT_TRUE(kept.ok) << to_text(kept);
+  EXPECT_EQ(kept.regions, 1u);  // the exterior (0) is unbounded
+  // Told that the exterior was removed, the checker finds kept tetrahedra outside every face.
+  EXPECT_FALSE(check_constrained3d(prism, all, {}).ok);
+}
+
+// Every kind of damage to a correct result is caught.
+TEST(ConstrainedChecks3, CatchDamagedResults) {
+  const auto s = schonhardt_polyhedron(30);
+  const ConstrainedInput3 in{.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {}, .regions = {}};
+  const Constrained3dResult good = constrained3d(in);
+  ASSERT_TRUE(check_constrained3d(in, good).ok);
+  ASSERT_FALSE(good.steiner.empty());
+  const auto fails = [&](const char* what, auto&& damage) {
+    Constrained3dResult r = good;
+    damage(r);
+    const auto report = check_constrained3d(in, r);
+    EXPECT_FALSE(report.ok) << what;
+    EXPECT_EQ(report.problem_count, report.problems.size()) << what;
+  };
+  fails("a piece dropped", [](Constrained3dResult& r) {
+    r.triangles.pop_back(), r.triangle_face.pop_back(), r.triangle_refs.pop_back();
+  });
+  fails("a piece turned", [](Constrained3dResult& r) { std::swap(r.triangles[0][1], r.triangles[0][2]); });
+  fails("a piece given to another triangle", [](Constrained3dResult& r) {
+    r.triangle_face[0] = (r.triangle_face[0] + 1) % 8;
+  });
+  fails("a Steiner record moved", [](Constrained3dResult& r) {
+    auto& x = r.steiner[0].parameters;
+    x[0] = x[0] > 0.5 ? x[0] / 2 : (1 + x[0]) / 2;
+  });
+  fails("a Steiner count off", [](Constrained3dResult& r) { ++r.steiner_points.interior; });
+  fails("a tetrahedron dropped", [](Constrained3dResult& r) {
+    r.tetrahedra.pop_back(), r.tetrahedron_regions.pop_back();
+  });
+  fails("a tetrahedron in another region", [](Constrained3dResult& r) { r.tetrahedron_regions[0] = 5; });
+  fails("a tetrahedron turned", [](Constrained3dResult& r) { std::swap(r.tetrahedra[0][0], r.tetrahedra[0][1]); });
+  fails("an input point moved", [](Constrained3dResult& r) { r.vertices[0].x += 1; });
 }
 
 // A star-shaped closed surface: the convex hull of random lattice points around the origin
