@@ -46,7 +46,7 @@ void constrained2d_conforming(const Constrained2dContext& context) {
     if (h < tri.twin(h) && mesh.constraint(h) != ConstrainedMesh2::kNone)
       pieces.push_back({tri.origin(h), tri.destination(h), mesh.constraint(h)});
   mesh.clear_constraints();
-  mesh.lawson_all(false);
+  mesh.lawson(mesh.take_changed_edges(), false);  // the rest is still Delaunay
 
   const std::uint64_t limit =
       static_cast<std::uint64_t>(context.options.conforming_steiner_factor) * (tri.point_count() + context.segments.size()) + 16;

@@ -66,6 +66,7 @@ void ConstrainedMesh2::write_triangle(std::uint32_t t, std::uint32_t a, std::uin
   if (c == kInf) std::tie(a, b, c) = std::tuple(c, a, b);
   std::uint32_t* v = tri_.mutable_vertices().data() + 3 * t;
   v[0] = a, v[1] = b, v[2] = c;
+  written_.push_back(t);
   for (std::uint32_t i = 0; i < 3; ++i)
     if (v[i] != kInf) vtri_[v[i]] = t;
 }
@@ -324,6 +325,26 @@ void ConstrainedMesh2::lawson(std::vector<std::uint32_t> stack, bool respect_con
     const std::uint32_t t1 = T2::triangle_of(e), t2 = T2::triangle_of(tri_.twin(e));
     for (std::uint32_t k : {3 * t1, 3 * t1 + 2, 3 * t2, 3 * t2 + 2}) stack.push_back(k);
   }
+}
+
+std::vector<std::uint32_t> ConstrainedMesh2::take_changed_edges() {
+  // A flag per triangle, not a sort: every flip writes two triangles, so the record is long.
+  std::vector<std::uint8_t> written(tri_.triangle_count(), 0);
+  std::vector<std::uint32_t> triangles;
+  for (const std::uint32_t t : written_)
+    if (!written[t]) written[t] = 1, triangles.push_back(t);
+  written_.clear();
+  std::vector<std::uint32_t> stack;
+  stack.reserve(3 * triangles.size());
+  for (const std::uint32_t t : triangles)
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = T2::half_edge(t, i), g = tri_.twin(h);
+      // Each edge once: from the lower half-edge, or from this one if the twin's triangle was
+      // not written.
+      if (h < g || !written[T2::triangle_of(g)]) stack.push_back(h);
+    }
+  std::reverse(stack.begin(), stack.end());
+  return stack;
 }
 
 void ConstrainedMesh2::lawson_all(bool respect_constraints) {

@@ -79,6 +79,10 @@ class ConstrainedMesh2 {
   void lawson(std::vector<std::uint32_t> stack, bool respect_constraints);
   // Lawson from every edge.
   void lawson_all(bool respect_constraints);
+  // The half-edges of every triangle written (by flips and insertions) since the structure was
+  // made or this was last called, each edge once; the rest of the triangulation is as it was, so
+  // these are the only edges Lawson needs to start from after enforcement.
+  std::vector<std::uint32_t> take_changed_edges();
   // h's two triangles are finite, and the vertex across h is inside the first one's circle.
   bool violates_delaunay(std::uint32_t h) const;
 
@@ -90,6 +94,7 @@ class ConstrainedMesh2 {
   std::vector<std::uint32_t> cons_;  // per half-edge
   std::vector<std::uint32_t> vtri_;  // per vertex
   std::vector<std::uint8_t> in_cavity_;
+  std::vector<std::uint32_t> written_;  // triangles written since take_changed_edges
   std::uint64_t flips_ = 0;
   std::uint64_t rng_ = 0x9E3779B97F4A7C15ull;
 };

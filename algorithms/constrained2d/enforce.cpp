@@ -115,6 +115,11 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
   std::vector<Piece> pieces;
   for (std::size_t k = 0; k < segments; ++k) {
     const auto [a, b] = context.segments[k];
+    // An edge has no vertex inside; only other segments need their pipe walked here.
+    if (mesh.find_half_edge(a, b) != kNone) {
+      pieces.push_back({a, b, context.ids[k]});
+      continue;
+    }
     const Pipe2 pipe_ab = pipe(mesh.tri(), mesh.triangle_of_vertex(a), a, b);
     std::uint32_t from = a;
     for (const std::uint32_t v : pipe_ab.through) {

@@ -14,10 +14,12 @@ void run_swap(const Constrained2dContext& context) { resolve_and_enforce_segment
 // §3.4: insertion (the Delaunay triangulation), enforcement, then Lawson flips of every
 // non-constrained edge that fails the perturbed empty-circle test. An edge between two
 // triangles sees every point visible from its triangles' vertices, so local constrained
-// Delaunay everywhere is Definition 3.6 (Lee and Lin 1986, Chew 1989).
+// Delaunay everywhere is Definition 3.6 (Lee and Lin 1986, Chew 1989). Edges whose two
+// triangles enforcement left as they were are still locally Delaunay: Lawson starts from the
+// edges of the triangles it wrote.
 void run_cdt(const Constrained2dContext& context) {
   resolve_and_enforce_segments(context);
-  context.mesh.lawson_all(true);
+  context.mesh.lawson(context.mesh.take_changed_edges(), true);
 }
 
 constexpr std::array kMethods = {
