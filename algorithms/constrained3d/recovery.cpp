@@ -342,6 +342,7 @@ std::size_t SteinerInserter::insert(const std::vector<EdgeSplit>& splits, const 
       break;
     }
   }
+  inserter_.compact();  // the recovery reads the mesh between rounds
   return count;
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <map>
 #include <cmath>
 #include <cstdio>
@@ -150,11 +151,20 @@ TEST(DelaunayInserter, SameTetrahedraAsDelaunayOfAllPoints) {
     Tetrahedralization3 t = delaunay3d(first).tetrahedralization;
     DelaunayInserter inserter(t);
     for (std::size_t i = 10; i < all.size(); ++i) EXPECT_EQ(inserter.insert(all[i]), i);
+    inserter.compact();
     t.check_topology();
     const Tetrahedralization3 ref = delaunay3d(all).tetrahedralization;
     EXPECT_EQ(canonical_tetrahedron_set(t), canonical_tetrahedron_set(ref));
     EXPECT_TRUE(verify_delaunay3d(all, t).ok);
     EXPECT_THROW(inserter.insert(all[3]), InputError);
+    EXPECT_EQ(t.point_count(), all.size());
+    // Inserting after a compaction continues from the compacted structure.
+    const Vec3 extra{0.5, 0.25, 0.125};
+    inserter.insert(extra);
+    inserter.compact();
+    std::vector<Vec3> more = all;
+    more.push_back(extra);
+    EXPECT_EQ(canonical_tetrahedron_set(t), canonical_tetrahedron_set(delaunay3d(more).tetrahedralization));
   }
 }
 
@@ -467,6 +477,33 @@ ClosedSurface3 random_star(const std::vector<std::array<int, 3>>& lattice, const
     s.triangles.push_back({id(v[1]), id(v[3]), id(v[2])});
   }
   return s;
+}
+
+// Timing on larger inputs (run with --gtest_also_run_disabled_tests
+// --gtest_filter='*LargerInputs*'): Chazelle n = 8, and surfaces of about 10^4 triangles made
+// from 5000 random points on a sphere: their convex hull, and the same with every vertex moved
+// along its ray by up to 1/32 (star-shaped, not convex).
+TEST(Constrained3dTiming, DISABLED_LargerInputs) {
+  const auto time = [](const char* name, const ClosedSurface3& s) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto run = run_and_check(s);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto& r = run.result;
+    std::printf("%s: %zu triangles, %u Steiner points, %u rounds, %zu tetrahedra; constrained3d %.3f s "
+                "(Delaunay %.3f, edges %.3f, faces %.3f), with checks %.3f s\n",
+                name, s.triangles.size(), r.steiner_points.total(), r.rounds, r.tetrahedra.size(), r.seconds.total,
+                r.seconds.delaunay, r.seconds.edge_recovery, r.seconds.face_recovery, seconds);
+  };
+  time("Chazelle n = 8", chazelle_polyhedron(8));
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> normal;
+  std::vector<std::array<int, 3>> lattice;
+  while (lattice.size() < 5000) {
+    const double x = normal(rng), y = normal(rng), z = normal(rng), r = std::sqrt(x * x + y * y + z * z);
+    lattice.push_back({int(std::lround(1e5 * x / r)), int(std::lround(1e5 * y / r)), int(std::lround(1e5 * z / r))});
+  }
+  time("convex hull of 5000 points on a sphere", random_star(lattice, {8}));
+  time("star-shaped, 5000 points", random_star(lattice, {31, 32, 33, 32, 31, 33, 32}));
 }
 
 RC_GTEST_PROP(Constrained3dProperty, RandomStarShapedSurfaces, ()) {
