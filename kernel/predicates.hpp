@@ -24,6 +24,8 @@
 // the entry points of dtlab check it once per input, the predicates do not.
 #pragma once
 
+#include <array>
+
 #include "kernel/predicates/semistatic.hpp"
 #include "kernel/sign.hpp"
 #include "kernel/stats.hpp"
@@ -56,11 +58,28 @@ Sign insphere_exact(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, 
 }  // namespace stage
 
 namespace detail {
+// The signs of the cofactors of the lifted column of incircle / insphere, in argument order (the
+// C_p of perturbation.hpp; C_d of incircle is the fourth, the fifth is unused there). Stage 2
+// fills them in when it decides Zero from its integer evaluation, which computes them on the way;
+// `known` says whether it did.
+struct LiftCofactors {
+  bool known = false;
+  std::array<Sign, 5> sign{};
+};
+
+// Stage 2 of incircle and insphere, also reporting the cofactors when it can (cofactors may be null).
+FilteredSign incircle_adaptive(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d,
+                               LiftCofactors* cofactors) noexcept;
+FilteredSign insphere_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+                               LiftCofactors* cofactors) noexcept;
+
 // Stages 2 to 4 with counting, out of line: the filtered predicates' slow path.
 Sign orient2d_slow(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
-Sign incircle_slow(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
+Sign incircle_slow(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d,
+                   LiftCofactors* cofactors = nullptr) noexcept;
 Sign orient3d_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
-Sign insphere_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept;
+Sign insphere_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+                   LiftCofactors* cofactors = nullptr) noexcept;
 
 inline void count_semistatic(Predicate p) noexcept { ++tls_predicate_stats[p].semistatic; }
 }  // namespace detail

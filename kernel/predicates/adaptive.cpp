@@ -1,6 +1,6 @@
 // Stage 2 of the predicates: the determinant evaluated from the coordinate differences in
-// floating-point expansions (expansion.hpp) or estimated in double-word arithmetic, certified
-// against the estimate's own error. The exact evaluation of the rounded differences and its use
+// integers (small_integers.hpp) or floating-point expansions (expansion.hpp), or estimated in
+// double-word arithmetic, certified against the estimate's own error. The exact evaluation of the rounded differences and its use
 // follow Shewchuk 1997 (DCG 18, §4); the double-word estimate on exact differences is ours.
 //
 // Derivation. Let the predicate be D = P(d), P a homogeneous polynomial of degree k in the
@@ -9,6 +9,9 @@
 // t = d - d~ (two_diff), so d = d~ + t exactly, |t| <= u |d~|, u = 2^-53.
 //  * If every tail is zero, d~ = d and the exact expansion of P(d~) is D: its sign is the exact
 //    sign, Zero included. This is the common case on grids and for nearby coordinates (Sterbenz).
+//    When moreover all differences are small multiples of one power of two (integer lattices,
+//    scaled or not), D is evaluated in 64/128-bit integers instead (small_integers.hpp): exact,
+//    and an order of magnitude cheaper than the expansions.
 //  * Perm = P's tree evaluated on |d~| with products and additions only, the sum of the absolute
 //    values of P's monomials at d~. Computed in doubles (at most 16 roundings of nonnegative
 //    values, no underflow) Perm <= Perm_fp (1 + 2^-40). If Perm is zero, every monomial vanishes
@@ -39,6 +42,7 @@
 
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/expansion.hpp"
+#include "kernel/predicates/small_integers.hpp"
 
 namespace dtlab::stage {
 namespace {
@@ -281,14 +285,17 @@ FilteredSign certify_estimate(const DoubleWord& det, double perm) noexcept {
   return std::nullopt;
 }
 
-// Stage 2 on the differences r with their tails: the exact expansion straight away when it is
-// cheap; else the estimate, on r itself when no difference was rounded and on the double words
-// (r, tail) otherwise; then the exact expansion for exact differences, stage 3 for rounded ones.
-template <int N, class Exact, class Estimate>
+// Stage 2 on the differences r with their tails. Exact differences: in integers when they are
+// small multiples of one power of two (small_integers.hpp), else by the exact expansion straight
+// away when it is cheap, else the estimate on r and then the exact expansion. Rounded ones: the
+// estimate on the double words (r, tail), deferring to stage 3 when it cannot certify.
+template <int N, class Integer, class Exact, class Estimate>
 FilteredSign decide(const Differences<N>& diff, const double (&r)[N], double (*perm)(const double (&)[N]),
-                    Exact exact, Estimate estimate) noexcept {
-  if (diff.exact_and_short()) return exact();
+                    int bits, Integer integer, Exact exact, Estimate estimate) noexcept {
   if (!diff.rounded()) {
+    std::int64_t n[N];
+    if (small_integers::to_integers(r, bits, n)) return integer(n);
+    if (diff.exact_and_short()) return exact();
     if (const FilteredSign s = certify_estimate(estimate(r), perm(r))) return s;
     return exact();
   }
@@ -303,7 +310,9 @@ FilteredSign orient2d_adaptive(const Vec2& a, const Vec2& b, const Vec2& c) noex
   Differences<4> diff;
   const double r[4] = {diff(b.x, a.x), diff(b.y, a.y), diff(c.x, a.x), diff(c.y, a.y)};
   return decide(
-      diff, r, orient2d_perm, [&]() noexcept { return orient2d_exact_differences(r[0], r[1], r[2], r[3]); },
+      diff, r, orient2d_perm, small_integers::kOrient2dBits,
+      [](const std::int64_t (&n)[4]) noexcept { return small_integers::orient2d(n); },
+      [&]() noexcept { return orient2d_exact_differences(r[0], r[1], r[2], r[3]); },
       [](const auto& leaves) noexcept { return orient2d_estimate(leaves); });
 }
 
@@ -313,28 +322,58 @@ FilteredSign orient3d_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, cons
                        diff(c.x, a.x), diff(c.y, a.y), diff(c.z, a.z),  // c - a,
                        diff(d.x, a.x), diff(d.y, a.y), diff(d.z, a.z)}; // d - a
   return decide(
-      diff, r, orient3d_perm, [&]() noexcept { return orient3d_exact_differences(r); },
+      diff, r, orient3d_perm, small_integers::kOrient3dBits,
+      [](const std::int64_t (&n)[9]) noexcept { return small_integers::orient3d(n); },
+      [&]() noexcept { return orient3d_exact_differences(r); },
       [](const auto& leaves) noexcept { return orient3d_estimate(leaves); });
 }
 
 FilteredSign incircle_adaptive(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
-  Differences<6> diff;
-  const double r[6] = {diff(a.x, d.x), diff(a.y, d.y), diff(b.x, d.x),
-                       diff(b.y, d.y), diff(c.x, d.x), diff(c.y, d.y)};
-  return decide(
-      diff, r, incircle_perm, [&]() noexcept { return incircle_exact_differences(r); },
-      [](const auto& leaves) noexcept { return incircle_estimate(leaves); });
+  return detail::incircle_adaptive(a, b, c, d, nullptr);
 }
 
 FilteredSign insphere_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
                                const Vec3& e) noexcept {
+  return detail::insphere_adaptive(a, b, c, d, e, nullptr);
+}
+
+}  // namespace dtlab::stage
+
+namespace dtlab::detail {
+
+FilteredSign incircle_adaptive(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d,
+                               LiftCofactors* cofactors) noexcept {
+  using namespace stage;
+  Differences<6> diff;
+  const double r[6] = {diff(a.x, d.x), diff(a.y, d.y), diff(b.x, d.x),
+                       diff(b.y, d.y), diff(c.x, d.x), diff(c.y, d.y)};
+  return decide(
+      diff, r, incircle_perm, small_integers::kIncircleBits,
+      [&](const std::int64_t (&n)[6]) noexcept {
+        const Sign s = small_integers::incircle(n, cofactors ? &cofactors->sign : nullptr);
+        if (cofactors) cofactors->known = s == Sign::Zero;
+        return s;
+      },
+      [&]() noexcept { return incircle_exact_differences(r); },
+      [](const auto& leaves) noexcept { return incircle_estimate(leaves); });
+}
+
+FilteredSign insphere_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+                               LiftCofactors* cofactors) noexcept {
+  using namespace stage;
   Differences<12> diff;
   const double r[12] = {diff(a.x, e.x), diff(a.y, e.y), diff(a.z, e.z), diff(b.x, e.x),
                         diff(b.y, e.y), diff(b.z, e.z), diff(c.x, e.x), diff(c.y, e.y),
                         diff(c.z, e.z), diff(d.x, e.x), diff(d.y, e.y), diff(d.z, e.z)};
   return decide(
-      diff, r, insphere_perm, [&]() noexcept { return insphere_exact_differences(r); },
+      diff, r, insphere_perm, small_integers::kInsphereBits,
+      [&](const std::int64_t (&n)[12]) noexcept {
+        const Sign s = small_integers::insphere(n, cofactors ? &cofactors->sign : nullptr);
+        if (cofactors) cofactors->known = s == Sign::Zero;
+        return s;
+      },
+      [&]() noexcept { return insphere_exact_differences(r); },
       [](const auto& leaves) noexcept { return insphere_estimate(leaves); });
 }
 
-}  // namespace dtlab::stage
+}  // namespace dtlab::detail

@@ -19,31 +19,48 @@
 //
 // Zero is returned only when every cofactor vanishes: all points collinear (coplanar in 3D),
 // which no Delaunay algorithm asks about a non-degenerate simplex (C_d or C_e is then non-zero).
+//
+// Cost on cospherical input: the exact zero is usually certified by stage 2's integer evaluation
+// (grids, lattices), which hands over the cofactors it computed on the way; only otherwise are
+// they evaluated as orientations (semi-static filter first), and only until the first non-zero.
 #pragma once
 
+#include "kernel/predicates.hpp"
 #include "kernel/sign.hpp"
 #include "kernel/vec.hpp"
 
 namespace dtlab {
 
 namespace detail {
-Sign incircle_perturbation(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
-Sign insphere_perturbation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
-                           const Vec3& e) noexcept;
+// The sign of the perturbed determinant when the unperturbed one is zero; `known` cofactors (may
+// be null, or not known) are used instead of evaluating orientations.
+Sign incircle_perturbation(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d,
+                           const LiftCofactors* known = nullptr) noexcept;
+Sign insphere_perturbation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+                           const LiftCofactors* known = nullptr) noexcept;
+
+// Stages 2 to 4, then the perturbation: out of line, as for the predicates themselves.
+Sign incircle_perturbed_slow(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
+Sign insphere_perturbed_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                             const Vec3& e) noexcept;
 }  // namespace detail
 
-Sign incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
-Sign insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept;
-
+// The semi-static filter never certifies Zero, so what it decides needs no perturbation.
 inline Sign incircle_perturbed(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
-  const Sign s = incircle(a, b, c, d);
-  return s != Sign::Zero ? s : detail::incircle_perturbation(a, b, c, d);
+  if (const FilteredSign s = stage::incircle_semistatic(a, b, c, d)) {
+    detail::count_semistatic(Predicate::Incircle);
+    return *s;
+  }
+  return detail::incircle_perturbed_slow(a, b, c, d);
 }
 
 inline Sign insphere_perturbed(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
                                const Vec3& e) noexcept {
-  const Sign s = insphere(a, b, c, d, e);
-  return s != Sign::Zero ? s : detail::insphere_perturbation(a, b, c, d, e);
+  if (const FilteredSign s = stage::insphere_semistatic(a, b, c, d, e)) {
+    detail::count_semistatic(Predicate::Insphere);
+    return *s;
+  }
+  return detail::insphere_perturbed_slow(a, b, c, d, e);
 }
 
 }  // namespace dtlab

@@ -18,9 +18,10 @@ Sign orient2d_slow(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
   return stage::orient2d_exact(a, b, c);
 }
 
-Sign incircle_slow(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
+Sign incircle_slow(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d,
+                   LiftCofactors* cofactors) noexcept {
   StageCounts& counts = tls_predicate_stats[Predicate::Incircle];
-  if (const FilteredSign s = stage::incircle_adaptive(a, b, c, d)) {
+  if (const FilteredSign s = incircle_adaptive(a, b, c, d, cofactors)) {
     ++counts.adaptive;
     return *s;
   }
@@ -42,9 +43,10 @@ Sign orient3d_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) n
   return stage::orient3d_exact(a, b, c, d);
 }
 
-Sign insphere_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept {
+Sign insphere_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+                   LiftCofactors* cofactors) noexcept {
   StageCounts& counts = tls_predicate_stats[Predicate::Insphere];
-  if (const FilteredSign s = stage::insphere_adaptive(a, b, c, d, e)) {
+  if (const FilteredSign s = insphere_adaptive(a, b, c, d, e, cofactors)) {
     ++counts.adaptive;
     return *s;
   }

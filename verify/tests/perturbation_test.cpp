@@ -195,6 +195,44 @@ TEST(Perturbation, CountsOnlyResolvedZeros) {
   EXPECT_EQ(d[Predicate::Incircle].calls(), 2u);
 }
 
+// Stage 2's integer evaluation hands the perturbation the cofactors it computed on the way: they
+// must be the signs of the orientations that perturbation.hpp defines them as, on every zero.
+TEST(Perturbation, CofactorsFromStage2AreTheOrientations) {
+  std::mt19937_64 rng(77);
+  std::uniform_int_distribution<int> coordinate(-2, 2);
+  const double scales[3] = {1.0, 0x1p-60, 0x1p40};
+  int zeros2 = 0, zeros3 = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double s = scales[trial % 3];
+    std::array<Vec3, 5> p;
+    for (Vec3& q : p) q = {s * coordinate(rng), s * coordinate(rng), s * coordinate(rng)};
+    const Vec3 &a = p[0], &b = p[1], &c = p[2], &d = p[3], &e = p[4];
+    detail::LiftCofactors known;
+    if (detail::insphere_adaptive(a, b, c, d, e, &known) == Sign::Zero) {
+      ASSERT_TRUE(known.known);
+      const std::array<Sign, 5> want = {-reference::orient3d(b, c, d, e), reference::orient3d(a, c, d, e),
+                                        -reference::orient3d(a, b, d, e), reference::orient3d(a, b, c, e),
+                                        -reference::orient3d(a, b, c, d)};
+      EXPECT_EQ(known.sign, want);
+      ++zeros3;
+    } else {
+      EXPECT_FALSE(known.known);
+    }
+    const Vec2 a2{a.x, a.y}, b2{b.x, b.y}, c2{c.x, c.y}, d2{d.x, d.y};
+    detail::LiftCofactors known2;
+    if (detail::incircle_adaptive(a2, b2, c2, d2, &known2) == Sign::Zero) {
+      ASSERT_TRUE(known2.known);
+      EXPECT_EQ(known2.sign[0], reference::orient2d(b2, c2, d2));
+      EXPECT_EQ(known2.sign[1], -reference::orient2d(a2, c2, d2));
+      EXPECT_EQ(known2.sign[2], reference::orient2d(a2, b2, d2));
+      EXPECT_EQ(known2.sign[3], -reference::orient2d(a2, b2, c2));
+      ++zeros2;
+    }
+  }
+  EXPECT_GT(zeros2, 100);
+  EXPECT_GT(zeros3, 100);
+}
+
 // ---------------------------------------------------------------- (2) a real perturbation
 
 // delta^rank, rank 1 for the lexicographically largest of the points.

@@ -268,6 +268,30 @@ TEST(Stage3, DecidesExactZeroWithRoundedDifferences) {
   }
 }
 
+// Stage 2 evaluates exact differences that are small multiples of one power of two in integers
+// (small_integers.hpp), up to 2^24 (insphere) or 2^30 (the others) units. At and just past those
+// limits, scaled to both ends of the range, every stage must still agree with the reference.
+TEST(Stage2, IntegerEvaluationAtItsLimits) {
+  for (const double unit : {1.0, 0x1p-160, 0x1p100}) {
+    for (const double half : {0x1p23 - 1, 0x1p23, 0x1p29 - 1, 0x1p29}) {
+      const double r = half * unit, u = unit;
+      // Points of the sphere (circle) of radius r about the origin: differences up to 2r.
+      const Vec3 a{r, 0, 0}, b{0, r, 0}, c{0, 0, r}, d{-r, 0, 0}, on{0, -r, 0};
+      const Vec3 in{0, -r + u, 0}, out{0, -r - u, 0}, off{u, -r, u};
+      Tally t;
+      for (const Vec3& e : {on, in, out, off}) {
+        t.add(judge(a, b, c, d, e), describe({a, b, c, d, e}));
+        t.add(judge(a, b, c, e), describe({a, b, c, e}));
+        const Vec2 e2{e.x, e.y};
+        t.add(judge(Vec2{r, 0}, Vec2{0, r}, Vec2{-r, 0}, e2), describe({Vec2{r, 0}, Vec2{0, r}, Vec2{-r, 0}, e2}));
+        t.add(judge(Vec2{r, 0}, Vec2{0, r}, e2), describe({Vec2{r, 0}, Vec2{0, r}, e2}));
+      }
+      EXPECT_GT(t.zeros, 0);
+      EXPECT_EQ(t.expansion, 0) << "exact differences never reach stage 3";
+    }
+  }
+}
+
 // ---------------------------------------------------------------- counters
 
 TEST(SlowPath, CountsTheStageThatDecided) {
