@@ -38,7 +38,7 @@ void constrained3d_conforming(Constrained3dContext& c) {
     std::vector<std::array<std::uint32_t, 2>> missing;
     for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
       missing.clear();
-      if (cover_facet(c, f, index, missing)) continue;
+      if (facet_still_covered(c, f, index) || cover_facet(c, f, index, missing)) continue;
       const FacetParameters st = facet_parameters(c, f);
       for (const auto& m : missing) request_facet_point(c, f, st, m, splits, points);
     }

@@ -34,6 +34,7 @@ struct ConstraintFacet3 {
   std::vector<std::uint32_t> interior;               // Steiner points inside the triangle
   std::vector<std::array<double, 2>> interior_st;    // their (s, t)
   std::vector<std::array<std::uint32_t, 3>> pieces;  // once recovered: mesh faces, input turn
+  std::size_t pieces_vertex_count = 0;               // vertices on the triangle when they were found
   int ref = 0;
 };
 

@@ -73,21 +73,63 @@ bool steiner_point_within_rounding_bound(std::span<const Vec3> input_points, con
   return within_rounding_bound(exact, vertex);
 }
 
-MeshIndex::MeshIndex(const Tetrahedralization3& mesh) {
-  ring_.reserve(mesh.tetrahedron_count() * 2);
-  static constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
-  for (const auto& r : mesh.records())
-    for (const auto& e : kEdges) {
-      auto& ring = ring_[key(r.vertex[e[0]], r.vertex[e[1]])];
-      for (const int k : {e[2], e[3]})
-        if (std::find(ring.begin(), ring.end(), r.vertex[k]) == ring.end()) ring.push_back(r.vertex[k]);
-    }
+MeshIndex::MeshIndex(const Tetrahedralization3& mesh)
+    : mesh_(mesh), incident_(mesh.point_count(), T3::kNone), mark_(mesh.tetrahedron_count(), 0) {
+  const auto& records = mesh.records();
+  for (std::uint32_t t = 0; t < records.size(); ++t)
+    for (const std::uint32_t v : records[t].vertex)
+      if (v != T3::kInfinite) incident_[v] = t;
 }
 
-const std::vector<std::uint32_t>& MeshIndex::ring(std::uint32_t u, std::uint32_t v) const {
-  static const std::vector<std::uint32_t> kEmpty;
-  const auto it = ring_.find(key(u, v));
-  return it == ring_.end() ? kEmpty : it->second;
+// Depth-first over the tetrahedra holding u, through their facets that hold u.
+template <class F>
+void MeshIndex::for_each_in_star(std::uint32_t u, F&& f) const {
+  if (u >= incident_.size() || incident_[u] == T3::kNone) return;
+  if (++stamp_ == 0) std::fill(mark_.begin(), mark_.end(), 0), stamp_ = 1;
+  stack_.assign(1, incident_[u]);
+  mark_[incident_[u]] = stamp_;
+  while (!stack_.empty()) {
+    const std::uint32_t t = stack_.back();
+    stack_.pop_back();
+    f(t);
+    const auto& r = mesh_.records()[t];
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (r.vertex[i] == u) continue;  // the facet opposite u does not hold it
+      const std::uint32_t n = T3::tetrahedron_of(r.neighbour[i]);
+      if (mark_[n] != stamp_) mark_[n] = stamp_, stack_.push_back(n);
+    }
+  }
+}
+
+bool MeshIndex::has_edge(std::uint32_t u, std::uint32_t v) const {
+  if (u == T3::kInfinite) std::swap(u, v);
+  bool found = false;
+  for_each_in_star(u, [&](std::uint32_t t) {
+    const auto& x = mesh_.records()[t].vertex;
+    found = found || std::find(x.begin(), x.end(), v) != x.end();
+  });
+  return found;
+}
+
+bool MeshIndex::has_face(std::uint32_t u, std::uint32_t v, std::uint32_t w) const {
+  if (u == T3::kInfinite) std::swap(u, v);
+  bool found = false;
+  for_each_in_star(u, [&](std::uint32_t t) {
+    const auto& x = mesh_.records()[t].vertex;
+    found = found || (std::find(x.begin(), x.end(), v) != x.end() && std::find(x.begin(), x.end(), w) != x.end());
+  });
+  return found;
+}
+
+void MeshIndex::ring(std::uint32_t u, std::uint32_t v, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  if (u == T3::kInfinite) std::swap(u, v);
+  for_each_in_star(u, [&](std::uint32_t t) {
+    const auto& x = mesh_.records()[t].vertex;
+    if (std::find(x.begin(), x.end(), v) == x.end()) return;
+    for (const std::uint32_t w : x)
+      if (w != u && w != v && std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
+  });
 }
 
 double edge_split_parameter(const Constrained3dContext& c, std::uint32_t e, std::size_t i) {
@@ -142,6 +184,21 @@ std::vector<std::array<std::uint32_t, 2>> facet_boundary(const Constrained3dCont
   return pieces;
 }
 
+std::size_t facet_vertex_count(const Constrained3dContext& c, std::uint32_t f) {
+  const ConstraintFacet3& facet = c.facets[f];
+  std::size_t n = facet.interior.size();
+  for (const std::uint32_t e : facet.edges) n += c.edges[e].chain.size() - 1;
+  return n;
+}
+
+bool facet_still_covered(const Constrained3dContext& c, std::uint32_t f, const MeshIndex& index) {
+  const ConstraintFacet3& facet = c.facets[f];
+  if (facet.pieces.empty() || facet.pieces_vertex_count != facet_vertex_count(c, f)) return false;
+  for (const auto& p : facet.pieces)
+    if (!index.has_face(p[0], p[1], p[2])) return false;
+  return true;
+}
+
 bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& index,
                  std::vector<std::array<std::uint32_t, 2>>& missing) {
   const FacetParameters st = facet_parameters(c, f);
@@ -151,6 +208,7 @@ bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& inde
   std::queue<std::array<std::uint32_t, 2>> open;
   for (const auto& b : boundary) open.push(b);
   std::vector<std::array<std::uint32_t, 3>> pieces;
+  std::vector<std::uint32_t> ring;
   const std::size_t missing_before = missing.size();
   std::size_t steps = 0;
   while (!open.empty()) {
@@ -160,7 +218,8 @@ bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& inde
     if (++steps > 4 * st.size() * st.size() + 16) throw InternalError("constrained3d: facet cover did not end");
     const St &pu = st.at(u), &pv = st.at(v);
     std::uint32_t best = T3::kNone;
-    for (const std::uint32_t w : index.ring(u, v)) {
+    index.ring(u, v, ring);
+    for (const std::uint32_t w : ring) {
       const auto it = st.find(w);
       if (it == st.end() || orient_st(pu, pv, it->second).sign() != Sign::Positive) continue;
       if (best == T3::kNone || incircle_st(pu, pv, st.at(best), it->second) == Sign::Positive) best = w;
@@ -191,6 +250,7 @@ bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& inde
     return false;
   }
   c.facets[f].pieces = std::move(pieces);
+  c.facets[f].pieces_vertex_count = facet_vertex_count(c, f);
   return true;
 }
 

@@ -16,20 +16,30 @@
 
 namespace dtlab {
 
-// The edges of the mesh (ghost tetrahedra included, kInfinite a vertex like any) and, for each,
-// the third vertices of the faces around it (its shell's ring). Rebuilt after insertions.
+// Edge queries on the mesh (ghost tetrahedra included, kInfinite a vertex like any): one
+// tetrahedron per vertex, and each query searches the star of its first vertex. Building it is
+// a pass over the records, so that it can be rebuilt after every round of insertions; each
+// query costs the size of a star. Not for concurrent use (the search marks are shared).
 class MeshIndex {
  public:
   explicit MeshIndex(const Tetrahedralization3& mesh);
-  bool has_edge(std::uint32_t u, std::uint32_t v) const { return ring_.count(key(u, v)) != 0; }
-  // Every w such that (u, v, w) is a mesh face; empty if (u, v) is no edge.
-  const std::vector<std::uint32_t>& ring(std::uint32_t u, std::uint32_t v) const;
+  bool has_edge(std::uint32_t u, std::uint32_t v) const;
+  bool has_face(std::uint32_t u, std::uint32_t v, std::uint32_t w) const;
+  // Every w such that (u, v, w) is a mesh face, each once; empty if (u, v) is no edge.
+  void ring(std::uint32_t u, std::uint32_t v, std::vector<std::uint32_t>& out) const;
   static std::uint64_t key(std::uint32_t u, std::uint32_t v) noexcept {
     return u < v ? std::uint64_t{u} << 32 | v : std::uint64_t{v} << 32 | u;
   }
 
  private:
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> ring_;
+  // Calls f(t) for every tetrahedron holding u (finite u).
+  template <class F>
+  void for_each_in_star(std::uint32_t u, F&& f) const;
+
+  const Tetrahedralization3& mesh_;
+  std::vector<std::uint32_t> incident_;  // by vertex id; kNone for a vertex in no tetrahedron
+  mutable std::vector<std::uint32_t> mark_, stack_;
+  mutable std::uint32_t stamp_ = 0;
 };
 
 // A request for a Steiner point: on input edge `edge` at parameter t, or inside input triangle
@@ -67,6 +77,14 @@ std::vector<std::array<std::uint32_t, 2>> facet_boundary(const Constrained3dCont
 // third vertex is a vertex of f (the one whose (s, t) circle holds no other candidate if
 // several), then checks exactly that the pieces' (s, t) areas add up to the triangle's.
 // Fills c.facets[f].pieces when they do; else lists the directed pieces with no face.
+// The number of vertices on facet f (corners, edge Steiner points, interior ones).
+std::size_t facet_vertex_count(const Constrained3dContext& c, std::uint32_t f);
+
+// Whether the pieces found for facet f before still triangulate it: no vertex came onto it
+// since, and each piece is still a mesh face (then their (s, t) cover is unchanged). Saves
+// cover_facet's exact arithmetic on the triangles a round did not touch.
+bool facet_still_covered(const Constrained3dContext& c, std::uint32_t f, const MeshIndex& index);
+
 bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& index,
                  std::vector<std::array<std::uint32_t, 2>>& missing);
 
