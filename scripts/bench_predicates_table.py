@@ -28,7 +28,7 @@ import readme_tables
 PREDICATES = ["orient2d", "incircle", "orient3d", "insphere"]
 CALLER_IMPLS = [("plain", "plain det"), ("filtered", "filtered"), ("uncounted", "uncounted"),
                 ("cgal_epick", "CGAL Epick")]
-STAGES = ["semistatic", "adaptive", "exact"]
+STAGES = ["semistatic", "adaptive", "expansion", "exact"]
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 

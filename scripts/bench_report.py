@@ -346,7 +346,7 @@ def gbench_table(rows, element, prov, time_kind):
 
 def stage_table(rows, prov):
     head = ["n", "distribution", "program", "predicate", "calls", "calls/element", "semi-static", "adaptive",
-            "exact (GMP)", "perturbed", "machine, compiler, flags, commit"]
+            "exact (expansions or GMP)", "of which GMP", "perturbed", "machine, compiler, flags, commit"]
     out = []
     for r in rows:
         for predicate, c in (r.get("predicates") or {}).items():
@@ -356,7 +356,7 @@ def stage_table(rows, prov):
             share = [f"{100.0 * c[k] / calls:.3g} %" for k in ("semistatic", "adaptive", "exact")]
             out.append([d2.size_label(r["n"]), r["distribution"], r["program"], predicate, calls,
                         fmt(calls / r["elements"]) if r.get("elements") else "–"] + share
-                       + [c["perturbed"], prov])
+                       + [c.get("gmp", "–"), c["perturbed"], prov])
     return md_table(head, out)
 
 
