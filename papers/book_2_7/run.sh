@@ -70,7 +70,7 @@ measure() {
     e="$(field elements "$json")"; s="$(field seconds "$json")"
     pm="$(field elements_per_minute "$json")"; rss="$(field peak_rss_mb "$json")"
     [[ -n $e && -n $s && -n $pm && -n $rss ]] || fail "$algo, n=$n: no statistics line: $json"
-    ((quick)) && { grep -q '^topology: ok' "$work/out" || fail "$algo, n=$n: $(head -n 1 "$work/out")"; }
+    ((quick)) && { grep -q '^ok' "$work/out" || fail "$algo, n=$n: $(head -n 1 "$work/out")"; }
     # Uniform points: about 24*pi^2/35 = 6.77 tetrahedra per point in the limit, fewer near the
     # hull of a small sample; outside [5n, 7n] the triangulation is not the one of these points.
     ((e >= 5 * n && e <= 7 * n)) || fail "$algo, n=$n: $e tetrahedra, outside [5n, 7n]"
