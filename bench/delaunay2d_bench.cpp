@@ -24,6 +24,7 @@
 
 #include "algorithms/delaunay2d/delaunay2d.hpp"
 #include "algorithms/delaunay2d/registry.hpp"
+#include "bench/element_bench.hpp"
 #include "dtlab/build_info.hpp"
 #include "kernel/error.hpp"
 #include "verify/generators/points2d.hpp"
@@ -32,92 +33,20 @@
 #include "bench/delaunay2d_cgal.hpp"
 #endif
 
-// --- Heap accounting ------------------------------------------------------------------------
-// Every operator new/delete of this executable (dtlab's vectors, CGAL's containers) adds or
-// removes the block's usable size, so the peak over one call is that call's working memory on
-// the heap. A relaxed atomic add per allocation: both dtlab and CGAL allocate in large blocks.
-// noinline: inlined into a caller, the free() below would meet the caller's `new` and trip
-// -Wmismatched-new-delete.
-namespace {
-std::atomic<std::size_t> g_heap_bytes{0};
-std::atomic<std::size_t> g_heap_peak{0};
-}  // namespace
-
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  void* p = std::malloc(size == 0 ? 1 : size);
-  if (p == nullptr) throw std::bad_alloc();
-  const std::size_t now = g_heap_bytes.fetch_add(malloc_usable_size(p), std::memory_order_relaxed) +
-                          malloc_usable_size(p);
-  std::size_t peak = g_heap_peak.load(std::memory_order_relaxed);
-  while (now > peak && !g_heap_peak.compare_exchange_weak(peak, now, std::memory_order_relaxed)) {
-  }
-  return p;
-}
-void* operator new[](std::size_t size) { return ::operator new(size); }
-[[gnu::noinline]] void operator delete(void* p) noexcept {
-  if (p == nullptr) return;
-  g_heap_bytes.fetch_sub(malloc_usable_size(p), std::memory_order_relaxed);
-  std::free(p);
-}
-void operator delete[](void* p) noexcept { ::operator delete(p); }
-void operator delete(void* p, std::size_t) noexcept { ::operator delete(p); }
-void operator delete[](void* p, std::size_t) noexcept { ::operator delete(p); }
-
 namespace dtlab::bench {
 namespace {
 
 constexpr std::uint64_t kSeed = 1;  // the seed `dtlab delaunay` uses by default
 const char* const kDistributions[] = {"uniform", "normal", "grid", "circle", "clustered"};
 
-// Builds a triangulation of the points, frees it, returns its triangle count: all stored ones
-// when `finite` is false (O(1), for the timed loop), else the finite ones.
-using Build = std::function<std::size_t(std::span<const Vec2>, bool finite)>;
-
-// The points of the benchmark being run. Benchmarks are registered grouped by (distribution,
-// n), so one cached set is enough, and a 10^7 set does not outlive its group.
-const std::vector<Vec2>& points_for(const std::string& distribution, std::size_t n) {
-  static std::string cached_distribution;
-  static std::vector<Vec2> cached;
-  if (cached_distribution != distribution || cached.size() != n) {
-    cached = {};
-    cached = generate_points2d(distribution, n, kSeed);
-    cached_distribution = distribution;
-  }
-  return cached;
-}
-
-// Measured once per benchmark, outside the timed loop.
-struct Untimed {
-  bool done = false;
-  std::size_t finite_triangles = 0;
-  std::size_t peak_heap_bytes = 0;
-};
+using Build = ElementBuild<Vec2>;
 
 void run(benchmark::State& state, const std::string& distribution, std::size_t n, const Build& build,
          Untimed& untimed) {
-  const std::vector<Vec2>& points = points_for(distribution, n);
-  try {
-    if (!untimed.done) {
-      const std::size_t before = g_heap_bytes.load();
-      g_heap_peak.store(before);
-      untimed.finite_triangles = build(points, true);
-      untimed.peak_heap_bytes = g_heap_peak.load() - before;
-      untimed.done = true;
-    }
-    for (auto _ : state) {
-      benchmark::DoNotOptimize(build(points, false));
-    }
-  } catch (const std::exception& e) {
-    state.SkipWithError(e.what());
-    return;
-  }
-  const double triangles = static_cast<double>(untimed.finite_triangles);
-  state.counters["triangles"] = triangles;
-  state.counters["triangles_per_minute"] =
-      benchmark::Counter(60.0 * triangles, benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["peak_heap_mb"] = static_cast<double>(untimed.peak_heap_bytes) / (1024.0 * 1024.0);
-  state.counters["heap_bytes_per_triangle"] =
-      triangles > 0 ? static_cast<double>(untimed.peak_heap_bytes) / triangles : 0.0;
+  const auto& points = cached_points<Vec2>(distribution, n, [](const std::string& d, std::size_t size) {
+    return generate_points2d(d, size, kSeed);
+  });
+  run_element_bench<Vec2>(state, points, build, untimed, "triangles", "triangle");
 }
 
 std::size_t dtlab_triangles(std::span<const Vec2> points, const std::string& algorithm, bool finite) {

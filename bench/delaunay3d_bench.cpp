@@ -29,6 +29,7 @@
 
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
+#include "bench/element_bench.hpp"
 #include "dtlab/build_info.hpp"
 #include "kernel/error.hpp"
 #include "verify/generators/points3d.hpp"
@@ -37,36 +38,6 @@
 #include "bench/delaunay3d_cgal.hpp"
 #endif
 
-// --- Heap accounting ------------------------------------------------------------------------
-// Every operator new/delete of this executable (dtlab's vectors, CGAL's containers, a parallel
-// variant's workers) adds or removes the block's usable size, so the peak over one call is that
-// call's working memory on the heap. noinline: inlined into a caller, the free() below would
-// meet the caller's `new` and trip -Wmismatched-new-delete.
-namespace {
-std::atomic<std::size_t> g_heap_bytes{0};
-std::atomic<std::size_t> g_heap_peak{0};
-}  // namespace
-
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  void* p = std::malloc(size == 0 ? 1 : size);
-  if (p == nullptr) throw std::bad_alloc();
-  const std::size_t now = g_heap_bytes.fetch_add(malloc_usable_size(p), std::memory_order_relaxed) +
-                          malloc_usable_size(p);
-  std::size_t peak = g_heap_peak.load(std::memory_order_relaxed);
-  while (now > peak && !g_heap_peak.compare_exchange_weak(peak, now, std::memory_order_relaxed)) {
-  }
-  return p;
-}
-void* operator new[](std::size_t size) { return ::operator new(size); }
-[[gnu::noinline]] void operator delete(void* p) noexcept {
-  if (p == nullptr) return;
-  g_heap_bytes.fetch_sub(malloc_usable_size(p), std::memory_order_relaxed);
-  std::free(p);
-}
-void operator delete[](void* p) noexcept { ::operator delete(p); }
-void operator delete(void* p, std::size_t) noexcept { ::operator delete(p); }
-void operator delete[](void* p, std::size_t) noexcept { ::operator delete(p); }
-
 namespace dtlab::bench {
 namespace {
 
@@ -74,55 +45,14 @@ constexpr std::uint64_t kSeed = 1;  // the seed `dtlab delaunay` uses by default
 const char* const kDistributions[] = {"uniform", "normal", "grid", "sphere", "clustered"};
 constexpr unsigned kParallelThreads[] = {1, 2};
 
-// Builds a tetrahedralization of the points, frees it, returns its tetrahedron count: all stored
-// ones (ghosts included) when `finite` is false (O(1), for the timed loop), else the finite ones.
-using Build = std::function<std::size_t(std::span<const Vec3>, bool finite)>;
-
-// The points of the benchmark being run. Benchmarks are registered grouped by (distribution,
-// n), so one cached set is enough, and a 10^7 set does not outlive its group.
-const std::vector<Vec3>& points_for(const std::string& distribution, std::size_t n) {
-  static std::string cached_distribution;
-  static std::vector<Vec3> cached;
-  if (cached_distribution != distribution || cached.size() != n) {
-    cached = {};
-    cached = generate_points3d(distribution, n, kSeed);
-    cached_distribution = distribution;
-  }
-  return cached;
-}
-
-// Measured once per benchmark, outside the timed loop.
-struct Untimed {
-  bool done = false;
-  std::size_t finite_tetrahedra = 0;
-  std::size_t peak_heap_bytes = 0;
-};
+using Build = ElementBuild<Vec3>;
 
 void run(benchmark::State& state, const std::string& distribution, std::size_t n, const Build& build,
          Untimed& untimed) {
-  const std::vector<Vec3>& points = points_for(distribution, n);
-  try {
-    if (!untimed.done) {
-      const std::size_t before = g_heap_bytes.load();
-      g_heap_peak.store(before);
-      untimed.finite_tetrahedra = build(points, true);
-      untimed.peak_heap_bytes = g_heap_peak.load() - before;
-      untimed.done = true;
-    }
-    for (auto _ : state) {
-      benchmark::DoNotOptimize(build(points, false));
-    }
-  } catch (const std::exception& e) {
-    state.SkipWithError(e.what());
-    return;
-  }
-  const double tetrahedra = static_cast<double>(untimed.finite_tetrahedra);
-  state.counters["tetrahedra"] = tetrahedra;
-  state.counters["tetrahedra_per_minute"] =
-      benchmark::Counter(60.0 * tetrahedra, benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["peak_heap_mb"] = static_cast<double>(untimed.peak_heap_bytes) / (1024.0 * 1024.0);
-  state.counters["heap_bytes_per_tetrahedron"] =
-      tetrahedra > 0 ? static_cast<double>(untimed.peak_heap_bytes) / tetrahedra : 0.0;
+  const auto& points = cached_points<Vec3>(distribution, n, [](const std::string& d, std::size_t size) {
+    return generate_points3d(d, size, kSeed);
+  });
+  run_element_bench<Vec3>(state, points, build, untimed, "tetrahedra", "tetrahedron");
 }
 
 std::size_t dtlab_tetrahedra(std::span<const Vec3> points, const Delaunay3dOptions& options, bool finite) {
