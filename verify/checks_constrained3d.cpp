@@ -402,11 +402,15 @@ std::string to_json(const ConstrainedCheckReport3& r) {
   out += "},\"region_volume6\":{";
   first = true;
   for (const auto& [region, v6] : r.region_volume6) {
-    out += (first ? "\"" : ",\"") + std::to_string(region) + "\":" + json_string(v6.to_string());
+    out += first ? "\"" : ",\"";
+    out += std::to_string(region) + "\":" + json_string(v6.to_string());
     first = false;
   }
   out += "},\"problems\":[";
-  for (std::size_t i = 0; i < r.problems.size(); ++i) out += (i ? "," : "") + json_string(r.problems[i]);
+  for (std::size_t i = 0; i < r.problems.size(); ++i) {
+    if (i) out += ',';
+    out += json_string(r.problems[i]);
+  }
   return out + "]}";
 }
 

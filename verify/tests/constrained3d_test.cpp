@@ -422,7 +422,9 @@ TEST(ConstrainedChecks3, CatchDamagedResults) {
   const auto s = schonhardt_polyhedron(30);
   const ConstrainedInput3 in{.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {}, .regions = {}};
   const Constrained3dResult good = constrained3d(in);
-  ASSERT_TRUE(check_constrained3d(in, good).ok);
+  const auto clean = check_constrained3d(in, good);
+  ASSERT_TRUE(clean.ok) << to_text(clean);
+  EXPECT_NE(to_json(clean).find("\"region_volume6\":{\"1\":\""), std::string::npos) << to_json(clean);
   ASSERT_FALSE(good.steiner.empty());
   const auto fails = [&](const char* what, auto&& damage) {
     Constrained3dResult r = good;
@@ -430,6 +432,8 @@ TEST(ConstrainedChecks3, CatchDamagedResults) {
     const auto report = check_constrained3d(in, r);
     EXPECT_FALSE(report.ok) << what;
     EXPECT_EQ(report.problem_count, report.problems.size()) << what;
+    EXPECT_EQ(to_json(report).rfind("{\"ok\":false,\"problem_count\":" + std::to_string(report.problem_count), 0), 0u);
+    EXPECT_EQ(to_text(report).rfind(std::to_string(report.problem_count) + " problems:", 0), 0u);
   };
   fails("a piece dropped", [](Constrained3dResult& r) {
     r.triangles.pop_back(), r.triangle_face.pop_back(), r.triangle_refs.pop_back();
