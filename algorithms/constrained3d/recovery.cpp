@@ -32,6 +32,13 @@ Sign incircle_st(const St& p, const St& q, const St& r, const St& x) {
   return (ax * (by * c2 - b2 * cy) - ay * (bx * c2 - b2 * cx) + a2 * (bx * cy - by * cx)).sign();
 }
 
+// Whether p and q lie on one side of the triangle (in (s, t): t = 0, s + t = 1 or s = 0).
+bool along_one_side(const St& p, const St& q) {
+  return (p[1].sign() == Sign::Zero && q[1].sign() == Sign::Zero) ||
+         (p[0].sign() == Sign::Zero && q[0].sign() == Sign::Zero) ||
+         (p[0] + p[1] == Rational(1) && q[0] + q[1] == Rational(1));
+}
+
 Vec3 sub(const Vec3& a, const Vec3& b) { return a - b; }
 
 // Circumcentre of a triangle in space, in doubles (a placement, not a decision).
@@ -222,6 +229,11 @@ bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& inde
     for (const std::uint32_t w : ring) {
       const auto it = st.find(w);
       if (it == st.end() || orient_st(pu, pv, it->second).sign() != Sign::Positive) continue;
+      // A mesh edge along a side that skips a vertex on it (rounded Steiner points lie just off
+      // the side) is no piece: its far side is outside the triangle.
+      if ((along_one_side(pv, it->second) && !outer.count({v, w})) ||
+          (along_one_side(it->second, pu) && !outer.count({w, u})))
+        continue;
       if (best == T3::kNone || incircle_st(pu, pv, st.at(best), it->second) == Sign::Positive) best = w;
     }
     if (best == T3::kNone) {

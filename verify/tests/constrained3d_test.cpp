@@ -483,6 +483,17 @@ ClosedSurface3 random_star(const std::vector<std::array<int, 3>>& lattice, const
   return s;
 }
 
+TEST(Constrained3d, MeshEdgeSkippingARoundedSteinerPoint) {
+  // Found by the property below (seed 9699257793194552119): a mesh edge joins two vertices of a
+  // triangle's side past a rounded Steiner point between them; the facet cover took the face on
+  // it and then asked for a point beyond the side.
+  const std::vector<std::array<int, 3>> lattice{
+      {7, -48, -62}, {-3, 63, 26},  {-49, 71, -30},  {-93, 37, -1},  {31, 22, -42}, {72, -4, -56},
+      {26, -35, 18}, {-14, -29, -10}, {29, -69, -9}, {-68, -92, -100}, {58, -55, -24}, {-56, -8, -36},
+      {43, 31, 66},  {36, 26, 43},  {4, -33, -95},   {-73, 53, -12}, {-44, -36, -85}, {-80, 37, 42}};
+  run_and_check(random_star(lattice, {4, 3, 10, 9, 8, 9, 9}), "conforming", {}, {}, 20);
+}
+
 // Timing on larger inputs (run with --gtest_also_run_disabled_tests
 // --gtest_filter='*LargerInputs*'): Chazelle n = 8, and surfaces of about 10^4 triangles made
 // from 5000 random points on a sphere: their convex hull, and the same with every vertex moved
