@@ -35,20 +35,35 @@ step "fuzz build (clang-14, libFuzzer)"
 cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DDTLAB_BUILD_FUZZ=ON -DDTLAB_BUILD_TESTS=OFF -DDTLAB_BUILD_BENCH=OFF -DDTLAB_WITH_CGAL=OFF >/dev/null
 cmake --build build-fuzz -j"$jobs"
-step "fuzz runs (${fuzz_seconds} s each)"
-for target in build-fuzz/fuzz/*_fuzz; do
-  [ -x "$target" ] || continue
+step "fuzz runs (${fuzz_seconds} s each, ${jobs} at a time)"
+# One target per core at a time: each is single-threaded. A target's output is printed when it
+# ends; a failing target prints its log's tail and fails the run.
+fuzz_one() {
+  local target=$1 name corpus work rc=0
   name=$(basename "$target")
   corpus="fuzz/corpus/${name%_fuzz}"
   work=$(mktemp -d)
   [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
-  echo "-- $name"
-  rc=0
   "$target" -max_total_time="$fuzz_seconds" -timeout=60 -print_final_stats=1 "$work" >"$work.log" 2>&1 || rc=$?
+  echo "-- $name"
   grep -E "^(stat::number_of_executed_units|stat::average_exec_per_sec|Done)" "$work.log" || true
-  if [ "$rc" -ne 0 ]; then tail -n 60 "$work.log"; echo "fuzz target $name failed"; exit 1; fi
+  if [ "$rc" -ne 0 ]; then tail -n 60 "$work.log"; echo "fuzz target $name failed"; fi
   rm -rf "$work" "$work.log"
+  return "$rc"
+}
+fuzz_pids=()
+fuzz_failed=0
+for target in build-fuzz/fuzz/*_fuzz; do
+  [ -x "$target" ] || continue
+  fuzz_one "$target" &
+  fuzz_pids+=($!)
+  if [ "${#fuzz_pids[@]}" -ge "$jobs" ]; then
+    wait "${fuzz_pids[0]}" || fuzz_failed=1
+    fuzz_pids=("${fuzz_pids[@]:1}")
+  fi
 done
+for pid in "${fuzz_pids[@]}"; do wait "$pid" || fuzz_failed=1; done
+[ "$fuzz_failed" -eq 0 ] || exit 1
 
 step "Release suite"
 ctest --test-dir build -j"$jobs" --output-on-failure
