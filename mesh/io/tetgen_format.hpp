@@ -1,4 +1,4 @@
-// TetGen's .node, .ele and .face files (the formats of Hang Si's TetGen, as its documentation
+// TetGen's .node, .ele and .face files (the formats of the TetGen mesher, as its documentation
 // describes them; no code of TetGen is used).
 //
 //   .node: <#points> [<dimension = 3> [<#attributes> [<#boundary markers: 0 or 1>]]]
@@ -15,7 +15,7 @@
 //
 // Orientation. TetGen's documentation of the .ele format does not state one in words (only a
 // figure of the node numbering). TetGen itself keeps every tetrahedron (a, b, c, d) with
-// Shewchuk's orient3d(a, b, c, d) < 0, i.e. det(b-a, c-a, d-a) > 0, and writes the corners in
+// the opposite-sign orient3d convention (orient3d(a, b, c, d) < 0), i.e. det(b-a, c-a, d-a) > 0, and writes the corners in
 // that order; its -R switch writes them reversed. So a .ele from TetGen is positive in dtlab's
 // sense (kernel/predicates.hpp, Medit's convention), and one written with -R is negative. The
 // reader therefore decides each tetrahedron's orientation exactly and requires one sign for the

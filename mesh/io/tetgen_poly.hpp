@@ -1,5 +1,5 @@
 // TetGen's .poly and .smesh files: a 3D piecewise linear complex (PLC) with volume holes and
-// regions, as TetGen's documentation (Hang Si, TetGen 1.5 manual §5.2) describes them; no code of
+// regions, as TetGen's documentation (TetGen 1.5 manual §5.2) describes them; no code of
 // TetGen is used.
 //
 //   Part 1  <#points> [<dimension = 3> [<#attributes> [<#boundary markers: 0 or 1>]]]
