@@ -160,6 +160,38 @@ bool within_rounding_bound(const ExactPoint3& exact, const Vec3& rounded) {
          coordinate_within_bound(exact.z, rounded.z);
 }
 
+bool rounding_box_meets_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const double rx = rounding_bound(p.x), ry = rounding_bound(p.y);
+  // Boxes apart, in doubles: p.x + 4 rx is rounded by at most ulp(2 p.x) / 2 <= 2 rx, so it
+  // stays beyond p.x + rx.
+  if (std::min(a.x, b.x) > p.x + 4 * rx || std::max(a.x, b.x) < p.x - 4 * rx) return false;
+  if (std::min(a.y, b.y) > p.y + 4 * ry || std::max(a.y, b.y) < p.y - 4 * ry) return false;
+  // The line far from p, in doubles: if ab meets the box, |cross| <= |ex| ry + |ey| rx exactly;
+  // the computed values are within a few eps of their terms' magnitudes (generous margins).
+  const double ex = b.x - a.x, ey = b.y - a.y, dx = p.x - a.x, dy = p.y - a.y;
+  const double cross = ex * dy - ey * dx;
+  const double reach = std::fabs(ex) * ry + std::fabs(ey) * rx;
+  const double error = 16 * DBL_EPSILON * (std::fabs(ex * dy) + std::fabs(ey * dx));
+  if (std::fabs(cross) > 4 * reach + error) return false;
+  // Exactly: the box [x0, x1] x [y0, y1] meets the closed segment iff the coordinate ranges
+  // overlap and the box's corners are not all strictly on one side of the line.
+  const Rational Rx(rx), Ry(ry);
+  const Rational x0 = Rational(p.x) - Rx, x1 = Rational(p.x) + Rx;
+  const Rational y0 = Rational(p.y) - Ry, y1 = Rational(p.y) + Ry;
+  if (Rational(std::min(a.x, b.x)) > x1 || Rational(std::max(a.x, b.x)) < x0) return false;
+  if (Rational(std::min(a.y, b.y)) > y1 || Rational(std::max(a.y, b.y)) < y0) return false;
+  const Rational Ex = Rational(b.x) - Rational(a.x), Ey = Rational(b.y) - Rational(a.y);
+  const Rational ax(a.x), ay(a.y);
+  int positive = 0, negative = 0;
+  for (const Rational* cx : {&x0, &x1})
+    for (const Rational* cy : {&y0, &y1}) {
+      const Sign s = (Ex * (*cy - ay) - Ey * (*cx - ax)).sign();
+      positive += s == Sign::Positive;
+      negative += s == Sign::Negative;
+    }
+  return positive < 4 && negative < 4;
+}
+
 std::optional<ExactPoint2> line_intersection_exact(const Vec2& a, const Vec2& b, const Vec2& c,
                                                    const Vec2& d) {
   const ExactPoint2 ea = to_exact(a);

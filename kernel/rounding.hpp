@@ -73,6 +73,12 @@ RoundedPoint3 round_point_checked(const ExactPoint3& p);
 bool within_rounding_bound(const ExactPoint2& exact, const Vec2& rounded);
 bool within_rounding_bound(const ExactPoint3& exact, const Vec3& rounded);
 
+// Does the closed segment ab meet the box of half-widths rounding_bound(p.x), rounding_bound(p.y)
+// around p, i.e. is p within its rounding bound of some exact point of ab? This is p's "hot
+// pixel" in snap rounding: the reals that round to p lie in that box. Decided exactly (a double
+// filter, then rationals on the separating axes: the two coordinate axes and ab's normal).
+bool rounding_box_meets_segment(const Vec2& p, const Vec2& a, const Vec2& b);
+
 // The intersection of the supporting lines of segments ab and cd, exactly. Empty (std::nullopt)
 // when the lines are parallel or identical, or a segment has zero length: then there is no
 // single intersection point, and the caller decides from orient2d what the configuration is.

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The whole test suite, from a fresh clone: installs the dependencies, builds, then runs
-#   1. the sanitizer suite (AddressSanitizer + UndefinedBehaviorSanitizer build of every test),
+#   1. the sanitizer suite (AddressSanitizer + UndefinedBehaviorSanitizer clang build of every test),
 #   2. every libFuzzer target for a bounded time (DTLAB_FUZZ_SECONDS each, default 60),
 #   3. the Release suite (CGAL comparisons, consumer package, CLI), whose ctest summary closes
 #      the output.
@@ -23,18 +23,17 @@ step "Release build"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$jobs"
 
-step "sanitizer build (ASan + UBSan)"
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDTLAB_SANITIZE=ON \
-      -DDTLAB_WITH_CGAL=OFF -DDTLAB_BUILD_BENCH=OFF >/dev/null
+# One clang build serves the sanitizer suite and the fuzz targets: the libraries are compiled
+# once, with ASan + UBSan and libFuzzer's coverage instrumentation (fuzz/CMakeLists.txt), and the
+# whole suite runs under a second compiler (the Release build is gcc's).
+step "sanitizer and fuzz build (clang-14, ASan + UBSan, libFuzzer)"
+cmake -S . -B build-asan -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDTLAB_SANITIZE=ON \
+      -DDTLAB_BUILD_FUZZ=ON -DDTLAB_WITH_CGAL=OFF -DDTLAB_BUILD_BENCH=OFF >/dev/null
 cmake --build build-asan -j"$jobs"
 step "sanitizer suite"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-asan -j"$jobs" --output-on-failure -E '^consumer_package$'
 
-step "fuzz build (clang-14, libFuzzer)"
-cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DDTLAB_BUILD_FUZZ=ON -DDTLAB_BUILD_TESTS=OFF -DDTLAB_BUILD_BENCH=OFF -DDTLAB_WITH_CGAL=OFF >/dev/null
-cmake --build build-fuzz -j"$jobs"
 step "fuzz runs (${fuzz_seconds} s each, ${jobs} at a time)"
 # One target per core at a time: each is single-threaded. A target's output is printed when it
 # ends; a failing target prints its log's tail and fails the run.
@@ -53,7 +52,7 @@ fuzz_one() {
 }
 fuzz_pids=()
 fuzz_failed=0
-for target in build-fuzz/fuzz/*_fuzz; do
+for target in build-asan/fuzz/*_fuzz; do
   [ -x "$target" ] || continue
   fuzz_one "$target" &
   fuzz_pids+=($!)

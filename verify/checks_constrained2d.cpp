@@ -92,26 +92,9 @@ bool forward(const Vec2& c, const Vec2& d, const Vec2& a, const Vec2& b) {
   return dot.sign() == Sign::Positive;
 }
 
-// Does the closed segment AB meet the box of half-widths rounding_bound(p.x), rounding_bound(p.y)
-// around p, i.e. is p within its rounding bound of some exact point of AB? Separating axes: the
-// two coordinate axes and AB's normal, in rationals.
+// p within its rounding bound of an exact point of the closed segment AB (kernel/rounding.hpp).
 bool within_rounding_bound_of_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  if (orient2d(a, b, p) == Sign::Zero && (strictly_between(a, b, p) || p == a || p == b)) return true;
-  const Rational rx(rounding_bound(p.x)), ry(rounding_bound(p.y));
-  const Rational x0 = Rational(p.x) - rx, x1 = Rational(p.x) + rx;
-  const Rational y0 = Rational(p.y) - ry, y1 = Rational(p.y) + ry;
-  if (Rational(std::min(a.x, b.x)) > x1 || Rational(std::max(a.x, b.x)) < x0) return false;
-  if (Rational(std::min(a.y, b.y)) > y1 || Rational(std::max(a.y, b.y)) < y0) return false;
-  const Rational ex = Rational(b.x) - Rational(a.x), ey = Rational(b.y) - Rational(a.y);
-  const Rational ax(a.x), ay(a.y);
-  int positive = 0, negative = 0;
-  for (const Rational* cx : {&x0, &x1})
-    for (const Rational* cy : {&y0, &y1}) {
-      const Sign s = (ex * (*cy - ay) - ey * (*cx - ax)).sign();
-      positive += s == Sign::Positive;
-      negative += s == Sign::Negative;
-    }
-  return positive < 4 && negative < 4;
+  return rounding_box_meets_segment(p, a, b);
 }
 
 // Exactly inside the open segment AB, for x on its line.
@@ -366,12 +349,16 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
     ++r.segments;
     const Vec2 A = P[a], B = P[b];
     const auto mark = static_cast<std::uint32_t>(k + 1);
-    // A step onto d along an edge of segment `label`. Input vertices: exactly on AB. Steiner
-    // vertices: on an edge of this segment or of one collinear with it (overlaps keep the
-    // lowest-numbered segment), or within their rounding bound of AB (crossings); their bound
-    // is checked below, once the chain is known.
+    // A step onto d along an edge of segment `label`. Input vertices: exactly on AB, or within
+    // their rounding bound of it (a crossing of AB with another segment whose exact point
+    // rounds onto an input vertex: the chain bends there, as at a rounded Steiner point).
+    // Steiner vertices: on an edge of this segment or of one collinear with it (overlaps keep
+    // the lowest-numbered segment), or within their rounding bound of AB (crossings); their
+    // bound is checked below, once the chain is known.
     const auto admissible = [&](std::uint32_t d, std::uint32_t label) {
-      if (d < n) return orient2d(A, B, P[d]) == Sign::Zero && strictly_between(A, B, P[d]);
+      if (d < n)
+        return label == k || (orient2d(A, B, P[d]) == Sign::Zero && strictly_between(A, B, P[d])) ||
+               within_rounding_bound_of_segment(P[d], A, B);
       if (label == k) return true;
       if (label < input.segments.size()) {
         const auto& o = input.segments[label];
@@ -416,24 +403,26 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
     // older vertex found exactly on a later piece joins the chain there, so the piece's ends are
     // among the nearest few older vertices on each side, not always the nearest.
     constexpr int kOlderTried = 4;
+    // An input vertex off AB (reached along this segment's own edges) must lie within its
+    // rounding bound of a piece between chain vertices around it: a piece of this segment between
+    // Steiner points ran exactly through it, and the walk split the piece there.
     for (std::size_t i = 1; i + 1 < chain.size(); ++i) {
       const std::uint32_t v = chain[i];
-      if (v < n) continue;
-      steiner_on.push_back({v, static_cast<std::uint32_t>(k)});
+      if (v >= n) steiner_on.push_back({v, static_cast<std::uint32_t>(k)});
       if (within_rounding_bound_of_segment(P[v], A, B)) continue;
       std::vector<std::uint32_t> before, after;
       for (std::size_t j = i + 1; j < chain.size() && before.size() < kOlderTried; ++j)
-        if (chain[j] < v) before.push_back(chain[j]);
+        if (chain[j] < v || v < n) before.push_back(chain[j]);
       for (std::size_t j = i; j-- > 0 && after.size() < kOlderTried;)
-        if (chain[j] < v) after.push_back(chain[j]);
+        if (chain[j] < v || v < n) after.push_back(chain[j]);
       bool within = false;
       for (std::size_t x = 0; x < before.size() && !within; ++x)
         for (std::size_t y = 0; y < after.size() && !within; ++y)
           within = within_rounding_bound_of_segment(P[v], P[before[x]], P[after[y]]);
       if (!within)
-        r.add_problem("Steiner " + name.point(v) + " " + coordinates(P[v]) + " on the chain of " + name.segment(k) +
-                      " is not within its rounding bound of the segment nor of a piece between older points of "
-                      "the chain around it (nearest: " +
+        r.add_problem((v < n ? "input " : "Steiner ") + name.point(v) + " " + coordinates(P[v]) + " on the chain of " +
+                      name.segment(k) + " is not within its rounding bound of the segment nor of a piece between " +
+                      (v < n ? "" : "older ") + "points of the chain around it (nearest: " +
                       name.edge(before.front(), after.front()) + ")");
     }
   }
@@ -468,6 +457,27 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
         within = within_rounding_bound(*exact, P[v]);
         if (!within) pair = name.segment(steiner_on[x].second) + " and " + name.segment(steiner_on[y].second);
       }
+    if (crossing && !within) {
+      // The chains found are one choice where chains share edges (snap rounding routes every
+      // segment through the crossings whose rounding box it meets): any two segments meeting
+      // v's box whose exact crossing v rounds will do.
+      std::vector<std::uint32_t> near;
+      for (std::size_t k = 0; k < input.segments.size() && near.size() < 64; ++k) {
+        const auto& s = input.segments[k];
+        if (s[0] < n && s[1] < n && within_rounding_bound_of_segment(P[v], P[carrier[s[0]]], P[carrier[s[1]]]))
+          near.push_back(static_cast<std::uint32_t>(k));
+      }
+      for (std::size_t x = 0; x < near.size() && !within; ++x)
+        for (std::size_t y = x + 1; y < near.size() && !within; ++y) {
+          const auto& s = input.segments[near[x]];
+          const auto& t = input.segments[near[y]];
+          const Vec2 sa = P[carrier[s[0]]], sb = P[carrier[s[1]]], ta = P[carrier[t[0]]], tb = P[carrier[t[1]]];
+          const std::optional<ExactPoint2> exact = line_intersection_exact(sa, sb, ta, tb);
+          if (!exact || !strictly_inside(*exact, sa, sb) || !strictly_inside(*exact, ta, tb)) continue;
+          ++r.rounding_checks;
+          within = within_rounding_bound(*exact, P[v]);
+        }
+    }
     if (crossing && !within)
       r.add_problem("Steiner " + name.point(v) + " " + coordinates(P[v]) + " on the chains of " + pair +
                     " is not within its rounding bound of their exact intersection");

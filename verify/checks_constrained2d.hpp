@@ -10,7 +10,9 @@
 //    constrained edges (and along the hull only where the exterior is kept);
 //  - constraints: every input segment AB is a CHAIN of constrained edges from A to B, each step
 //    forward along AB, through vertices on it: input vertices exactly on the open segment
-//    (orient2d zero), Steiner vertices within their rounding bound of an exact point of AB (the
+//    (orient2d zero) or within their rounding bound of it (a crossing rounded onto one) or, on
+//    the segment's own edges, of a piece between chain vertices around them (a bent piece that
+//    ran exactly through one), Steiner vertices within their rounding bound of an exact point of AB (the
 //    box of half-widths rounding_bound(x), rounding_bound(y) around the vertex meets the closed
 //    segment, decided in rationals); a Steiner vertex on the chains of two crossing segments must
 //    moreover lie within its rounding bound of their exact intersection (within_rounding_bound),

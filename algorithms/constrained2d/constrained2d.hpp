@@ -14,12 +14,15 @@
 //
 // Straightness under rounding (ROADMAP.md, "Steiner points and rounding"): the rounded point is
 // the truth. A segment is represented by the CHAIN of straight mesh edges through its vertices;
-// a chain may bend at a Steiner point by at most that point's rounding bound (checked exactly
-// with within_rounding_bound against the exact intersection of the two input segments' lines,
-// and counted in rounding_checks_failed, which must stay 0). Every triangle is built by the exact
-// predicates on the rounded coordinates, so the output is a valid mesh in doubles whatever the
-// bend: a chain bent past a nearby vertex or constraint just crosses it again, and that crossing
-// is resolved the same way (bounded: see kMaxResolutionSteps in enforce.cpp).
+// a chain may bend at a vertex by at most that vertex's rounding bound (checked exactly with
+// within_rounding_bound against the exact intersection of the two input segments' lines, and
+// counted in rounding_checks_failed, which must stay 0). The crossings are snap rounded
+// (crossings.hpp, Hobby 1999): once some crossing is not a double point, every segment also
+// passes through each rounded crossing and each nearby segment endpoint whose rounding box it
+// meets, so that bent chains meet only at shared vertices, even in clusters of crossings a few
+// ulps apart. Every triangle is built by the exact predicates on the rounded coordinates, so the
+// output is a valid mesh in doubles whatever the bend; a crossing of chains that snapping did not
+// prevent is split where met, within a bound (enforce.cpp).
 #pragma once
 
 #include <array>

@@ -1,9 +1,13 @@
-// Segment insertion shared by every constrained method: each input segment, in input order, is
-// walked along its pipe (book §1.7) and enforced by edge swaps (§3.3.3; Sloan, "A fast algorithm
-// for generating constrained Delaunay triangulations", 1993: the crossed edges in a queue, each
-// swapped when its quadrilateral is strictly convex, requeued while it still crosses). Vertices on
-// a segment split it; an edge already constrained is an overlap; a crossed constrained edge is a
-// crossing, split at the correctly rounded exact intersection (kernel/rounding.hpp).
+// Segment insertion shared by every constrained method. First every crossing of the input
+// segments, found at once and snap rounded (crossings.hpp): its correctly rounded point inserted,
+// each segment split at the hot points it meets and at the vertices exactly on it (its pipe, book
+// §1.7); collinear overlaps then share identical pieces, merged. Then each piece is walked along
+// its pipe and enforced by edge swaps (§3.3.3; Sloan, "A fast algorithm for generating
+// constrained Delaunay triangulations", 1993: the crossed edges in a queue, each swapped when its
+// quadrilateral is strictly convex, requeued while it still crosses). A vertex met on the way
+// splits the piece; an edge already constrained is an overlap; a crossed constrained edge (which
+// snap rounding should leave none of) is split at the correctly rounded exact intersection
+// (kernel/rounding.hpp), a bounded fallback.
 #include <algorithm>
 #include <cstdio>
 #include <deque>
@@ -13,6 +17,7 @@
 #include <vector>
 
 #include "algorithms/constrained2d/context.hpp"
+#include "algorithms/constrained2d/crossings.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
@@ -109,22 +114,60 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
   const std::uint32_t input_points = result.input_point_count;
 
   std::map<std::pair<Rational, Rational>, std::uint32_t> steiner_at;  // exact crossing -> its vertex
-  // Collinear overlaps first: every segment split at the input vertices exactly on it (its pipe
-  // in the Delaunay triangulation, §1.7), so that overlapping segments share identical pieces,
-  // merged here (the lowest-numbered segment kept), before any crossing bends a chain.
-  std::vector<Piece> pieces;
-  for (std::size_t k = 0; k < segments; ++k) {
-    const auto [a, b] = context.segments[k];
-    // An edge has no vertex inside; only other segments need their pipe walked here.
-    if (mesh.find_half_edge(a, b) != kNone) {
-      pieces.push_back({a, b, context.ids[k]});
+
+  // Every crossing first, snap rounded (crossings.hpp): the rounded points inserted, each
+  // segment's stops (hot points whose rounding box it meets) in order along it.
+  const SnappedCrossings snapped = snap_crossings(mesh.tri().points().first(input_points), context.segments);
+  std::vector<std::uint32_t> hot_vertex(snapped.hot.size(), kNone);
+  for (std::size_t i = 0; i < snapped.hot.size(); ++i) {
+    const SnappedCrossings::Hot& hot = snapped.hot[i];
+    const std::uint32_t j = context.ids[hot.s], k = context.ids[hot.t];
+    const Vec2 x = hot.point;
+    if (!coordinate_in_range(x.x) || !coordinate_in_range(x.y))
+      throw InputError("segments " + context.number(j) + " and " + context.number(k) +
+                           " cross at a point outside the supported coordinate range " + point_text(x),
+                       {j, k});
+    if (!within_rounding_bound(hot.exact, x)) ++result.rounding_checks_failed;
+    const ConstrainedMesh2::Location where = mesh.locate(x, mesh.triangle_of_vertex(context.segments[hot.s][0]));
+    if (where.where == ConstrainedMesh2::Where::Vertex) {
+      hot_vertex[i] = where.handle;
+      context.note("segments " + context.number(j) + " and " + context.number(k) + " cross at vertex " +
+                   context.number(where.handle) + (hot.exact_double ? "" : " (their intersection rounds to it)"));
       continue;
     }
-    const Pipe2 pipe_ab = pipe(mesh.tri(), mesh.triangle_of_vertex(a), a, b);
+    hot_vertex[i] = mesh.insert(x, where);
+    steiner_at.emplace(std::pair{hot.exact.x, hot.exact.y}, hot_vertex[i]);
+    ++result.crossing_steiner_points;
+    context.note("segments " + context.number(j) + " and " + context.number(k) + " cross: Steiner vertex " +
+                 context.number(hot_vertex[i]) + " at " + point_text(x) +
+                 (hot.exact_double ? " (exact)" : " (rounded; the pieces bend there by at most ulp/2)"));
+  }
+
+  // Then every segment split at its stops and at the vertices exactly on it (its pipe, §1.7),
+  // so that overlapping segments share identical pieces, merged here (the lowest-numbered
+  // segment kept).
+  std::vector<Piece> pieces;
+  std::vector<std::pair<Vec2, std::uint32_t>> stops;
+  for (std::size_t k = 0; k < segments; ++k) {
+    const auto [a, b] = context.segments[k];
+    stops.clear();
+    for (std::uint32_t i = snapped.first[k]; i < snapped.first[k + 1]; ++i) {
+      const std::uint32_t stop = snapped.stops[i];
+      const std::uint32_t v = stop & SnappedCrossings::kHot ? hot_vertex[stop & ~SnappedCrossings::kHot] : stop;
+      if (v != a && v != b) stops.emplace_back(mesh.point(v), v);
+    }
+    // An edge has no vertex inside; only other segments need their pipe walked here.
+    if (mesh.find_half_edge(a, b) == kNone) {
+      const Pipe2 pipe_ab = pipe(mesh.tri(), mesh.triangle_of_vertex(a), a, b);
+      for (const std::uint32_t v : pipe_ab.through) {
+        if (v < input_points)
+          context.note("segment " + context.number(context.ids[k]) + " passes through vertex " + context.number(v) +
+                       ": split there");
+        stops.emplace_back(mesh.point(v), v);
+      }
+    }
     std::uint32_t from = a;
-    for (const std::uint32_t v : pipe_ab.through) {
-      context.note("segment " + context.number(context.ids[k]) + " passes through vertex " + context.number(v) +
-                   ": split there");
+    for (const std::uint32_t v : order_along_segment(mesh.point(a), mesh.point(b), stops)) {
       pieces.push_back({from, v, context.ids[k]});
       from = v;
     }

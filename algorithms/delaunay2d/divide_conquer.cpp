@@ -22,7 +22,6 @@ namespace dtlab {
 namespace {
 
 using dc::EdgeMesh;
-constexpr std::uint32_t kNone = EdgeMesh::kNone;
 
 // A cut direction. Axis 0 orders points by (x, y): halves are separated by a vertical line
 // (tilted infinitesimally, so that equal x still separates). Axis 1 orders them by (y, -x), the

@@ -407,11 +407,10 @@ TEST(Constrained2d, ConformingSplitsSmallAngles) {
   EXPECT_LT(r.split_steiner_points, 200u);
 }
 
-// Open bug (the fuzz target skips the chain check on results with crossing Steiner points until
-// these pass): nudged half-integers whose crossings round off their segments. Where rounded
-// crossings and bent pieces of two segments run through each other's crossing or split points, a
-// shared edge keeps only the lower segment's label and the chain check finds no chain for the
-// other segment ("no chain of constrained edges", "lies on no segment's chain").
+// Nudged half-integers whose crossings round off their segments, onto input vertices: the chains
+// bend through those vertices (within their rounding bound of the segment, not exactly on it).
+// These were taken for an algorithm bug ("no chain of constrained edges") until the checker
+// admitted such vertices; every method, every check.
 void expect_chains_everywhere(const std::vector<Vec2>& pts, const std::vector<Segment>& segs) {
   std::vector<int> markers;  // as the fuzz target numbers them
   for (std::size_t k = 0; k < segs.size(); ++k) markers.push_back(static_cast<int>((k + 1) % 5));
@@ -421,10 +420,36 @@ void expect_chains_everywhere(const std::vector<Vec2>& pts, const std::vector<Se
   }
 }
 
+// fuzz/constrained2d_fuzz input (base64, CI run of 2026-11-23)
+// AhgABAD/////////JwH7AgD4/wMkBP////8nAfsCAPj/AyQEAv8C+S8ABABHAAL/AvkvAAQARwAAAEUAAAD9AgAJEwYCFQsCEg8CDgkNBAAARwAAAEUAAAC1/QIACRMCAgYLFQ8CARYQBQwHFAAI
+// Segment 2-1 crosses segment 5-12 half an ulp from vertex 5, and their exact intersection
+// rounds onto vertex 5 itself: the chain of 2-1 bends through input vertex 5, which is not
+// exactly on 2-1 but within its rounding bound of it. The checker refused that chain ("no chain
+// of constrained edges from point 2 to point 1") though no Steiner point was made.
+TEST(Constrained2dRegression, CrossingRoundsOntoAnInputVertex) {
+  const double tiny = std::ldexp(1.0, -142);
+  const std::vector<Vec2> pts = {
+      {0x1p+1, -0x1.0000000000001p-1}, {-0x1.0000000000001p-1, -0x1.0000000000001p-1},
+      {-0x1.ffffffffffffdp-2, 0x1.fffffffffffffp-2}, {0x1p+0, -0x1.0000000000001p+2},
+      {0x1.8p+0, 0x1.fffffffffffffp+0}, {-0x1.0000000000001p-1, -0x1.ffffffffffffdp-2},
+      {0x1.fffffffffffffp-2, 0x1p+0}, {-0x1.0000000000001p+2, 0x1.8p+0},
+      {0x1.0000000000002p+1, -0x1.ffffffffffffep-2}, {-0x1.bfffffffffffdp+1, 0},
+      {tiny, tiny}, {-0x1.ffffffffffffep-2, -0x1.bfffffffffffdp+1},
+      {0, tiny}, {0, tiny}, {0, -tiny}, {0x1p+0, 0x1.2000000000003p+2},
+      {0x1.8000000000002p+1, 0x1.5000000000003p+3}, {0x1.0000000000002p+0, 0x1.e000000000002p+2},
+      {0x1.c000000000001p+2, 0x1.ap+2}, {0, 0x1.1cp+5}, {0, 0x1.14p+5}, {0, -0x1.2c00000000003p+5},
+      {0x1p+0, 0x1.2000000000003p+2}, {0x1.0000000000002p+0, 0x1.8000000000003p+1}};
+  const std::vector<Segment> segs = {{21, 15}, {2, 1}, {22, 16}, {5, 12}, {7, 20}, {0, 8}};
+  for (const std::string& method : method_names()) {
+    expect_valid(pts, segs, method, run(pts, segs, method), true);
+    expect_valid(pts, segs, method, run(pts, segs, method, {}, {}, {}, true), true, {}, true);
+  }
+}
+
 // fuzz/constrained2d_fuzz input (base64)
 // AhgA+AH4APsAAgACAPsCAQD4A/8ABAL/AvkD+QL9AQQABgACAAMCBgMCAvkBAgEFAPgA/QP7AgIC+wIGAQACBQL7AAMB+AH6A/4BBgH4APoBBQD8AvoBBQIBAQIDBAAEA/0CAAkTAgIGCxUPAhIOCQ0EARYQBQwHFAAI
-// fails on conforming: segment 4 (15-2) has no chain, Steiner point 45 on no chain.
-TEST(Constrained2dRegression, DISABLED_ChainsThroughRoundedCrossingsConforming) {
+// failed on conforming: segment 4 (15-2) had no chain, Steiner point 45 on no chain.
+TEST(Constrained2dRegression, ChainsThroughRoundedCrossingsConforming) {
   const std::vector<Vec2> pts = {
       {-0x1.fffffffffffffp+1, -0x1.0000000000000p+2},
       {-0x1.4000000000000p+1, 0x1.0000000000000p+0},
@@ -456,9 +481,9 @@ TEST(Constrained2dRegression, DISABLED_ChainsThroughRoundedCrossingsConforming) 
 
 // fuzz/constrained2d_fuzz input (base64)
 // AhgA+AH4APsACAACAPsCAQD4A/8ABAL/AvkD+QL9AQQABgACAAMCBgMCAgL5BQABAfgA/QP7AgIC+wIGAQACBQL7AAMB+AH6A/4BBgH4APoBBQD8AvoBBQIBAQIDBAAEA/0CAAkTAgIKCxUPAhIOCQ0EARYQBQwHFAAI
-// fails on every method (cdt, swap, conforming: so in segment resolution): segment 4 (15-2) has
+// failed on every method (cdt, swap, conforming): segment 4 (15-2) had
 // no chain.
-TEST(Constrained2dRegression, DISABLED_ChainsThroughRoundedCrossingsEveryMethod) {
+TEST(Constrained2dRegression, ChainsThroughRoundedCrossingsEveryMethod) {
   const std::vector<Vec2> pts = {
       {-0x1.fffffffffffffp+1, -0x1.0000000000000p+2},
       {-0x1.4000000000000p+1, 0x1.0000000000000p+2},

@@ -394,3 +394,29 @@ TEST(Midpoint, KnownCases) {
 
 }  // namespace
 }  // namespace dtlab
+
+namespace dtlab {
+namespace {
+
+// The hot-pixel test of snap rounding: any exact point of a segment, rounded, has a box that
+// meets the segment (so the double filter never rejects a true case); one ulp off an
+// axis-parallel segment, outside the box, it does not.
+TEST(RoundingBox, MeetsTheSegmentItsPointsRoundFrom) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1e3, 1e3);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec2 a{u(rng), u(rng)}, b{u(rng) * (trial % 7 == 0 ? 1e-9 : 1.0), u(rng)};
+    const Rational t(std::ldexp(static_cast<double>(rng() % (1u << 20)), -20));
+    const RoundedPoint2 p = point_on_segment(a, b, t);
+    EXPECT_TRUE(rounding_box_meets_segment(p.point, a, b)) << trial;
+  }
+  const Vec2 a{0.0, 1.0}, b{4.0, 1.0};
+  EXPECT_TRUE(rounding_box_meets_segment({2.0, 1.0}, a, b));
+  EXPECT_FALSE(rounding_box_meets_segment({2.0, std::nextafter(1.0, 2.0)}, a, b));
+  EXPECT_FALSE(rounding_box_meets_segment({5.0, 1.0}, a, b));  // on the line, past the end
+  // The next double past the end: its box starts half an ulp beyond the end.
+  EXPECT_FALSE(rounding_box_meets_segment({std::nextafter(4.0, 5.0), 1.0}, a, b));
+}
+
+}  // namespace
+}  // namespace dtlab
