@@ -30,6 +30,7 @@ struct ConstrainArgs {
   std::string output;
   std::string method;  // empty: the dimension's default (cdt in 2D, conforming in 3D)
   bool keep_exterior = false;
+  std::string swap_order = "queue";
   bool stats = false;
   bool verify = false;
   bool list = false;
@@ -91,6 +92,7 @@ int run_constrain(ConstrainArgs args) {
   Constrained2dOptions options;
   options.method = args.method;
   options.keep_exterior = args.keep_exterior;
+  options.random_swaps = args.swap_order == "random";
   options.first_number = graph.first_number;
   Constrained2dResult result;
   try {
@@ -160,6 +162,10 @@ void add_constrain(CLI::App& app) {
   for (const auto& m : constrained3d_method_list()) names3 += (names3.empty() ? "" : "|") + std::string(m.name);
   cmd->add_option("--method", args->method,
                   "Method; 2D: " + names + " (default cdt); 3D: " + names3 + " (default conforming)");
+  cmd->add_option("--swap-order", args->swap_order,
+                  "2D: the order in which edges crossing a missing segment are swapped: queue (Sloan's, default) or "
+                  "random (seeded, reproducible)")
+      ->check(CLI::IsMember({"queue", "random"}));
   cmd->add_flag("--keep-exterior", args->keep_exterior, "Keep the triangles outside the segments (holes are still removed)");
   cmd->add_flag("--stats", args->stats, "Print one JSON object with counts, seconds and predicate stages as the last line");
   cmd->add_flag("--verify", args->verify,

@@ -54,6 +54,11 @@ struct Constrained2dOptions {
   std::string method = "cdt";  // a name from constrained2d_methods(): "cdt", "swap", "conforming"
   bool keep_exterior = false;  // keep the triangles outside every constrained boundary
   std::uint64_t seed = 0x5EED'D71A'B000'0001ull;  // for the initial Delaunay triangulation
+  // The order in which the edges crossing a missing piece are swapped (book §3.3.3): false, a
+  // queue (Sloan 1993: the crossed edges in pipe order, each swapped when its quadrilateral is
+  // convex, requeued while it still crosses); true, a random crossed edge each time (drawn from
+  // a generator seeded with `seed`, so a run is reproducible).
+  bool random_swaps = false;
   // Conforming only: the most Steiner points its splitting may add, as a multiple of
   // (points + segments); past it constrained2d throws InputError naming the segment.
   std::uint32_t conforming_steiner_factor = 64;

@@ -70,8 +70,8 @@ bool boxes_overlap(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
          std::max(std::min(a.y, b.y), std::min(c.y, d.y)) <= std::min(std::max(a.y, b.y), std::max(c.y, d.y));
 }
 
-// Pairs (i < j) of segments that share a grid cell and whose bounding boxes overlap, without a
-// shared endpoint, each once.
+// Pairs (i < j) of segments that share a grid cell and whose bounding boxes overlap, each once
+// (with a shared endpoint too: the other endpoint may lie on or near the other segment).
 std::vector<std::uint64_t> candidate_pairs(std::span<const Vec2> points, std::span<const Segment> segments) {
   const SegmentGrid grid(points, segments);
   std::vector<std::uint64_t> in_cell;  // (cell << 32) | segment
@@ -88,7 +88,6 @@ std::vector<std::uint64_t> candidate_pairs(std::span<const Vec2> points, std::sp
         const auto i = static_cast<std::uint32_t>(in_cell[x]), j = static_cast<std::uint32_t>(in_cell[y]);
         const Segment& s = segments[i];
         const Segment& t = segments[j];
-        if (s[0] == t[0] || s[0] == t[1] || s[1] == t[0] || s[1] == t[1]) continue;
         if (!boxes_overlap(points[s[0]], points[s[1]], points[t[0]], points[t[1]])) continue;
         pairs.push_back(std::uint64_t{i} << 32 | j);  // i < j: cells list segments ascending
       }

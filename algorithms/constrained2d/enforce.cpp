@@ -1,13 +1,12 @@
 // Segment insertion shared by every constrained method. First every crossing of the input
-// segments, found at once and snap rounded (crossings.hpp): its correctly rounded point inserted,
-// each segment split at the hot points it meets and at the vertices exactly on it (its pipe, book
-// §1.7); collinear overlaps then share identical pieces, merged. Then each piece is walked along
-// its pipe and enforced by edge swaps (§3.3.3; Sloan, "A fast algorithm for generating
-// constrained Delaunay triangulations", 1993: the crossed edges in a queue, each swapped when its
-// quadrilateral is strictly convex, requeued while it still crosses). A vertex met on the way
-// splits the piece; an edge already constrained is an overlap; a crossed constrained edge (which
-// snap rounding should leave none of) is split at the correctly rounded exact intersection
-// (kernel/rounding.hpp), a bounded fallback.
+// segments, found at once and snap rounded (crossings.hpp): its correctly rounded point inserted
+// and each segment split at the hot points it meets. Then each piece is walked along its pipe
+// (book §1.7) and enforced by edge swaps (§3.3.3; Sloan, "A fast algorithm for generating
+// constrained Delaunay triangulations", 1993: the crossed edges in a queue, each swapped when
+// its quadrilateral is strictly convex, requeued while it still crosses). A vertex exactly on a
+// piece splits it; a piece along an edge already constrained is an overlap (collinear segments);
+// a crossed constrained edge (which snap rounding should leave none of) is split at the
+// correctly rounded exact intersection (kernel/rounding.hpp), a bounded fallback.
 #include <algorithm>
 #include <cstdio>
 #include <deque>
@@ -41,10 +40,11 @@ std::string point_text(const Vec2& p) {
 }
 
 // Swaps the edges crossing the open segment s-q (none constrained, no vertex on it) until sq is
-// an edge; returns its half-edge s -> q. Sloan's queue: some crossed edge is always flippable,
-// so a full round of the queue without a flip means a broken invariant.
+// an edge; returns its half-edge s -> q. Sloan's queue, or (rng given) a random crossed edge
+// each time: some crossed edge is always flippable, so a full round of the queue (or as many
+// random draws, then a scan) without a flip means a broken invariant.
 std::uint32_t enforce_by_swaps(ConstrainedMesh2& mesh, std::uint32_t s, std::uint32_t q,
-                               const std::vector<std::uint32_t>& crossed) {
+                               const std::vector<std::uint32_t>& crossed, std::uint64_t* rng) {
   if (!crossed.empty()) {
     Triangulation2& tri = mesh.tri();
     std::deque<std::array<std::uint32_t, 2>> queue;
@@ -55,16 +55,30 @@ std::uint32_t enforce_by_swaps(ConstrainedMesh2& mesh, std::uint32_t s, std::uin
     const std::uint64_t bound = 4 * k * (k + 1) + 16;
     std::uint64_t flips = 0;
     std::size_t idle = 0;
+    const auto cannot = [&] {
+      return InternalError("edge swapping: no crossed edge of segment " + std::to_string(s) + "-" + std::to_string(q) +
+                           " can be swapped");
+    };
     while (!queue.empty()) {
+      if (rng) {  // a random crossed edge to the front; after a fruitless round, the first flippable one
+        std::uint64_t& x = *rng;  // xorshift64
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        std::size_t pick = static_cast<std::size_t>(x % queue.size());
+        if (idle > queue.size()) {
+          pick = queue.size();
+          for (std::size_t i = 0; i < queue.size() && pick == queue.size(); ++i)
+            if (mesh.flippable(mesh.find_half_edge(queue[i][0], queue[i][1]))) pick = i;
+          if (pick == queue.size()) throw cannot();
+        }
+        std::swap(queue.front(), queue[pick]);
+      }
       const auto [u, v] = queue.front();
       queue.pop_front();
       const std::uint32_t h = mesh.find_half_edge(u, v);
       DTLAB_ASSERT(h != kNone && mesh.constraint(h) == kNone);
       if (!mesh.flippable(h)) {
         queue.push_back({u, v});
-        if (++idle > queue.size())
-          throw InternalError("edge swapping: no crossed edge of segment " + std::to_string(s) + "-" +
-                              std::to_string(q) + " can be swapped");
+        if (++idle > queue.size() && !rng) throw cannot();
         continue;
       }
       idle = 0;
@@ -111,6 +125,7 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
   // either finishes a piece or follows a vertex or crossing, which adds at most four pieces.
   const std::uint64_t max_crossings = segments * (segments - (segments > 0)) / 2 + 16 * segments + 16;
   std::uint64_t crossings = 0, steps = 0;
+  std::uint64_t rng = (context.options.seed ^ 0x5A5A'0F0F'C3C3'9696ull) | 1;  // random swap order (xorshift64)
   const std::uint32_t input_points = result.input_point_count;
 
   std::map<std::pair<Rational, Rational>, std::uint32_t> steiner_at;  // exact crossing -> its vertex
@@ -143,9 +158,9 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
                  (hot.exact_double ? " (exact)" : " (rounded; the pieces bend there by at most ulp/2)"));
   }
 
-  // Then every segment split at its stops and at the vertices exactly on it (its pipe, §1.7),
-  // so that overlapping segments share identical pieces, merged here (the lowest-numbered
-  // segment kept).
+  // Then every segment split at its stops. The walks below split the pieces further at the
+  // vertices exactly on them (their pipes, §1.7); a piece along an edge another segment
+  // constrains already is an overlap, the edge keeping the lowest-numbered segment.
   std::vector<Piece> pieces;
   std::vector<std::pair<Vec2, std::uint32_t>> stops;
   for (std::size_t k = 0; k < segments; ++k) {
@@ -156,46 +171,21 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
       const std::uint32_t v = stop & SnappedCrossings::kHot ? hot_vertex[stop & ~SnappedCrossings::kHot] : stop;
       if (v != a && v != b) stops.emplace_back(mesh.point(v), v);
     }
-    // An edge has no vertex inside; only other segments need their pipe walked here.
-    if (mesh.find_half_edge(a, b) == kNone) {
-      const Pipe2 pipe_ab = pipe(mesh.tri(), mesh.triangle_of_vertex(a), a, b);
-      for (const std::uint32_t v : pipe_ab.through) {
+    // A segment bent at a rounded stop must still pass through the vertices exactly on it (its
+    // pipe, §1.7): a bent piece can miss them by an ulp. Unbent segments find them as they walk.
+    if (!stops.empty() && mesh.find_half_edge(a, b) == kNone)
+      for (const std::uint32_t v : pipe(mesh.tri(), mesh.triangle_of_vertex(a), a, b).through) {
         if (v < input_points)
           context.note("segment " + context.number(context.ids[k]) + " passes through vertex " + context.number(v) +
                        ": split there");
         stops.emplace_back(mesh.point(v), v);
       }
-    }
     std::uint32_t from = a;
     for (const std::uint32_t v : order_along_segment(mesh.point(a), mesh.point(b), stops)) {
       pieces.push_back({from, v, context.ids[k]});
       from = v;
     }
     pieces.push_back({from, b, context.ids[k]});
-  }
-  {
-    std::vector<std::size_t> order(pieces.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    const auto key = [&](std::size_t i) {
-      return std::pair{std::min(pieces[i].a, pieces[i].b), std::max(pieces[i].a, pieces[i].b)};
-    };
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return key(x) < key(y); });
-    std::vector<std::uint8_t> dropped(pieces.size(), 0);
-    for (std::size_t i = 1; i < order.size(); ++i) {
-      if (key(order[i]) != key(order[i - 1])) continue;
-      std::size_t first = i - 1;
-      while (dropped[order[first]]) --first;
-      dropped[order[i]] = 1;
-      if (pieces[order[i]].segment != pieces[order[first]].segment)
-        context.note("segments " + context.number(pieces[order[first]].segment) + " and " +
-                     context.number(pieces[order[i]].segment) + " overlap along " + context.number(key(order[i]).first) +
-                     "-" + context.number(key(order[i]).second) + "; the piece keeps segment " +
-                     context.number(pieces[order[first]].segment));
-    }
-    std::size_t kept = 0;
-    for (std::size_t i = 0; i < pieces.size(); ++i)
-      if (!dropped[i]) pieces[kept++] = pieces[i];
-    pieces.resize(kept);
   }
 
   std::vector<Piece> stack;
@@ -205,13 +195,15 @@ void resolve_and_enforce_segments(const Constrained2dContext& context) {
       const Piece p = stack.back();
       stack.pop_back();
       if (p.a == p.b) continue;
-      if (++steps > 64 + 16 * (pieces.size() + 2 * crossings))
+      // A step finishes a piece, splits it at a vertex exactly on it (at most once per vertex
+      // and piece) or at a crossing: bounded by pieces x vertices, a guard against looping.
+      if (++steps > (pieces.size() + 2 * crossings + 4) * (std::uint64_t{mesh.vertex_count()} + 16))
         throw InternalError("segment resolution did not converge (at segment " + context.number(p.segment) + ")");
       const ConstrainedMesh2::SegmentWalk walk = mesh.walk(p.a, p.b);
       const auto hit = std::find_if(walk.crossed.begin(), walk.crossed.end(),
                                     [&](std::uint32_t h) { return mesh.constraint(h) != kNone; });
       if (hit == walk.crossed.end()) {
-        const std::uint32_t h = enforce_by_swaps(mesh, p.a, walk.stop, walk.crossed);
+        const std::uint32_t h = enforce_by_swaps(mesh, p.a, walk.stop, walk.crossed, context.options.random_swaps ? &rng : nullptr);
         const std::uint32_t existing = mesh.constraint(h);
         if (existing != kNone && existing != p.segment) {
           context.note("segments " + context.number(existing) + " and " + context.number(p.segment) +

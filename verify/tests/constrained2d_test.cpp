@@ -420,6 +420,22 @@ void expect_chains_everywhere(const std::vector<Vec2>& pts, const std::vector<Se
   }
 }
 
+// Found by SegmentSoupsWithCrossingsAndOverlaps (random seed): segment 4 (1,6)-(5,2) passes
+// exactly through vertex 0 (3,4) and crosses segment 1 at a rounded point; its piece from that
+// point to (5,2), bent by half an ulp, missed vertex 0 by as much, and "conforming" split it
+// towards vertex 0 until the Steiner limit. A bent segment keeps the vertices exactly on it.
+TEST(Constrained2dRegression, BentSegmentKeepsTheVerticesOnIt) {
+  const std::vector<Vec2> pts = {{3, 4}, {0, 1}, {1, 6}, {5, 2}, {1, 4}, {4, 0}, {4, 4}, {0, 6}, {5, 1},
+                                 {3, 2}, {5, 2}, {5, 2}, {2, 4}, {6, 6}, {5, 0}, {0, 5}, {3, 1}, {1, 6},
+                                 {2, 4}, {3, 1}, {4, 5}, {6, 3}, {2, 3}, {3, 6}, {5, 6}};
+  const std::vector<Segment> segs = {{14, 4}, {4, 13}, {22, 5}, {11, 0}, {2, 11}, {13, 17}};
+  for (const std::string& method : method_names()) {
+    const auto r = run(pts, segs, method);
+    expect_valid(pts, segs, method, r, false);
+    EXPECT_LT(r.split_steiner_points, 50u) << method;
+  }
+}
+
 // fuzz/constrained2d_fuzz input (base64, CI run of 2026-11-23)
 // AhgABAD/////////JwH7AgD4/wMkBP////8nAfsCAPj/AyQEAv8C+S8ABABHAAL/AvkvAAQARwAAAEUAAAD9AgAJEwYCFQsCEg8CDgkNBAAARwAAAEUAAAC1/QIACRMCAgYLFQ8CARYQBQwHFAAI
 // Segment 2-1 crosses segment 5-12 half an ulp from vertex 5, and their exact intersection
@@ -622,6 +638,40 @@ RC_GTEST_PROP(Constrained2dProperties, SegmentSoupsWithCrossingsAndOverlaps, ())
     const auto r = run(pts, segs, m);
     expect_valid(pts, segs, m, r, false);
     RC_ASSERT(!::testing::Test::HasFailure());
+  }
+}
+
+RC_GTEST_PROP(Constrained2dProperties, RandomSwapOrder, ()) {
+  // Swapping crossed edges in random order (book §3.3.3) enforces every segment too; for "cdt"
+  // the result is the same triangulation as with Sloan's queue (the CDT is unique), for "swap"
+  // it is valid and contains the same constrained edges.
+  auto rng = seeded_rng();
+  const int n = uniform(rng, 5, 200);
+  std::vector<Vec2> pts;
+  for (int i = 0; i < n; ++i) pts.push_back({double(uniform(rng, 0, 40)), double(uniform(rng, 0, 40))});
+  RC_PRE(delaunay2d(pts).degenerate_message.empty());
+  std::vector<Segment> segs;
+  for (int i = uniform(rng, 1, 30); i > 0; --i) {
+    const auto a = static_cast<std::uint32_t>(uniform(rng, 0, n));
+    const auto b = static_cast<std::uint32_t>(uniform(rng, 0, n));
+    if (pts[a] != pts[b]) segs.push_back({a, b});
+  }
+  const std::uint64_t seed = rng();
+  const ConstrainedInput2 in{.points = pts, .segments = segs, .segment_markers = {}, .holes = {}, .regions = {}};
+  for (const std::string m : {"cdt", "swap"}) {
+    const auto queue = constrained2d(in, {.method = m, .keep_exterior = true});
+    const auto random = constrained2d(in, {.method = m, .keep_exterior = true, .seed = seed, .random_swaps = true});
+    expect_valid(pts, segs, m, random, false, {}, true);
+    RC_ASSERT(!::testing::Test::HasFailure());
+    RC_ASSERT(constrained_set(random) == constrained_set(queue));
+    if (m == "cdt") {
+      auto a = queue.triangles, b = random.triangles;
+      for (auto* list : {&a, &b}) {
+        for (auto& t : *list) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+        std::sort(list->begin(), list->end());
+      }
+      RC_ASSERT(a == b);
+    }
   }
 }
 
