@@ -25,6 +25,7 @@ class ConstrainedMesh2 {
   explicit ConstrainedMesh2(Triangulation2& tri);
 
   Triangulation2& tri() noexcept { return tri_; }
+  const Triangulation2& tri() const noexcept { return tri_; }
   const Vec2& point(std::uint32_t v) const noexcept { return tri_.points()[v]; }
   std::uint32_t vertex_count() const noexcept { return static_cast<std::uint32_t>(tri_.point_count()); }
 

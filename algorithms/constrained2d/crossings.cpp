@@ -1,13 +1,14 @@
-// snap_crossings (crossings.hpp): candidate pairs from a uniform grid the segments are drawn
-// into, exact crossing tests (orient2d), exact intersections rounded correctly (MPFR), then each
-// segment's stops: the hot points whose rounding box it meets, ordered along it exactly.
+// snap_crossings (crossings.hpp): the segments' pipes in the triangulation, candidate pairs from
+// the triangles they share, exact crossing tests (orient2d), exact intersections rounded
+// correctly (MPFR), then each segment's stops: the vertices exactly on it and the hot points
+// whose rounding box it meets, ordered along it exactly.
 #include "algorithms/constrained2d/crossings.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <tuple>
 
 #include "kernel/predicates.hpp"
+#include "mesh/element_sets2.hpp"
 
 namespace dtlab {
 
@@ -15,84 +16,58 @@ namespace {
 
 using Segment = std::array<std::uint32_t, 2>;
 
-// A uniform grid of side x side cells over the segments' bounding box, about one cell per
-// segment: each segment is drawn into every cell it may meet (conservatively), so two segments
-// that meet share a cell.
-class SegmentGrid {
- public:
-  SegmentGrid(std::span<const Vec2> points, std::span<const Segment> segments) {
-    bool any = false;
-    for (const Segment& s : segments)
-      for (const std::uint32_t v : s) {
-        const Vec2& p = points[v];
-        if (!any) lo_ = hi_ = p, any = true;
-        lo_.x = std::min(lo_.x, p.x), lo_.y = std::min(lo_.y, p.y);
-        hi_.x = std::max(hi_.x, p.x), hi_.y = std::max(hi_.y, p.y);
-      }
-    side_ = static_cast<int>(std::clamp(std::ceil(std::sqrt(static_cast<double>(segments.size()))), 1.0, 1024.0));
-    // Widths in doubles can overflow (coordinates up to 2^142 only, so they do not) or be zero.
-    sx_ = hi_.x > lo_.x ? side_ / (hi_.x - lo_.x) : 0.0;
-    sy_ = hi_.y > lo_.y ? side_ / (hi_.y - lo_.y) : 0.0;
-  }
-
-  // Calls f(cell) for each cell segment ab may meet: for each column of its bounding box, the
-  // rows between its heights at the column's sides, one more row each way for rounding.
-  template <class F>
-  void cover(const Vec2& a, const Vec2& b, F&& f) const {
-    const double xmin = std::min(a.x, b.x), xmax = std::max(a.x, b.x);
-    const double ymin = std::min(a.y, b.y), ymax = std::max(a.y, b.y);
-    const int c0 = column(xmin), c1 = column(xmax);
-    for (int c = c0; c <= c1; ++c) {
-      double y0 = ymin, y1 = ymax;
-      if (c0 != c1 && a.x != b.x) {
-        const double xl = std::max(xmin, lo_.x + c / sx_), xr = std::min(xmax, lo_.x + (c + 1) / sx_);
-        const double t0 = (xl - a.x) / (b.x - a.x), t1 = (xr - a.x) / (b.x - a.x);
-        const double ya = a.y + t0 * (b.y - a.y), yb = a.y + t1 * (b.y - a.y);
-        y0 = std::max(ymin, std::min(ya, yb));
-        y1 = std::min(ymax, std::max(ya, yb));
-      }
-      const int r0 = std::max(0, row(y0) - 1), r1 = std::min(side_ - 1, row(y1) + 1);
-      for (int r = r0; r <= r1; ++r) f(static_cast<std::uint32_t>(c * side_ + r));
-    }
-  }
-
- private:
-  int column(double x) const { return std::clamp(static_cast<int>((x - lo_.x) * sx_), 0, side_ - 1); }
-  int row(double y) const { return std::clamp(static_cast<int>((y - lo_.y) * sy_), 0, side_ - 1); }
-
-  Vec2 lo_{0, 0}, hi_{0, 0};
-  int side_ = 1;
-  double sx_ = 0, sy_ = 0;
+// Each segment's pipe in the triangulation: the triangles it crosses (for an edge, or a run
+// along an edge between vertices on it, the two triangles of that edge) and the vertices exactly
+// on it, in order. Compressed rows per segment.
+struct Pipes {
+  std::vector<std::uint32_t> first{0}, triangles;
+  std::vector<std::uint32_t> through_first{0}, through;
 };
 
-bool boxes_overlap(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  return std::max(std::min(a.x, b.x), std::min(c.x, d.x)) <= std::min(std::max(a.x, b.x), std::max(c.x, d.x)) &&
-         std::max(std::min(a.y, b.y), std::min(c.y, d.y)) <= std::min(std::max(a.y, b.y), std::max(c.y, d.y));
+Pipes walk_pipes(const ConstrainedMesh2& mesh, std::span<const Segment> segments) {
+  const Triangulation2& tri = mesh.tri();
+  Pipes out;
+  const auto add_edge = [&](std::uint32_t u, std::uint32_t v) {
+    const std::uint32_t h = mesh.find_half_edge(u, v);
+    if (h == ConstrainedMesh2::kNone) return false;
+    out.triangles.push_back(Triangulation2::triangle_of(h));
+    out.triangles.push_back(Triangulation2::triangle_of(tri.twin(h)));
+    return true;
+  };
+  for (const auto& [a, b] : segments) {
+    if (!add_edge(a, b)) {
+      Pipe2 p = pipe(tri, mesh.triangle_of_vertex(a), a, b);
+      out.triangles.insert(out.triangles.end(), p.triangles.begin(), p.triangles.end());
+      std::uint32_t from = a;
+      for (const std::uint32_t v : p.through) add_edge(from, v), from = v;
+      if (!p.through.empty()) add_edge(from, b);
+      out.through.insert(out.through.end(), p.through.begin(), p.through.end());
+    }
+    out.first.push_back(static_cast<std::uint32_t>(out.triangles.size()));
+    out.through_first.push_back(static_cast<std::uint32_t>(out.through.size()));
+  }
+  return out;
 }
 
-// Pairs (i < j) of segments that share a grid cell and whose bounding boxes overlap, each once
-// (with a shared endpoint too: the other endpoint may lie on or near the other segment).
-std::vector<std::uint64_t> candidate_pairs(std::span<const Vec2> points, std::span<const Segment> segments) {
-  const SegmentGrid grid(points, segments);
-  std::vector<std::uint64_t> in_cell;  // (cell << 32) | segment
-  for (std::uint32_t k = 0; k < segments.size(); ++k)
-    grid.cover(points[segments[k][0]], points[segments[k][1]],
-               [&](std::uint32_t cell) { in_cell.push_back(std::uint64_t{cell} << 32 | k); });
-  std::sort(in_cell.begin(), in_cell.end());
-  std::vector<std::uint64_t> pairs;
-  for (std::size_t begin = 0; begin < in_cell.size();) {
-    std::size_t end = begin;
-    while (end < in_cell.size() && in_cell[end] >> 32 == in_cell[begin] >> 32) ++end;
-    for (std::size_t x = begin; x < end; ++x)
-      for (std::size_t y = x + 1; y < end; ++y) {
-        const auto i = static_cast<std::uint32_t>(in_cell[x]), j = static_cast<std::uint32_t>(in_cell[y]);
-        const Segment& s = segments[i];
-        const Segment& t = segments[j];
-        if (!boxes_overlap(points[s[0]], points[s[1]], points[t[0]], points[t[1]])) continue;
-        pairs.push_back(std::uint64_t{i} << 32 | j);  // i < j: cells list segments ascending
-      }
-    begin = end;
+// Pairs (i < j) of segments whose pipes share a triangle, each once.
+std::vector<std::uint64_t> candidate_pairs(const Pipes& pipes, std::size_t triangle_count) {
+  // Counting sort of (triangle, segment) by triangle.
+  std::vector<std::uint32_t> start(triangle_count + 1, 0);
+  for (const std::uint32_t t : pipes.triangles) ++start[t + 1];
+  for (std::size_t t = 0; t < triangle_count; ++t) start[t + 1] += start[t];
+  std::vector<std::uint32_t> in_triangle(pipes.triangles.size());
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::uint32_t k = 0; k + 1 < pipes.first.size(); ++k)
+      for (std::uint32_t i = pipes.first[k]; i < pipes.first[k + 1]; ++i) in_triangle[fill[pipes.triangles[i]]++] = k;
   }
+  std::vector<std::uint64_t> pairs;
+  for (std::size_t t = 0; t < triangle_count; ++t)
+    for (std::uint32_t x = start[t]; x < start[t + 1]; ++x)
+      for (std::uint32_t y = x + 1; y < start[t + 1]; ++y) {
+        const std::uint32_t i = in_triangle[x], j = in_triangle[y];
+        if (i != j) pairs.push_back(std::uint64_t{std::min(i, j)} << 32 | std::max(i, j));
+      }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;
@@ -127,10 +102,12 @@ std::vector<std::uint32_t> order_along_segment(const Vec2& a, const Vec2& b,
   return ids;
 }
 
-SnappedCrossings snap_crossings(std::span<const Vec2> points, std::span<const Segment> segments) {
+SnappedCrossings snap_crossings(const ConstrainedMesh2& mesh, std::span<const Segment> segments) {
   SnappedCrossings out;
   const auto m = static_cast<std::uint32_t>(segments.size());
-  const std::vector<std::uint64_t> pairs = candidate_pairs(points, segments);
+  const std::span<const Vec2> points = mesh.tri().points();
+  const Pipes pipes = walk_pipes(mesh, segments);
+  const std::vector<std::uint64_t> pairs = candidate_pairs(pipes, mesh.tri().triangle_count());
 
   struct Crossing {
     Vec2 point;
@@ -181,17 +158,24 @@ SnappedCrossings snap_crossings(std::span<const Vec2> points, std::span<const Se
     const auto [ia, ib] = segments[k];
     const Vec2 &a = points[ia], &b = points[ib];
     candidates.clear();
+    for (std::uint32_t i = pipes.through_first[k]; i < pipes.through_first[k + 1]; ++i)
+      candidates.emplace_back(points[pipes.through[i]], pipes.through[i]);
     for (const std::uint32_t h : own[k]) candidates.emplace_back(out.hot[h].point, SnappedCrossings::kHot | h);
-    // Once a crossing is rounded, chains bend: route this one through every hot point nearby.
-    if (out.rounded)
-      for (std::uint32_t x = first[k]; x < first[k + 1]; ++x) {
-        const std::uint32_t j = near[x];
-        for (const std::uint32_t h : own[j])
+    // Once a crossing is rounded, chains bend: route this one through every hot point nearby,
+    // the rounded crossings of the segments it shares a triangle with and the vertices of its
+    // pipe's triangles (any vertex within an ulp of it is one).
+    if (out.rounded) {
+      for (std::uint32_t x = first[k]; x < first[k + 1]; ++x)
+        for (const std::uint32_t h : own[near[x]])
           if (rounding_box_meets_segment(out.hot[h].point, a, b))
             candidates.emplace_back(out.hot[h].point, SnappedCrossings::kHot | h);
-        for (const std::uint32_t v : segments[j])
-          if (v != ia && v != ib && rounding_box_meets_segment(points[v], a, b)) candidates.emplace_back(points[v], v);
-      }
+      for (std::uint32_t i = pipes.first[k]; i < pipes.first[k + 1]; ++i)
+        for (std::uint32_t c = 0; c < 3; ++c) {
+          const std::uint32_t v = mesh.tri().vertex(pipes.triangles[i], c);
+          if (v != Triangulation2::kInfinite && v != ia && v != ib && rounding_box_meets_segment(points[v], a, b))
+            candidates.emplace_back(points[v], v);
+        }
+    }
     // Two stops at one point (a hot point on an input vertex): the vertex.
     std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {
       return std::tie(x.first.x, x.first.y, x.second) < std::tie(y.first.x, y.first.y, y.second);

@@ -8,9 +8,15 @@
 // pass over a neighbouring crossing of a cluster (three or more segments a few ulps from one
 // point), which segment-by-segment rounding did, crossing again and again.
 //
+// Candidate pairs come from the triangulation (the Delaunay triangulation of the points, before
+// any insertion): each segment is walked along its pipe (book §1.7), and two segments can cross
+// only inside a triangle both pipes hold, so the work follows the mesh's own density (a uniform
+// grid does not: long, dense segments share cells quadratically). The walk also gives the
+// vertices exactly on each segment, which become stops too.
+//
 // Hot points are the rounded crossings and, once some crossing is not a double point (only then
-// can a chain bend), the endpoints of the segments near each segment. Each chain vertex is
-// within its rounding bound of its segment, so the chains pass the checks of
+// can a chain bend), every vertex of a segment's pipe whose rounding box the segment meets. Each
+// chain vertex is within its rounding bound of its segment, so the chains pass the checks of
 // verify/checks_constrained2d.hpp.
 #pragma once
 
@@ -20,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/constrained2d/constrained_mesh.hpp"
 #include "kernel/rounding.hpp"
 #include "kernel/vec.hpp"
 
@@ -37,17 +44,17 @@ struct SnappedCrossings {
   // A point a segment is routed through: an input vertex id, or kHot + index into `hot`.
   static constexpr std::uint32_t kHot = 0x8000'0000u;
   std::vector<Hot> hot;  // distinct points, ordered by coordinates
-  // Segment k's stops, strictly inside it, ordered from its first endpoint to its second:
-  // stops[first[k] .. first[k + 1]).
+  // Segment k's stops (vertices exactly on it, hot points it meets), strictly inside it, ordered
+  // from its first endpoint to its second: stops[first[k] .. first[k + 1]).
   std::vector<std::uint32_t> first;
   std::vector<std::uint32_t> stops;
   bool rounded = false;  // some crossing is not a double point
 };
 
-// `points`: the vertices (input vertices), `segments`: endpoint ids, none of zero length.
-// Segments that touch at an endpoint or overlap collinearly are not crossings (the callers
-// split at vertices on segments); proper crossings only, decided by exact orient2d.
-SnappedCrossings snap_crossings(std::span<const Vec2> points, std::span<const std::array<std::uint32_t, 2>> segments);
+// `mesh`: the triangulation of the input vertices, not yet changed; `segments`: endpoint ids,
+// none of zero length. Segments that touch at an endpoint or overlap collinearly are not
+// crossings; proper crossings only, decided by exact orient2d.
+SnappedCrossings snap_crossings(const ConstrainedMesh2& mesh, std::span<const std::array<std::uint32_t, 2>> segments);
 
 // The ids of the stops strictly inside segment ab, ordered from a to b by the exact parameter of
 // their points' projections (ties by id), each id once.

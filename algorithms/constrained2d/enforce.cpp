@@ -21,7 +21,6 @@
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/rounding.hpp"
-#include "mesh/element_sets2.hpp"
 
 namespace dtlab {
 
@@ -117,167 +116,226 @@ bool strictly_inside(const ExactPoint2& x, const Vec2& a, const Vec2& b) {
 
 }  // namespace
 
-void resolve_and_enforce_segments(const Constrained2dContext& context) {
-  ConstrainedMesh2& mesh = context.mesh;
-  Constrained2dResult& result = context.result;
-  const std::uint64_t segments = context.segments.size();
-  // Bounds: s segments cross at most s(s-1)/2 times; rounding bends add a few. Each piece walk
-  // either finishes a piece or follows a vertex or crossing, which adds at most four pieces.
-  const std::uint64_t max_crossings = segments * (segments - (segments > 0)) / 2 + 16 * segments + 16;
-  std::uint64_t crossings = 0, steps = 0;
-  std::uint64_t rng = (context.options.seed ^ 0x5A5A'0F0F'C3C3'9696ull) | 1;  // random swap order (xorshift64)
-  const std::uint32_t input_points = result.input_point_count;
+namespace {
 
-  std::map<std::pair<Rational, Rational>, std::uint32_t> steiner_at;  // exact crossing -> its vertex
+// The state of one resolution: the mesh, the bounds and what was inserted.
+class SegmentResolver {
+ public:
+  explicit SegmentResolver(const Constrained2dContext& context)
+      : context_(context),
+        mesh_(context.mesh),
+        result_(context.result),
+        input_points_(context.result.input_point_count),
+        max_crossings_(bound_crossings(context.segments.size())),
+        rng_((context.options.seed ^ 0x5A5A'0F0F'C3C3'9696ull) | 1) {}
 
-  // Every crossing first, snap rounded (crossings.hpp): the rounded points inserted, each
-  // segment's stops (hot points whose rounding box it meets) in order along it.
-  const SnappedCrossings snapped = snap_crossings(mesh.tri().points().first(input_points), context.segments);
-  std::vector<std::uint32_t> hot_vertex(snapped.hot.size(), kNone);
-  for (std::size_t i = 0; i < snapped.hot.size(); ++i) {
-    const SnappedCrossings::Hot& hot = snapped.hot[i];
-    const std::uint32_t j = context.ids[hot.s], k = context.ids[hot.t];
+  // The fast path: each segment walked and enforced in input order, split where it meets a
+  // vertex, an overlap or a crossing at a double point. Returns false at the first crossing
+  // that is not a double point (chains would bend, and only snapping them all keeps them
+  // apart), having changed the mesh (swaps, and the exact crossing points, which stay Steiner
+  // vertices) but no constraint, and of the messages only those naming these points.
+  bool enforce_without_rounding() {
+    const std::size_t messages = result_.messages.size(), message_count = result_.message_count;
+    std::vector<Piece> pieces;
+    pieces.reserve(context_.segments.size());
+    for (std::size_t k = 0; k < context_.segments.size(); ++k)
+      pieces.push_back({context_.segments[k][0], context_.segments[k][1], context_.ids[k]});
+    fast_path_ = true;
+    const bool done = enforce(pieces, false);
+    fast_path_ = false;
+    if (done) return true;
+    mesh_.clear_constraints();
+    result_.messages.resize(messages);
+    result_.message_count = message_count;
+    for (std::string& note : steiner_notes_) context_.note(std::move(note));
+    return false;
+  }
+
+  // Every crossing snap rounded (crossings.hpp), then each segment enforced piece by piece
+  // between its stops.
+  void snap_and_enforce() {
+    const SnappedCrossings snapped = snap_crossings(mesh_, context_.segments);
+    std::vector<std::uint32_t> hot_vertex(snapped.hot.size(), kNone);
+    for (std::size_t i = 0; i < snapped.hot.size(); ++i) hot_vertex[i] = insert_hot(snapped.hot[i]);
+
+    // Every segment split at its stops: the vertices exactly on it (its pipe, §1.7) and the hot
+    // points it meets.
+    std::vector<Piece> pieces;
+    std::vector<std::pair<Vec2, std::uint32_t>> stops;
+    for (std::size_t k = 0; k < context_.segments.size(); ++k) {
+      const auto [a, b] = context_.segments[k];
+      stops.clear();
+      for (std::uint32_t i = snapped.first[k]; i < snapped.first[k + 1]; ++i) {
+        const std::uint32_t stop = snapped.stops[i];
+        const std::uint32_t v = stop & SnappedCrossings::kHot ? hot_vertex[stop & ~SnappedCrossings::kHot] : stop;
+        if (v == a || v == b) continue;
+        if (v < input_points_)
+          context_.note("segment " + context_.number(context_.ids[k]) + " passes through vertex " + context_.number(v) +
+                        ": split there");
+        stops.emplace_back(mesh_.point(v), v);
+      }
+      std::uint32_t from = a;
+      for (const std::uint32_t v : order_along_segment(mesh_.point(a), mesh_.point(b), stops)) {
+        pieces.push_back({from, v, context_.ids[k]});
+        from = v;
+      }
+      pieces.push_back({from, b, context_.ids[k]});
+    }
+    enforce(pieces, true);
+  }
+
+ private:
+  // Bounds: s segments cross at most s(s-1)/2 times; rounding bends add a few.
+  static std::uint64_t bound_crossings(std::uint64_t segments) {
+    return segments * (segments - (segments > 0)) / 2 + 16 * segments + 16;
+  }
+
+  // A snapped crossing's vertex: an existing one at its point (an input vertex, or a crossing
+  // the fast path inserted), or a new Steiner vertex.
+  std::uint32_t insert_hot(const SnappedCrossings::Hot& hot) {
+    const std::uint32_t j = context_.ids[hot.s], k = context_.ids[hot.t];
     const Vec2 x = hot.point;
     if (!coordinate_in_range(x.x) || !coordinate_in_range(x.y))
-      throw InputError("segments " + context.number(j) + " and " + context.number(k) +
+      throw InputError("segments " + context_.number(j) + " and " + context_.number(k) +
                            " cross at a point outside the supported coordinate range " + point_text(x),
                        {j, k});
-    if (!within_rounding_bound(hot.exact, x)) ++result.rounding_checks_failed;
-    const ConstrainedMesh2::Location where = mesh.locate(x, mesh.triangle_of_vertex(context.segments[hot.s][0]));
+    if (!within_rounding_bound(hot.exact, x)) ++result_.rounding_checks_failed;
+    const ConstrainedMesh2::Location where = mesh_.locate(x, mesh_.triangle_of_vertex(context_.segments[hot.s][0]));
     if (where.where == ConstrainedMesh2::Where::Vertex) {
-      hot_vertex[i] = where.handle;
-      context.note("segments " + context.number(j) + " and " + context.number(k) + " cross at vertex " +
-                   context.number(where.handle) + (hot.exact_double ? "" : " (their intersection rounds to it)"));
-      continue;
+      // An input vertex, or a crossing the fast path inserted (counted and named then).
+      if (where.handle < input_points_)
+        context_.note("segments " + context_.number(j) + " and " + context_.number(k) + " cross at vertex " +
+                      context_.number(where.handle) + (hot.exact_double ? "" : " (their intersection rounds to it)"));
+      return where.handle;
     }
-    hot_vertex[i] = mesh.insert(x, where);
-    steiner_at.emplace(std::pair{hot.exact.x, hot.exact.y}, hot_vertex[i]);
-    ++result.crossing_steiner_points;
-    context.note("segments " + context.number(j) + " and " + context.number(k) + " cross: Steiner vertex " +
-                 context.number(hot_vertex[i]) + " at " + point_text(x) +
-                 (hot.exact_double ? " (exact)" : " (rounded; the pieces bend there by at most ulp/2)"));
+    const std::uint32_t w = mesh_.insert(x, where);
+    steiner_at_.emplace(std::pair{hot.exact.x, hot.exact.y}, w);
+    ++result_.crossing_steiner_points;
+    context_.note("segments " + context_.number(j) + " and " + context_.number(k) + " cross: Steiner vertex " +
+                  context_.number(w) + " at " + point_text(x) +
+                  (hot.exact_double ? " (exact)" : " (rounded; the pieces bend there by at most ulp/2)"));
+    return w;
   }
 
-  // Then every segment split at its stops. The walks below split the pieces further at the
-  // vertices exactly on them (their pipes, §1.7); a piece along an edge another segment
-  // constrains already is an overlap, the edge keeping the lowest-numbered segment.
-  std::vector<Piece> pieces;
-  std::vector<std::pair<Vec2, std::uint32_t>> stops;
-  for (std::size_t k = 0; k < segments; ++k) {
-    const auto [a, b] = context.segments[k];
-    stops.clear();
-    for (std::uint32_t i = snapped.first[k]; i < snapped.first[k + 1]; ++i) {
-      const std::uint32_t stop = snapped.stops[i];
-      const std::uint32_t v = stop & SnappedCrossings::kHot ? hot_vertex[stop & ~SnappedCrossings::kHot] : stop;
-      if (v != a && v != b) stops.emplace_back(mesh.point(v), v);
-    }
-    // A segment bent at a rounded stop must still pass through the vertices exactly on it (its
-    // pipe, §1.7): a bent piece can miss them by an ulp. Unbent segments find them as they walk.
-    if (!stops.empty() && mesh.find_half_edge(a, b) == kNone)
-      for (const std::uint32_t v : pipe(mesh.tri(), mesh.triangle_of_vertex(a), a, b).through) {
-        if (v < input_points)
-          context.note("segment " + context.number(context.ids[k]) + " passes through vertex " + context.number(v) +
-                       ": split there");
-        stops.emplace_back(mesh.point(v), v);
+  // Walks and enforces the pieces (a stack: a piece split at a vertex or crossing pushes its
+  // parts). A crossing of two constrained chains: split both at the correctly rounded exact
+  // point; without `rounding`, return false instead where that point is not a double.
+  bool enforce(const std::vector<Piece>& pieces, bool rounding) {
+    std::vector<Piece> stack;
+    for (const Piece& piece : pieces) {
+      stack.push_back(piece);
+      while (!stack.empty()) {
+        const Piece p = stack.back();
+        stack.pop_back();
+        if (p.a == p.b) continue;
+        // A step finishes a piece, splits it at a vertex exactly on it (at most once per vertex
+        // and piece) or at a crossing: bounded by pieces x vertices, a guard against looping.
+        if (++steps_ > (pieces.size() + 2 * crossings_ + 4) * (std::uint64_t{mesh_.vertex_count()} + 16))
+          throw InternalError("segment resolution did not converge (at segment " + context_.number(p.segment) + ")");
+        const ConstrainedMesh2::SegmentWalk walk = mesh_.walk(p.a, p.b);
+        const auto hit = std::find_if(walk.crossed.begin(), walk.crossed.end(),
+                                      [&](std::uint32_t h) { return mesh_.constraint(h) != kNone; });
+        if (hit == walk.crossed.end()) {
+          const std::uint32_t h =
+              enforce_by_swaps(mesh_, p.a, walk.stop, walk.crossed, context_.options.random_swaps ? &rng_ : nullptr);
+          const std::uint32_t existing = mesh_.constraint(h);
+          if (existing != kNone && existing != p.segment) {
+            context_.note("segments " + context_.number(existing) + " and " + context_.number(p.segment) +
+                          " overlap along edge " + context_.number(p.a) + "-" + context_.number(walk.stop) +
+                          "; the edge keeps segment " + context_.number(std::min(existing, p.segment)));
+          }
+          mesh_.set_constraint(h, std::min(existing, p.segment));
+          if (walk.stop != p.b) {
+            if (walk.stop < input_points_)
+              context_.note("segment " + context_.number(p.segment) + " passes through vertex " +
+                            context_.number(walk.stop) + ": split there");
+            stack.push_back({walk.stop, p.b, p.segment});
+          }
+          continue;
+        }
+        if (!split_crossing(p, *hit, rounding, stack)) return false;
       }
-    std::uint32_t from = a;
-    for (const std::uint32_t v : order_along_segment(mesh.point(a), mesh.point(b), stops)) {
-      pieces.push_back({from, v, context.ids[k]});
-      from = v;
     }
-    pieces.push_back({from, b, context.ids[k]});
+    return true;
   }
 
-  std::vector<Piece> stack;
-  for (const Piece& piece : pieces) {
-    stack.push_back(piece);
-    while (!stack.empty()) {
-      const Piece p = stack.back();
-      stack.pop_back();
-      if (p.a == p.b) continue;
-      // A step finishes a piece, splits it at a vertex exactly on it (at most once per vertex
-      // and piece) or at a crossing: bounded by pieces x vertices, a guard against looping.
-      if (++steps > (pieces.size() + 2 * crossings + 4) * (std::uint64_t{mesh.vertex_count()} + 16))
-        throw InternalError("segment resolution did not converge (at segment " + context.number(p.segment) + ")");
-      const ConstrainedMesh2::SegmentWalk walk = mesh.walk(p.a, p.b);
-      const auto hit = std::find_if(walk.crossed.begin(), walk.crossed.end(),
-                                    [&](std::uint32_t h) { return mesh.constraint(h) != kNone; });
-      if (hit == walk.crossed.end()) {
-        const std::uint32_t h = enforce_by_swaps(mesh, p.a, walk.stop, walk.crossed, context.options.random_swaps ? &rng : nullptr);
-        const std::uint32_t existing = mesh.constraint(h);
-        if (existing != kNone && existing != p.segment) {
-          context.note("segments " + context.number(existing) + " and " + context.number(p.segment) +
-                       " overlap along edge " + context.number(p.a) + "-" + context.number(walk.stop) +
-                       "; the edge keeps segment " + context.number(std::min(existing, p.segment)));
-        }
-        mesh.set_constraint(h, std::min(existing, p.segment));
-        if (walk.stop != p.b) {
-          if (walk.stop < input_points)
-            context.note("segment " + context.number(p.segment) + " passes through vertex " +
-                         context.number(walk.stop) + ": split there");
-          stack.push_back({walk.stop, p.b, p.segment});
-        }
-        continue;
-      }
-
-      // A crossing with the constrained edge u -> v (segment j).
-      Triangulation2& tri = mesh.tri();
-      const std::uint32_t h = *hit;
-      const std::uint32_t u = tri.origin(h), v = tri.destination(h), j = mesh.constraint(h);
-      if (++crossings > max_crossings)
-        throw InternalError("segment resolution: more crossings than segments allow (segments " + context.number(j) +
-                            " and " + context.number(p.segment) + ")");
-      // The exact point: where the two INPUT segments meet, so that every crossing of the same
-      // two segments, and every segment through the same exact point, finds the same vertex.
-      // Only if that point is not strictly inside both input segments (their chains crossing
-      // where the segments do not, after bends of an ulp) are the two pieces' lines used.
-      const auto& si = input_segment(context, p.segment);
-      const auto& sj = input_segment(context, j);
-      std::optional<ExactPoint2> exact = line_intersection_exact(mesh.point(si[0]), mesh.point(si[1]),
-                                                                 mesh.point(sj[0]), mesh.point(sj[1]));
-      if (!exact || !strictly_inside(*exact, mesh.point(si[0]), mesh.point(si[1])) ||
-          !strictly_inside(*exact, mesh.point(sj[0]), mesh.point(sj[1])))
-        exact = line_intersection_exact(mesh.point(p.a), mesh.point(p.b), mesh.point(u), mesh.point(v));
-      DTLAB_ASSERT(exact.has_value());  // the walk saw u and v strictly on either side of ab
-      const RoundedPoint2 rounded = round_point_checked(*exact);
-      const Vec2 x = rounded.point;
-      if (!coordinate_in_range(x.x) || !coordinate_in_range(x.y))
-        throw InputError("segments " + context.number(j) + " and " + context.number(p.segment) +
-                             " cross at a point outside the supported coordinate range " + point_text(x),
-                         {j, p.segment});
-      if (!within_rounding_bound(*exact, x)) ++result.rounding_checks_failed;
-      const auto known = steiner_at.find({exact->x, exact->y});
-      const ConstrainedMesh2::Location where = known != steiner_at.end()
-                                                   ? ConstrainedMesh2::Location{ConstrainedMesh2::Where::Vertex, known->second}
-                                                   : mesh.locate(x, Triangulation2::triangle_of(h));
-      std::uint32_t w;
-      if (known != steiner_at.end()) {
-        w = known->second;
-      } else if (where.where == ConstrainedMesh2::Where::Vertex) {
-        w = where.handle;
-        context.note("segments " + context.number(j) + " and " + context.number(p.segment) + " cross at vertex " +
-                     context.number(w) + (rounded.exact ? "" : " (their intersection rounds to it)"));
-      } else {
-        w = mesh.insert(x, where);
-        steiner_at.emplace(std::pair{exact->x, exact->y}, w);
-        ++result.crossing_steiner_points;
-        context.note("segments " + context.number(j) + " and " + context.number(p.segment) + " cross: Steiner vertex " +
-                     context.number(w) + " at " + point_text(x) +
-                     (rounded.exact ? " (exact)" : " (rounded; the pieces bend there by at most ulp/2)"));
-      }
-      // Process order (a stack): first segment j's chain through w, then p's.
-      stack.push_back({w, p.b, p.segment});
-      stack.push_back({p.a, w, p.segment});
-      if (w != u && w != v) {
-        const std::uint32_t e = mesh.find_half_edge(u, v);
-        if (e != kNone && mesh.constraint(e) == j) {  // not split by the insertion: reroute through w
-          mesh.set_constraint(e, kNone);
-          stack.push_back({w, v, j});
-          stack.push_back({u, w, j});
-        }
+  // Piece p crosses the constrained edge h (segment j): both split at their crossing.
+  bool split_crossing(const Piece& p, std::uint32_t h, bool rounding, std::vector<Piece>& stack) {
+    Triangulation2& tri = mesh_.tri();
+    const std::uint32_t u = tri.origin(h), v = tri.destination(h), j = mesh_.constraint(h);
+    if (++crossings_ > max_crossings_)
+      throw InternalError("segment resolution: more crossings than segments allow (segments " + context_.number(j) +
+                          " and " + context_.number(p.segment) + ")");
+    // The exact point: where the two INPUT segments meet, so that every crossing of the same two
+    // segments, and every segment through the same exact point, finds the same vertex. Only if
+    // that point is not strictly inside both input segments (their chains crossing where the
+    // segments do not, after bends of an ulp) are the two pieces' lines used.
+    const auto& si = input_segment(context_, p.segment);
+    const auto& sj = input_segment(context_, j);
+    std::optional<ExactPoint2> exact = line_intersection_exact(mesh_.point(si[0]), mesh_.point(si[1]),
+                                                               mesh_.point(sj[0]), mesh_.point(sj[1]));
+    if (!exact || !strictly_inside(*exact, mesh_.point(si[0]), mesh_.point(si[1])) ||
+        !strictly_inside(*exact, mesh_.point(sj[0]), mesh_.point(sj[1])))
+      exact = line_intersection_exact(mesh_.point(p.a), mesh_.point(p.b), mesh_.point(u), mesh_.point(v));
+    DTLAB_ASSERT(exact.has_value());  // the walk saw u and v strictly on either side of ab
+    const RoundedPoint2 rounded = round_point_checked(*exact);
+    if (!rounded.exact && !rounding) return false;
+    const Vec2 x = rounded.point;
+    if (!coordinate_in_range(x.x) || !coordinate_in_range(x.y))
+      throw InputError("segments " + context_.number(j) + " and " + context_.number(p.segment) +
+                           " cross at a point outside the supported coordinate range " + point_text(x),
+                       {j, p.segment});
+    if (!within_rounding_bound(*exact, x)) ++result_.rounding_checks_failed;
+    const auto known = steiner_at_.find({exact->x, exact->y});
+    std::uint32_t w;
+    if (known != steiner_at_.end()) {
+      w = known->second;
+    } else if (const ConstrainedMesh2::Location where = mesh_.locate(x, Triangulation2::triangle_of(h));
+               where.where == ConstrainedMesh2::Where::Vertex) {
+      w = where.handle;
+      context_.note("segments " + context_.number(j) + " and " + context_.number(p.segment) + " cross at vertex " +
+                    context_.number(w) + (rounded.exact ? "" : " (their intersection rounds to it)"));
+    } else {
+      w = mesh_.insert(x, where);
+      steiner_at_.emplace(std::pair{exact->x, exact->y}, w);
+      ++result_.crossing_steiner_points;
+      std::string note = "segments " + context_.number(j) + " and " + context_.number(p.segment) +
+                         " cross: Steiner vertex " + context_.number(w) + " at " + point_text(x) +
+                         (rounded.exact ? " (exact)" : " (rounded; the pieces bend there by at most ulp/2)");
+      if (fast_path_) steiner_notes_.push_back(note);
+      context_.note(std::move(note));
+    }
+    // Process order (a stack): first segment j's chain through w, then p's.
+    stack.push_back({w, p.b, p.segment});
+    stack.push_back({p.a, w, p.segment});
+    if (w != u && w != v) {
+      const std::uint32_t e = mesh_.find_half_edge(u, v);
+      if (e != kNone && mesh_.constraint(e) == j) {  // not split by the insertion: reroute through w
+        mesh_.set_constraint(e, kNone);
+        stack.push_back({w, v, j});
+        stack.push_back({u, w, j});
       }
     }
+    return true;
   }
+
+  const Constrained2dContext& context_;
+  ConstrainedMesh2& mesh_;
+  Constrained2dResult& result_;
+  const std::uint32_t input_points_;
+  const std::uint64_t max_crossings_;
+  std::uint64_t crossings_ = 0, steps_ = 0;
+  std::uint64_t rng_;  // random swap order (xorshift64)
+  std::map<std::pair<Rational, Rational>, std::uint32_t> steiner_at_;  // exact crossing -> its vertex
+  bool fast_path_ = false;
+  std::vector<std::string> steiner_notes_;  // the fast path's crossing points, named
+};
+
+}  // namespace
+
+void resolve_and_enforce_segments(const Constrained2dContext& context) {
+  SegmentResolver resolver(context);
+  if (!resolver.enforce_without_rounding()) resolver.snap_and_enforce();
 }
 
 }  // namespace dtlab
