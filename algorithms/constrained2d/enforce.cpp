@@ -46,8 +46,16 @@ std::uint32_t enforce_by_swaps(ConstrainedMesh2& mesh, std::uint32_t s, std::uin
                                const std::vector<std::uint32_t>& crossed, std::uint64_t* rng) {
   if (!crossed.empty()) {
     Triangulation2& tri = mesh.tri();
-    std::deque<std::array<std::uint32_t, 2>> queue;
-    for (const std::uint32_t h : crossed) queue.push_back({tri.origin(h), tri.destination(h)});
+    // A crossed edge by its vertices, with the half-edge it had when queued: still valid unless
+    // a flip rewrote its triangle (checked), else looked up again.
+    struct Crossed {
+      std::uint32_t u, v, h;
+    };
+    const auto half_edge = [&](const Crossed& e) {
+      return tri.origin(e.h) == e.u && tri.destination(e.h) == e.v ? e.h : mesh.find_half_edge(e.u, e.v);
+    };
+    std::deque<Crossed> queue;
+    for (const std::uint32_t h : crossed) queue.push_back({tri.origin(h), tri.destination(h), h});
     const Vec2& S = mesh.point(s);
     const Vec2& Q = mesh.point(q);
     const std::uint64_t k = crossed.size();
@@ -66,17 +74,17 @@ std::uint32_t enforce_by_swaps(ConstrainedMesh2& mesh, std::uint32_t s, std::uin
         if (idle > queue.size()) {
           pick = queue.size();
           for (std::size_t i = 0; i < queue.size() && pick == queue.size(); ++i)
-            if (mesh.flippable(mesh.find_half_edge(queue[i][0], queue[i][1]))) pick = i;
+            if (mesh.flippable(half_edge(queue[i]))) pick = i;
           if (pick == queue.size()) throw cannot();
         }
         std::swap(queue.front(), queue[pick]);
       }
-      const auto [u, v] = queue.front();
+      Crossed e = queue.front();
       queue.pop_front();
-      const std::uint32_t h = mesh.find_half_edge(u, v);
-      DTLAB_ASSERT(h != kNone && mesh.constraint(h) == kNone);
-      if (!mesh.flippable(h)) {
-        queue.push_back({u, v});
+      e.h = half_edge(e);
+      DTLAB_ASSERT(e.h != kNone && mesh.constraint(e.h) == kNone);
+      if (!mesh.flippable(e.h)) {
+        queue.push_back(e);
         if (++idle > queue.size() && !rng) throw cannot();
         continue;
       }
@@ -84,12 +92,12 @@ std::uint32_t enforce_by_swaps(ConstrainedMesh2& mesh, std::uint32_t s, std::uin
       if (++flips > bound)
         throw InternalError("edge swapping for segment " + std::to_string(s) + "-" + std::to_string(q) +
                             " exceeded its bound of " + std::to_string(bound) + " swaps");
-      const std::uint32_t e = mesh.flip(h);
-      const std::uint32_t c = tri.origin(e), d = tri.destination(e);
+      const std::uint32_t f = mesh.flip(e.h);
+      const std::uint32_t c = tri.origin(f), d = tri.destination(f);
       if (c == s || c == q || d == s || d == q) continue;
       const Sign sc = orient2d(S, Q, mesh.point(c));
       const Sign sd = orient2d(S, Q, mesh.point(d));
-      if (sc != Sign::Zero && sd != Sign::Zero && sc != sd) queue.push_back({c, d});
+      if (sc != Sign::Zero && sd != Sign::Zero && sc != sd) queue.push_back({c, d, f});
     }
   }
   const std::uint32_t h = mesh.find_half_edge(s, q);
