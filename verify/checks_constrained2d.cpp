@@ -355,10 +355,21 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
     // Steiner vertices: on an edge of this segment or of one collinear with it (overlaps keep
     // the lowest-numbered segment), or within their rounding bound of AB (crossings); their
     // bound is checked below, once the chain is known.
-    const auto admissible = [&](std::uint32_t d, std::uint32_t label) {
+    // Or, reached along another segment's edge (a piece of this one that ran exactly through d
+    // and was split there, the edge shared and labelled with the lower segment): within its
+    // rounding bound of the chord from c to a forward neighbour along this segment's own edges.
+    const auto on_own_chord = [&](std::uint32_t c, std::uint32_t d) {
+      for (std::uint32_t j = first[d]; j < first[d + 1]; ++j) {
+        const auto [e, label] = next[j];
+        if (label == k && e != c && forward(P[d], P[e], A, B) && within_rounding_bound_of_segment(P[d], P[c], P[e]))
+          return true;
+      }
+      return false;
+    };
+    const auto admissible = [&](std::uint32_t c, std::uint32_t d, std::uint32_t label) {
       if (d < n)
         return label == k || (orient2d(A, B, P[d]) == Sign::Zero && strictly_between(A, B, P[d])) ||
-               within_rounding_bound_of_segment(P[d], A, B);
+               within_rounding_bound_of_segment(P[d], A, B) || on_own_chord(c, d);
       if (label == k) return true;
       if (label < input.segments.size()) {
         const auto& o = input.segments[label];
@@ -366,7 +377,7 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
             orient2d(A, B, P[carrier[o[1]]]) == Sign::Zero)
           return true;
       }
-      return within_rounding_bound_of_segment(P[d], A, B);
+      return within_rounding_bound_of_segment(P[d], A, B) || on_own_chord(c, d);
     };
     bool found = false;
     stack.assign(1, a);
@@ -382,7 +393,7 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
           found = true;
           break;
         }
-        if (!admissible(d, label)) continue;
+        if (!admissible(c, d, label)) continue;
         stamp[d] = mark;
         parent[d] = c;
         stack.push_back(d);
@@ -401,29 +412,33 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
     // split when it was inserted: a piece between two older vertices of the chain, one on each
     // side (vertex ids grow with insertion). Later vertices only split pieces further, but an
     // older vertex found exactly on a later piece joins the chain there, so the piece's ends are
-    // among the nearest few older vertices on each side, not always the nearest.
-    constexpr int kOlderTried = 4;
-    // An input vertex off AB (reached along this segment's own edges) must lie within its
-    // rounding bound of a piece between chain vertices around it: a piece of this segment between
-    // Steiner points ran exactly through it, and the walk split the piece there.
+    // among the nearest few older vertices on each side, not always the nearest, or are newer
+    // (an input vertex, or a crossing point, that a piece between later split points ran exactly
+    // through: the walk split the piece there). Either way the chain stays within rounding
+    // bounds of chords between its vertices, and so near AB.
+    constexpr std::size_t kTried = 4;
     for (std::size_t i = 1; i + 1 < chain.size(); ++i) {
       const std::uint32_t v = chain[i];
       if (v >= n) steiner_on.push_back({v, static_cast<std::uint32_t>(k)});
       if (within_rounding_bound_of_segment(P[v], A, B)) continue;
-      std::vector<std::uint32_t> before, after;
-      for (std::size_t j = i + 1; j < chain.size() && before.size() < kOlderTried; ++j)
-        if (chain[j] < v || v < n) before.push_back(chain[j]);
-      for (std::size_t j = i; j-- > 0 && after.size() < kOlderTried;)
-        if (chain[j] < v || v < n) after.push_back(chain[j]);
-      bool within = false;
-      for (std::size_t x = 0; x < before.size() && !within; ++x)
-        for (std::size_t y = 0; y < after.size() && !within; ++y)
-          within = within_rounding_bound_of_segment(P[v], P[before[x]], P[after[y]]);
+      const auto within_a_chord = [&](bool older_only, std::uint32_t& nearest_before, std::uint32_t& nearest_after) {
+        std::vector<std::uint32_t> before, after;
+        for (std::size_t j = i + 1; j < chain.size() && before.size() < kTried; ++j)
+          if (chain[j] < v || !older_only) before.push_back(chain[j]);
+        for (std::size_t j = i; j-- > 0 && after.size() < kTried;)
+          if (chain[j] < v || !older_only) after.push_back(chain[j]);
+        nearest_before = before.front(), nearest_after = after.front();
+        for (const std::uint32_t x : before)
+          for (const std::uint32_t y : after)
+            if (within_rounding_bound_of_segment(P[v], P[x], P[y])) return true;
+        return false;
+      };
+      std::uint32_t x = 0, y = 0;
+      const bool within = (v >= n && within_a_chord(true, x, y)) || within_a_chord(false, x, y);
       if (!within)
         r.add_problem((v < n ? "input " : "Steiner ") + name.point(v) + " " + coordinates(P[v]) + " on the chain of " +
                       name.segment(k) + " is not within its rounding bound of the segment nor of a piece between " +
-                      (v < n ? "" : "older ") + "points of the chain around it (nearest: " +
-                      name.edge(before.front(), after.front()) + ")");
+                      "points of the chain around it (nearest: " + name.edge(x, y) + ")");
     }
   }
 

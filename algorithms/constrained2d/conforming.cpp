@@ -32,6 +32,19 @@ RoundedPoint2 split_point(const Vec2& a, const Vec2& b, bool a_input, bool b_inp
   return point_on_segment(o, f, Rational(distance / length));
 }
 
+// (w - a) . (B - A) and (b - w) . (B - A) of one sign, not zero, exactly: w lies between the
+// ends of piece ab (either way round) along its input segment AB, so the chain through it keeps
+// going forward, as the chain checks require. Rounding breaks this only on pieces a few ulps
+// long.
+bool splits_forward(const Vec2& a, const Vec2& w, const Vec2& b, const Vec2& A, const Vec2& B) {
+  const Rational ex = Rational(B.x) - Rational(A.x), ey = Rational(B.y) - Rational(A.y);
+  const auto dot = [&](const Vec2& from, const Vec2& to) {
+    return ((Rational(to.x) - Rational(from.x)) * ex + (Rational(to.y) - Rational(from.y)) * ey).sign();
+  };
+  const Sign first = dot(a, w);
+  return first != Sign::Zero && dot(w, b) == first;
+}
+
 }  // namespace
 
 void constrained2d_conforming(const Constrained2dContext& context) {
@@ -76,6 +89,13 @@ void constrained2d_conforming(const Constrained2dContext& context) {
                                  context.number(p.a) + "-" + context.number(p.b) + " has no double point between its ends",
                              {p.segment});
         } else {
+          const auto& [ia, ib] = context.input_segment(p.segment);
+          if (!splits_forward(mesh.point(p.a), m.point, mesh.point(p.b), mesh.point(ia), mesh.point(ib)))
+            throw InputError("conforming: segment " + context.number(p.segment) + " cannot be split further: its piece " +
+                                 context.number(p.a) + "-" + context.number(p.b) +
+                                 " is a few ulps long, and its rounded split point does not lie between its ends "
+                                 "along the segment (points closer than the doubles can separate)",
+                             {p.segment});
           if (result.split_steiner_points >= limit)
             throw InputError("conforming: Steiner point limit (" + std::to_string(limit) + ") reached while splitting segment " +
                                  context.number(p.segment),

@@ -3,6 +3,7 @@
 // kept copy of duplicate points, duplicates removed), and the result to report into.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -10,6 +11,7 @@
 
 #include "algorithms/constrained2d/constrained2d.hpp"
 #include "algorithms/constrained2d/constrained_mesh.hpp"
+#include "kernel/error.hpp"
 
 namespace dtlab {
 
@@ -23,6 +25,13 @@ struct Constrained2dContext {
 
   // Item i (0-based) as messages number it (Constrained2dOptions::first_number).
   std::string number(std::uint64_t i) const { return std::to_string(i + options.first_number); }
+
+  // The endpoints of input segment `id` (after duplicate points were merged).
+  const std::array<std::uint32_t, 2>& input_segment(std::uint32_t id) const {
+    const auto it = std::lower_bound(ids.begin(), ids.end(), id);
+    DTLAB_ASSERT(it != ids.end() && *it == id);
+    return segments[static_cast<std::size_t>(it - ids.begin())];
+  }
 
   void note(std::string message) const {
     if (result.messages.size() < Constrained2dResult::kMaxMessages) result.messages.push_back(std::move(message));

@@ -105,13 +105,6 @@ std::uint32_t enforce_by_swaps(ConstrainedMesh2& mesh, std::uint32_t s, std::uin
   return h;
 }
 
-// The endpoints of input segment `id` (after duplicate points were merged).
-const std::array<std::uint32_t, 2>& input_segment(const Constrained2dContext& context, std::uint32_t id) {
-  const auto it = std::lower_bound(context.ids.begin(), context.ids.end(), id);
-  DTLAB_ASSERT(it != context.ids.end() && *it == id);
-  return context.segments[static_cast<std::size_t>(it - context.ids.begin())];
-}
-
 // x (on the line ab) strictly between a and b, exactly.
 bool strictly_inside(const ExactPoint2& x, const Vec2& a, const Vec2& b) {
   if (a.x != b.x) {
@@ -278,8 +271,8 @@ class SegmentResolver {
     // segments, and every segment through the same exact point, finds the same vertex. Only if
     // that point is not strictly inside both input segments (their chains crossing where the
     // segments do not, after bends of an ulp) are the two pieces' lines used.
-    const auto& si = input_segment(context_, p.segment);
-    const auto& sj = input_segment(context_, j);
+    const auto& si = context_.input_segment(p.segment);
+    const auto& sj = context_.input_segment(j);
     std::optional<ExactPoint2> exact = line_intersection_exact(mesh_.point(si[0]), mesh_.point(si[1]),
                                                                mesh_.point(sj[0]), mesh_.point(sj[1]));
     if (!exact || !strictly_inside(*exact, mesh_.point(si[0]), mesh_.point(si[1])) ||
