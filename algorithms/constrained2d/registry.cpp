@@ -28,8 +28,8 @@ constexpr std::array kMethods = {
                         "flips of every non-constrained edge failing the empty circle",
                         &run_cdt},
     Constrained2dMethod{"swap",
-                        "enforcement by edge swapping along each segment's pipe (§3.3.3, Sloan's queue, input "
-                        "order); no Steiner points beyond crossings; not Delaunay",
+                        "enforcement by edge swapping along each segment's pipe (§3.3.3: Sloan's queue, or a "
+                        "random order with --swap-order random); no Steiner points beyond crossings; not Delaunay",
                         &run_swap},
     Constrained2dMethod{"conforming",
                         "conforming Delaunay (§3.2, §3.3.2): pieces that are not Delaunay edges split (midpoint, or "

@@ -1,0 +1,177 @@
+#!/usr/bin/env python3
+"""Steiner points and time of dtlab's 3D constrained methods beside TetGen, one process per run.
+
+Inputs: the Schönhardt family written by bench/constrained3d_inputs (Schönhardt's polyhedron at
+5, 30 and 55 degrees, twisted 4-, 6- and 8-gonal prisms, a stack of three twisted prisms,
+Chazelle's polyhedron with 2, 4 and 8 notches a side) and the closed surfaces of Debian's CGAL
+data (libcgal-demo: /usr/share/doc/libcgal-dev/data.tar.gz) named by --cgal-meshes. For each:
+    build/dtlab constrain IN.off --method M --stats          (every 3D method dtlab lists)
+    tetgen -p IN.off                                         (TetGen 1.5, Debian's binary)
+RUNS times each; prints a Markdown table row per (input, program): input vertices and triangles,
+Steiner points (dtlab: its --stats on edges / faces / interior; TetGen: "Mesh points" less
+"Input points", split as its report splits them), tetrahedra, seconds (each program's own timing:
+dtlab's "total", wall clock; TetGen's "Total running seconds" less its "Output seconds", clock(),
+CPU time; minimum over the runs) and time / TetGen. An input a program refuses gets its first
+line of error instead (dtlab names open or self-intersecting surfaces; TetGen may return zero
+tetrahedra with exit status 0, which is reported as such). A machine and commit line comes first.
+
+  scripts/bench_constrained3d.py --build build
+  scripts/bench_constrained3d.py --build build --runs 5 --cgal-meshes elephant.off,eight.off
+  scripts/bench_constrained3d.py --build build --update-readme
+"""
+import argparse
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tarfile
+import tempfile
+
+import readme_tables
+from bench_delaunay2d import fmt, machine, progress
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
+DEFAULT_MESHES = "tetrahedron.off,icosahedron.off,sphere.stl,elephant.off,eight.off,cow.off,fandisk.off,knot1.off"
+PRODUCER = ("Produced by `scripts/bench_constrained3d.py --update-readme` (dtlab's 3D constrained methods "
+            "through `dtlab constrain --stats`, TetGen 1.5 through `tetgen -p`, same files).")
+
+
+def run(cmd, cwd, timeout):
+    try:
+        p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                           timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, f"timed out after {timeout} s"
+    return p, None
+
+
+def dtlab_once(dtlab, path, method, work, timeout):
+    p, err = run([dtlab, "constrain", path, "--method", method, "--stats", "-o",
+                  os.path.join(work, "out.mesh")], work, timeout)
+    if err:
+        return {"error": err}
+    if p.returncode != 0:
+        return {"error": (p.stderr.strip().splitlines() or ["exit status %d" % p.returncode])[0]}
+    stats = json.loads(p.stdout.strip().splitlines()[-1])
+    s = stats["steiner_points"]
+    return {"seconds": stats["seconds"]["total"], "steiner": s["on_edges"] + s["on_faces"] + s["interior"],
+            "split": f"{s['on_edges']} / {s['on_faces']} / {s['interior']}", "tets": stats["elements"],
+            "points": stats["points"], "triangles": stats["input_triangles"]}
+
+
+def tetgen_once(path, work, timeout):
+    local = os.path.join(work, os.path.basename(path))
+    shutil.copy(path, local)
+    p, err = run(["tetgen", "-p", os.path.basename(local)], work, timeout)
+    if err:
+        return {"error": err}
+    out = p.stdout
+    def number(label, kind=float):
+        m = re.search(r"^\s*" + re.escape(label) + r":\s*([0-9.eE+-]+)", out, re.M)
+        return kind(m.group(1)) if m else None
+    if p.returncode != 0 or number("Total running seconds") is None:
+        last = (p.stderr.strip() or out.strip()).splitlines()
+        return {"error": f"exit status {p.returncode}: " + (last[-1] if last else "no output")}
+    tets = number("Mesh tetrahedra", int)
+    if not tets:
+        return {"error": "0 tetrahedra, exit status 0"}
+    parts = [number(f"Steiner points {where}", int) or 0 for where in ("on segments", "in facets", "in volume")]
+    steiner = number("Mesh points", int) - number("Input points", int)
+    return {"seconds": number("Total running seconds") - (number("Output seconds") or 0.0), "steiner": steiner,
+            "split": " / ".join(str(x) for x in parts), "tets": tets}
+
+
+def best(results):
+    ok = [r for r in results if "error" not in r]
+    if not ok:
+        return results[0]
+    b = dict(min(ok, key=lambda r: r["seconds"]))
+    return b
+
+
+def extract_meshes(names, into):
+    if not os.path.exists(CGAL_DATA):
+        progress(f"{CGAL_DATA} absent (Debian package libcgal-demo): CGAL surfaces left out")
+        return []
+    paths = []
+    with tarfile.open(CGAL_DATA) as tar:
+        for name in names:
+            try:
+                member = tar.getmember("data/meshes/" + name)
+            except KeyError:
+                progress(f"{name}: not in {CGAL_DATA}, left out")
+                continue
+            member.name = os.path.basename(member.name)
+            tar.extract(member, into)
+            paths.append(os.path.join(into, member.name))
+    return paths
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--timeout", type=int, default=300, help="seconds per run")
+    ap.add_argument("--cgal-meshes", default=DEFAULT_MESHES, help="comma-separated names in CGAL's data/meshes")
+    ap.add_argument("--update-readme", action="store_true")
+    args = ap.parse_args()
+
+    args.build = os.path.abspath(args.build)
+    dtlab = os.path.join(args.build, "dtlab")
+    inputs_bin = os.path.join(args.build, "bench", "constrained3d_inputs")
+    for b in (dtlab, inputs_bin):
+        if not os.path.exists(b):
+            raise SystemExit(f"{b} not found: build it (cmake --build {args.build} --target dtlab_cli constrained3d_inputs)")
+    have_tetgen = shutil.which("tetgen") is not None
+    listing = subprocess.run([dtlab, "constrain", "--list-methods"], stdout=subprocess.PIPE, text=True).stdout
+    methods3 = [line.split("\t")[0] for line in listing.split("3D", 1)[-1].splitlines()[1:] if "\t" in line]
+
+    work = tempfile.mkdtemp(prefix="dtlab-c3d-")
+    try:
+        files = subprocess.run([inputs_bin, os.path.join(work, "family")], stdout=subprocess.PIPE, text=True,
+                               check=True).stdout.split()
+        files += extract_meshes([n for n in args.cgal_meshes.split(",") if n], os.path.join(work, "cgal"))
+        rows = []
+        for path in files:
+            name = os.path.basename(path)
+            programs = [(m, lambda p=path, m=m: dtlab_once(dtlab, p, m, work, args.timeout)) for m in methods3]
+            if have_tetgen:
+                programs.append(("tetgen", lambda p=path: tetgen_once(p, work, args.timeout)))
+            results = {}
+            for label, once in programs:
+                progress(f"bench_constrained3d: {name}, {label} ({args.runs} runs)")
+                results[label] = best([once() for _ in range(args.runs)])
+            size = next((r for r in results.values() if "points" in r), {})
+            for label, r in results.items():
+                rows.append((name, size, label, r, results.get("tetgen")))
+        m = machine(dtlab)
+        load = ", ".join(f"{x:.1f}" for x in m["load_average"])
+        lines = [f"Machine: {m['cpu']}, {m['cpus']} CPUs (load average {load} at the start); "
+                 f"`{m['dtlab_version']}` (tree at {m['commit']}); TetGen 1.5 (Debian). One process per run; "
+                 f"seconds: minimum of {args.runs} runs, each program's own timing (TetGen's: CPU time, less "
+                 f"its file output); Steiner points split as on edges / on faces / interior (TetGen: on "
+                 f"segments / in facets / in volume).", "",
+                 "| input | vertices | triangles | program | Steiner points | split | tetrahedra | seconds | time / TetGen |",
+                 "|---|---|---|---|---|---|---|---|---|"]
+        for name, size, label, r, t in rows:
+            head = f"| {name} | {size.get('points', '-')} | {size.get('triangles', '-')} | {label} |"
+            if "error" in r:
+                lines.append(f"{head} refused: {r['error']} | | | | |")
+                continue
+            ratio = fmt(r["seconds"] / t["seconds"], 2) if t and "error" not in t and t["seconds"] > 0 else "-"
+            lines.append(f"{head} {r['steiner']} | {r['split']} | {r['tets']} | {fmt(r['seconds'])} | {ratio} |")
+        text = "\n".join(lines) + "\n"
+        print(text)
+        if args.update_readme:
+            readme_tables.write_block(os.path.join(ROOT, "README.md"), "constrained3d",
+                                      "3D constrained (Schönhardt family, CGAL's closed surfaces) beside TetGen",
+                                      PRODUCER, text)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
