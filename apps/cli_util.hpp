@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "verify/problem_report.hpp"  // json_string
+
 namespace dtlab::cli {
 
 // Peak resident set size of this process so far, in MB.
@@ -14,21 +16,6 @@ inline double peak_rss_mb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
-}
-
-inline std::string json_string(std::string_view s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
 }
 
 inline std::string json_number(double v) {

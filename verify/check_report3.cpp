@@ -7,27 +7,6 @@ namespace dtlab {
 
 namespace {
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
-
 // (name, member) of every count, in the order the printers and merge use.
 template <class Report, class F>
 void for_each_count(Report& r, F&& f) {
@@ -42,21 +21,16 @@ void for_each_count(Report& r, F&& f) {
   f("insphere_tests", r.insphere_tests);
 }
 
-}  // namespace
-
-void CheckReport3::add_problem(std::string problem) {
-  ok = false;
-  ++problem_count;
-  if (problems.size() < kMaxStoredProblems) problems.push_back(std::move(problem));
+ReportCounts counts_of(const CheckReport3& r) {
+  ReportCounts counts;
+  for_each_count(r, [&](const char* key, std::size_t value) { counts.emplace_back(key, value); });
+  return counts;
 }
 
+}  // namespace
+
 void CheckReport3::merge(const CheckReport3& other) {
-  ok = ok && other.ok;
-  problem_count += other.problem_count;
-  for (const std::string& p : other.problems) {
-    if (problems.size() >= kMaxStoredProblems) break;
-    problems.push_back(p);
-  }
+  add_problems(other);
   std::vector<std::size_t> theirs;
   for_each_count(other, [&](const char*, std::size_t value) { theirs.push_back(value); });
   std::size_t k = 0;
@@ -66,33 +40,8 @@ void CheckReport3::merge(const CheckReport3& other) {
   });
 }
 
-std::string to_json(const CheckReport3& r) {
-  std::string out = std::string("{\"ok\":") + (r.ok ? "true" : "false") +
-                    ",\"problem_count\":" + std::to_string(r.problem_count) + ",\"counts\":{";
-  bool first = true;
-  for_each_count(r, [&](const char* key, std::size_t value) {
-    out += (first ? "\"" : ",\"") + std::string(key) + "\":" + std::to_string(value);
-    first = false;
-  });
-  out += "},\"problems\":[";
-  for (std::size_t i = 0; i < r.problems.size(); ++i) {
-    if (i) out += ',';
-    out += json_string(r.problems[i]);
-  }
-  return out + "]}";
-}
+std::string to_json(const CheckReport3& r) { return report_json(r, counts_of(r)); }
 
-std::string to_text(const CheckReport3& r) {
-  std::string out = r.ok ? "ok:" : std::to_string(r.problem_count) + " problems:";
-  for_each_count(r, [&](const char* key, std::size_t value) {
-    out.append(" ").append(key).append("=").append(std::to_string(value));
-  });
-  out += "\n";
-  for (const std::string& p : r.problems) out += "  " + p + "\n";
-  if (r.problems.size() < r.problem_count) {
-    out += "  ... and " + std::to_string(r.problem_count - r.problems.size()) + " more\n";
-  }
-  return out;
-}
+std::string to_text(const CheckReport3& r) { return report_text(r, counts_of(r)); }
 
 }  // namespace dtlab

@@ -22,19 +22,13 @@
 #include <vector>
 
 #include "kernel/vec.hpp"
+#include "verify/problem_report.hpp"
 
 namespace dtlab {
 
 using TriangleIds = std::array<std::uint32_t, 3>;
 
-struct CheckReport2 {
-  static constexpr std::size_t kMaxStoredProblems = 1000;
-
-  bool ok = true;
-  // Each names the triangle, edge or point; at most kMaxStoredProblems are stored.
-  std::vector<std::string> problems;
-  std::size_t problem_count = 0;  // all problems found, stored or not
-
+struct CheckReport2 : ProblemReport {  // ok, problems (each naming its item), problem_count
   // Counts filled in by the checks that compute them (0 where not computed).
   std::size_t points = 0;
   std::size_t triangles = 0;
@@ -45,7 +39,6 @@ struct CheckReport2 {
   std::size_t duplicates = 0;
   std::size_t incircle_tests = 0;
 
-  void add_problem(std::string problem);
   // Appends other's problems; counts are taken from other where it computed them.
   void merge(const CheckReport2& other);
 };

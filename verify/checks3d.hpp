@@ -29,19 +29,13 @@
 
 #include "kernel/vec.hpp"
 #include "mesh/tetrahedralization3.hpp"
+#include "verify/problem_report.hpp"
 
 namespace dtlab {
 
 using TetrahedronIds = std::array<std::uint32_t, 4>;
 
-struct CheckReport3 {
-  static constexpr std::size_t kMaxStoredProblems = 1000;
-
-  bool ok = true;
-  // Each names the tetrahedron, facet, edge or point; at most kMaxStoredProblems are stored.
-  std::vector<std::string> problems;
-  std::size_t problem_count = 0;  // all problems found, stored or not
-
+struct CheckReport3 : ProblemReport {  // ok, problems (each naming its item), problem_count
   // Counts filled in by the checks that compute them (0 where not computed).
   std::size_t points = 0;
   std::size_t tetrahedra = 0;        // finite
@@ -53,7 +47,6 @@ struct CheckReport3 {
   std::size_t duplicates = 0;
   std::size_t insphere_tests = 0;
 
-  void add_problem(std::string problem);
   // Appends other's problems; counts are taken from other where it computed them.
   void merge(const CheckReport3& other);
 };

@@ -130,23 +130,6 @@ std::vector<std::uint32_t> carriers(const ConstrainedInput2& input, const Triang
   return carrier;
 }
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
 template <class F>
 void for_each_count(const Report& r, F&& f) {
   f("points", r.points);
@@ -173,22 +156,16 @@ void check_degenerate(const ConstrainedInput2& input, const Constrained2dResult&
     }
 }
 
-}  // namespace
-
-void ConstrainedCheckReport2::add_problem(std::string problem) {
-  ok = false;
-  ++problem_count;
-  if (problems.size() < kMaxStoredProblems) problems.push_back(std::move(problem));
+ReportCounts counts_of(const ConstrainedCheckReport2& r) {
+  ReportCounts counts;
+  for_each_count(r, [&](const char* key, std::size_t value) { counts.emplace_back(key, value); });
+  return counts;
 }
 
+}  // namespace
+
 void ConstrainedCheckReport2::merge(const CheckReport2& other) {
-  if (other.ok) return;
-  ok = false;
-  problem_count += other.problem_count;
-  for (const std::string& p : other.problems) {
-    if (problems.size() >= kMaxStoredProblems) break;
-    problems.push_back(p + " (numbered from 0)");
-  }
+  add_problems(other, " (numbered from 0)");
 }
 
 ConstrainedCheckReport2 check_constrained_validity2(const ConstrainedInput2& input, const Constrained2dResult& result,
@@ -544,29 +521,8 @@ ConstrainedCheckReport2 verify_constrained2d(const ConstrainedInput2& input, con
   return r;
 }
 
-std::string to_json(const ConstrainedCheckReport2& r) {
-  std::string out = std::string("{\"ok\":") + (r.ok ? "true" : "false") +
-                    ",\"problem_count\":" + std::to_string(r.problem_count) + ",\"counts\":{";
-  bool first = true;
-  for_each_count(r, [&](const char* key, std::size_t value) {
-    out += (first ? "\"" : ",\"") + std::string(key) + "\":" + std::to_string(value);
-    first = false;
-  });
-  out += "},\"problems\":[";
-  for (std::size_t i = 0; i < r.problems.size(); ++i) out += (i ? "," : "") + json_string(r.problems[i]);
-  return out + "]}";
-}
+std::string to_json(const ConstrainedCheckReport2& r) { return report_json(r, counts_of(r)); }
 
-std::string to_text(const ConstrainedCheckReport2& r) {
-  std::string out = r.ok ? "ok:" : std::to_string(r.problem_count) + " problems:";
-  for_each_count(r, [&](const char* key, std::size_t value) {
-    out.append(" ").append(key).append("=").append(std::to_string(value));
-  });
-  out += "\n";
-  for (const std::string& p : r.problems) out += "  " + p + "\n";
-  if (r.problems.size() < r.problem_count)
-    out += "  ... and " + std::to_string(r.problem_count - r.problems.size()) + " more\n";
-  return out;
-}
+std::string to_text(const ConstrainedCheckReport2& r) { return report_text(r, counts_of(r)); }
 
 }  // namespace dtlab

@@ -29,19 +29,11 @@
 
 #include "algorithms/constrained2d/constrained2d.hpp"
 #include "verify/checks2d.hpp"
+#include "verify/problem_report.hpp"
 
 namespace dtlab {
 
-struct ConstrainedCheckReport2 {
-  static constexpr std::size_t kMaxStoredProblems = 1000;
-
-  bool ok = true;
-  // Each names the point, segment, edge or triangle (numbered as ConstrainedCheckOptions2 says;
-  // problems taken from checks2d.hpp are marked "(numbered from 0)"). At most
-  // kMaxStoredProblems are stored.
-  std::vector<std::string> problems;
-  std::size_t problem_count = 0;  // all problems found, stored or not
-
+struct ConstrainedCheckReport2 : ProblemReport {  // ok, problems (each naming its item), problem_count
   std::size_t points = 0;             // input and Steiner points
   std::size_t steiner_points = 0;
   std::size_t segments = 0;           // input segments whose chain was checked
@@ -52,7 +44,6 @@ struct ConstrainedCheckReport2 {
   std::size_t incircle_tests = 0;
   std::size_t rounding_checks = 0;    // Steiner points checked against an exact intersection
 
-  void add_problem(std::string problem);
   // Appends other's problems, marked as numbered from 0.
   void merge(const CheckReport2& other);
 };

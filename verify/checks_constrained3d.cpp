@@ -346,23 +346,6 @@ void Checker::run() {
   check_region_volumes3(in_, r_, o_, rep_);
 }
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-      out += buf;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
 template <class F>
 void for_each_count(const ConstrainedCheckReport3& r, F&& f) {
   f("points", r.points);
@@ -376,13 +359,13 @@ void for_each_count(const ConstrainedCheckReport3& r, F&& f) {
   f("exact_volumes", r.exact_volumes);
 }
 
-}  // namespace
-
-void ConstrainedCheckReport3::add_problem(std::string problem) {
-  ok = false;
-  ++problem_count;
-  if (problems.size() < kMaxStoredProblems) problems.push_back(std::move(problem));
+ReportCounts counts_of(const ConstrainedCheckReport3& r) {
+  ReportCounts counts;
+  for_each_count(r, [&](const char* key, std::size_t value) { counts.emplace_back(key, value); });
+  return counts;
 }
+
+}  // namespace
 
 ConstrainedCheckReport3 check_constrained3d(const ConstrainedInput3& input, const Constrained3dResult& result,
                                             const ConstrainedCheckOptions3& options) {
@@ -392,38 +375,15 @@ ConstrainedCheckReport3 check_constrained3d(const ConstrainedInput3& input, cons
 }
 
 std::string to_json(const ConstrainedCheckReport3& r) {
-  std::string out = std::string("{\"ok\":") + (r.ok ? "true" : "false") +
-                    ",\"problem_count\":" + std::to_string(r.problem_count) + ",\"counts\":{";
+  std::string volumes = ",\"region_volume6\":{";
   bool first = true;
-  for_each_count(r, [&](const char* key, std::size_t value) {
-    out += (first ? "\"" : ",\"") + std::string(key) + "\":" + std::to_string(value);
-    first = false;
-  });
-  out += "},\"region_volume6\":{";
-  first = true;
   for (const auto& [region, v6] : r.region_volume6) {
-    out += first ? "\"" : ",\"";
-    out += std::to_string(region) + "\":" + json_string(v6.to_string());
+    volumes += (first ? "\"" : ",\"") + std::to_string(region) + "\":" + json_string(v6.to_string());
     first = false;
   }
-  out += "},\"problems\":[";
-  for (std::size_t i = 0; i < r.problems.size(); ++i) {
-    if (i) out += ',';
-    out += json_string(r.problems[i]);
-  }
-  return out + "]}";
+  return report_json(r, counts_of(r), volumes + "}");
 }
 
-std::string to_text(const ConstrainedCheckReport3& r) {
-  std::string out = r.ok ? "ok:" : std::to_string(r.problem_count) + " problems:";
-  for_each_count(r, [&](const char* key, std::size_t value) {
-    out.append(" ").append(key).append("=").append(std::to_string(value));
-  });
-  out += "\n";
-  for (const std::string& p : r.problems) out += "  " + p + "\n";
-  if (r.problems.size() < r.problem_count)
-    out += "  ... and " + std::to_string(r.problem_count - r.problems.size()) + " more\n";
-  return out;
-}
+std::string to_text(const ConstrainedCheckReport3& r) { return report_text(r, counts_of(r)); }
 
 }  // namespace dtlab

@@ -33,18 +33,11 @@
 
 #include "algorithms/constrained3d/constrained3d.hpp"
 #include "kernel/exact_rational.hpp"
+#include "verify/problem_report.hpp"
 
 namespace dtlab {
 
-struct ConstrainedCheckReport3 {
-  static constexpr std::size_t kMaxStoredProblems = 1000;
-
-  bool ok = true;
-  // Each names the point, triangle, edge or tetrahedron (numbered from first_number); at most
-  // kMaxStoredProblems are stored.
-  std::vector<std::string> problems;
-  std::size_t problem_count = 0;  // all problems found, stored or not
-
+struct ConstrainedCheckReport3 : ProblemReport {  // ok, problems (each naming its item), problem_count
   std::size_t points = 0;           // input and Steiner
   std::size_t steiner_points = 0;
   std::size_t tetrahedra = 0;       // kept
@@ -58,7 +51,6 @@ struct ConstrainedCheckReport3 {
   // 6 x the meshed volume of each region (the exterior too when kept), exact.
   std::map<int, Rational> region_volume6;
 
-  void add_problem(std::string problem);
 };
 
 struct ConstrainedCheckOptions3 {
