@@ -30,7 +30,8 @@ struct ConstrainArgs {
   std::string output;
   std::string method;  // empty: the dimension's default (cdt in 2D, conforming in 3D)
   bool keep_exterior = false;
-  std::string swap_order = "queue";
+  bool remove_cavities = false;       // 3D only
+  std::string swap_order = "queue";  // 2D only
   bool stats = false;
   bool verify = false;
   bool list = false;
@@ -71,9 +72,14 @@ int run_constrain(ConstrainArgs args) {
     return list_constrained3d_methods();
   }
   if (args.input.empty()) throw InputError("give an INPUT file (.poly, .mesh; in 3D also .smesh, .off, .stl)");
-  if (is_surface_input(args.input))
+  if (is_surface_input(args.input)) {
+    if (args.swap_order != "queue")
+      throw InputError("--swap-order applies to 2D input (planar straight line graphs), not to " + args.input);
     return run_constrain3d({args.input, args.output, args.method.empty() ? "conforming" : args.method,
-                            args.keep_exterior, args.stats, args.verify});
+                            args.keep_exterior, args.remove_cavities, args.stats, args.verify});
+  }
+  if (args.remove_cavities)
+    throw InputError("--remove-cavities applies to 3D input (surfaces), not to " + args.input);
   if (args.method.empty()) args.method = "cdt";
   const GraphInput graph = read_graph(args.input);
   const PolyData2& poly = graph.poly;
@@ -166,6 +172,8 @@ void add_constrain(CLI::App& app) {
                   "2D: the order in which edges crossing a missing segment are swapped: queue (Sloan's, default) or "
                   "random (seeded, reproducible)")
       ->check(CLI::IsMember({"queue", "random"}));
+  cmd->add_flag("--remove-cavities", args->remove_cavities,
+                "3D: drop the regions bounded only by shells nested inside another shell (cavities)");
   cmd->add_flag("--keep-exterior", args->keep_exterior, "Keep the triangles outside the segments (holes are still removed)");
   cmd->add_flag("--stats", args->stats, "Print one JSON object with counts, seconds and predicate stages as the last line");
   cmd->add_flag("--verify", args->verify,

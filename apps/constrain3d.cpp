@@ -47,6 +47,7 @@ int run_constrain3d(const Constrain3dCliArgs& args) {
   Constrained3dOptions options;
   options.method = args.method;
   options.keep_exterior = args.keep_exterior;
+  options.remove_cavities = args.remove_cavities;
   Constrained3dResult result;
   try {
     result = constrained3d(input, options);

@@ -11,6 +11,7 @@ struct Constrain3dCliArgs {
   std::string output;  // empty, or OUT.mesh (Medit: Vertices, Triangles with references, Tetrahedra with regions)
   std::string method = "conforming";
   bool keep_exterior = false;
+  bool remove_cavities = false;
   bool stats = false;
   bool verify = false;
 };

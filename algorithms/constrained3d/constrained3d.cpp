@@ -117,6 +117,15 @@ Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrai
       removed[comp.component[t]] = true;
     }
   }
+  if (options.remove_cavities) {
+    const std::vector<bool> cavity =
+        cavity_components(c.mesh, comp, walls, r.triangle_face, surface_shells(input.triangles));
+    std::size_t removed_cavities = 0;
+    for (std::uint32_t k = 0; k < comp.count; ++k)
+      if (cavity[k] && !removed[k]) removed[k] = true, ++removed_cavities;
+    r.messages.push_back(std::to_string(removed_cavities) +
+                         " cavity region(s) removed (bounded only by shells nested inside another)");
+  }
   std::vector<int> attribute(comp.count, 0);
   std::vector<bool> seeded(comp.count, false);
   for (std::size_t i = 0; i < input.regions.size(); ++i) {

@@ -48,6 +48,9 @@ struct ConstrainedInput3 {
 struct Constrained3dOptions {
   std::string method = "conforming";  // a name from constrained3d_methods()
   bool keep_exterior = false;         // keep the tetrahedra outside every closed surface
+  // Drop the cavities: the regions bounded only by shells (edge-connected parts of the input
+  // surface) that do not touch the exterior, i.e. nested inside another shell.
+  bool remove_cavities = false;
   // The most Steiner points a method may add, as a multiple of (points + triangles); past it
   // constrained3d throws InputError naming the input triangle or edge being recovered.
   std::uint32_t steiner_limit_factor = 200;

@@ -2,6 +2,7 @@
 #include "algorithms/constrained3d/regions.hpp"
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "kernel/predicates.hpp"
@@ -43,6 +44,57 @@ TetrahedronComponents tetrahedron_components(const Tetrahedralization3& mesh,
     }
   }
   return c;
+}
+
+std::vector<std::uint32_t> surface_shells(std::span<const std::array<std::uint32_t, 3>> triangles) {
+  // Union-find over triangles, joined through each edge's first triangle.
+  std::vector<std::uint32_t> parent(triangles.size());
+  for (std::uint32_t t = 0; t < parent.size(); ++t) parent[t] = t;
+  const auto root = [&](std::uint32_t t) {
+    while (parent[t] != t) t = parent[t] = parent[parent[t]];
+    return t;
+  };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> first_on_edge;
+  for (std::uint32_t t = 0; t < triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = triangles[t][i], b = triangles[t][(i + 1) % 3];
+      const auto [it, added] = first_on_edge.emplace(std::pair{std::min(a, b), std::max(a, b)}, t);
+      if (!added) parent[root(t)] = root(it->second);
+    }
+  std::vector<std::uint32_t> shell(triangles.size());
+  std::map<std::uint32_t, std::uint32_t> number;
+  for (std::uint32_t t = 0; t < triangles.size(); ++t)
+    shell[t] = number.emplace(root(t), static_cast<std::uint32_t>(number.size())).first->second;
+  return shell;
+}
+
+std::vector<bool> cavity_components(const Tetrahedralization3& mesh, const TetrahedronComponents& components,
+                                    std::span<const std::array<std::uint32_t, 3>> walls,
+                                    std::span<const std::uint32_t> wall_triangle, std::span<const std::uint32_t> shell) {
+  std::map<std::array<std::uint32_t, 3>, std::uint32_t> wall_shell;
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    auto w = walls[k];
+    std::sort(w.begin(), w.end());
+    wall_shell.emplace(w, shell[wall_triangle[k]]);
+  }
+  const std::uint32_t shells = shell.empty() ? 0 : *std::max_element(shell.begin(), shell.end()) + 1;
+  std::vector<bool> outer(shells, false);  // touches the exterior
+  std::vector<std::vector<std::uint32_t>> bounded_by(components.count);
+  for (std::uint32_t t = 0; t < mesh.tetrahedron_count(); ++t)
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      auto f = mesh.facet_vertices(T3::facet(t, i));
+      std::sort(f.begin(), f.end());
+      const auto it = wall_shell.find(f);
+      if (it == wall_shell.end()) continue;
+      const std::uint32_t k = components.component[t];
+      if (k == components.exterior) outer[it->second] = true;
+      bounded_by[k].push_back(it->second);
+    }
+  std::vector<bool> cavity(components.count, false);
+  for (std::uint32_t k = 0; k < components.count; ++k)
+    cavity[k] = k != components.exterior &&
+                std::none_of(bounded_by[k].begin(), bounded_by[k].end(), [&](std::uint32_t s) { return outer[s]; });
+  return cavity;
 }
 
 std::uint32_t tetrahedron_containing(const Tetrahedralization3& mesh, const Vec3& p) {

@@ -333,6 +333,44 @@ TEST(Constrained3d, TwoStackedBoxes) {
   EXPECT_EQ(volumes, (std::multiset<std::string>{"24", "6"}));
 }
 
+// Shells inside shells: a cube [0,6]^3 holding a cube [1,5]^3 holding a cube [2,4]^3, one of
+// them turned inside out (orientation is not trusted). Three regions; --remove-cavities keeps
+// only the outer shell's region (its volume 6^3 - 4^3), the two nested ones being cavities.
+// A second cube beside the first is a shell of its own that touches the exterior: kept.
+TEST(Constrained3d, NestedShellsAndRemoveCavities) {
+  ClosedSurface3 s;
+  const auto add = [&s](const ClosedSurface3& c, bool flip) {
+    const auto base = static_cast<std::uint32_t>(s.points.size());
+    s.points.insert(s.points.end(), c.points.begin(), c.points.end());
+    for (auto t : c.triangles) {
+      if (flip) std::swap(t[1], t[2]);
+      s.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    }
+  };
+  add(cube(0, 6), false);
+  add(cube(1, 5), true);
+  add(cube(2, 4), false);
+  add(cube(0, 1, {8, 0, 0}), false);
+  const ConstrainedInput3 input{.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {},
+                                .regions = {}};
+  for (const bool remove : {false, true}) {
+    SCOPED_TRACE(remove ? "remove cavities" : "keep cavities");
+    const Constrained3dResult r = constrained3d(input, {.remove_cavities = remove});
+    const ConstrainedCheckReport3 report = check_constrained3d(input, r, {});
+    ASSERT_TRUE(report.ok) << to_text(report);
+    std::multiset<std::string> volumes;
+    for (const auto& [region, v6] : report.region_volume6) volumes.insert(v6.to_string());
+    if (remove) {
+      EXPECT_EQ(r.region_count, 2u);
+      EXPECT_EQ(volumes, (std::multiset<std::string>{std::to_string(6 * (216 - 64)), "6"}));
+    } else {
+      EXPECT_EQ(r.region_count, 4u);
+      EXPECT_EQ(volumes,
+                (std::multiset<std::string>{std::to_string(6 * (216 - 64)), std::to_string(6 * (64 - 8)), "48", "6"}));
+    }
+  }
+}
+
 TEST(Constrained3d, FaceRecoveryBetweenTwoNearbyShells) {
   // A big cube with a thin tetrahedron just outside the middle of one face and a hole just
   // inside it: no sphere through that face is empty, so its edges alone do not bring it back.
