@@ -356,25 +356,38 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
       }
       return within_rounding_bound_of_segment(P[d], A, B) || on_own_chord(c, d);
     };
+    // Depth-first, forward steps only: first along this segment's own edges alone (where
+    // segments share pieces or run a hair apart, a search free to change label may take a
+    // neighbour's chain and leave this one's Steiner points off every chain found), then, if that
+    // finds no chain (a piece shared with a lower-numbered segment carries that one's label),
+    // along any admissible edge, this segment's own tried first.
     bool found = false;
-    stack.assign(1, a);
-    stamp[a] = mark;
-    while (!stack.empty() && !found) {
-      const std::uint32_t c = stack.back();
-      stack.pop_back();
-      for (std::uint32_t j = first[c]; j < first[c + 1]; ++j) {
-        const auto [d, label] = next[j];
-        if (stamp[d] == mark || !forward(P[c], P[d], A, B)) continue;
-        if (d == b) {
-          parent[b] = c;
-          found = true;
-          break;
+    for (const bool own_only : {true, false}) {
+      const std::uint32_t search_mark = 2 * mark + (own_only ? 0u : 1u);
+      stack.assign(1, a);
+      stamp[a] = search_mark;
+      while (!stack.empty() && !found) {
+        const std::uint32_t c = stack.back();
+        stack.pop_back();
+        // Other segments' edges pushed first, this one's last: popped first.
+        for (const bool own_edges : {false, true}) {
+          if (own_only && !own_edges) continue;
+          for (std::uint32_t j = first[c]; j < first[c + 1] && !found; ++j) {
+            const auto [d, label] = next[j];
+            if ((label == k) != own_edges || stamp[d] == search_mark || !forward(P[c], P[d], A, B)) continue;
+            if (d == b) {
+              parent[b] = c;
+              found = true;
+              break;
+            }
+            if (!admissible(c, d, label)) continue;
+            stamp[d] = search_mark;
+            parent[d] = c;
+            stack.push_back(d);
+          }
         }
-        if (!admissible(c, d, label)) continue;
-        stamp[d] = mark;
-        parent[d] = c;
-        stack.push_back(d);
       }
+      if (found) break;
     }
     if (!found) {
       r.add_problem(name.segment(k) + ": no chain of constrained edges from " + name.point(a) + " to " +

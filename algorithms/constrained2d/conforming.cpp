@@ -19,6 +19,10 @@ namespace dtlab {
 
 namespace {
 
+// A piece shorter than this many ulps of its coordinates is not split: its rounded split
+// points would bend the chain by a sizeable fraction of the piece.
+constexpr double kShortestSplit = 2;
+
 struct Piece {
   std::uint32_t a, b, segment;
 };
@@ -75,6 +79,16 @@ void constrained2d_conforming(const Constrained2dContext& context) {
       const ConstrainedMesh2::SegmentWalk walk = mesh.walk(p.a, p.b);
       std::uint32_t w = walk.stop;
       if (w == p.b) {
+        {
+          const Vec2 A = mesh.point(p.a), B = mesh.point(p.b);
+          const double unit = std::max({ulp(A.x), ulp(A.y), ulp(B.x), ulp(B.y)});
+          if (std::max(std::fabs(B.x - A.x), std::fabs(B.y - A.y)) < kShortestSplit * unit)
+            throw InputError("conforming: segment " + context.number(p.segment) + " cannot be split further: its piece " +
+                                 context.number(p.a) + "-" + context.number(p.b) + " is shorter than " +
+                                 std::to_string(static_cast<int>(kShortestSplit)) +
+                                 " ulps of its coordinates (points closer than the doubles can separate)",
+                             {p.segment});
+        }
         const RoundedPoint2 m =
             split_point(mesh.point(p.a), mesh.point(p.b), p.a < corners, p.b < corners);
         if (!coordinate_in_range(m.point.x) || !coordinate_in_range(m.point.y))

@@ -159,17 +159,14 @@ TEST(CgalConstrained2d, NearlyConcurrentCrossingsCgalFoldsInDoublesDtlabDoesNot)
         ++ours_not_converged;
         continue;
       }
-      // Valid in doubles, always. The chain checks too, except (counted) for "conforming" in a
-      // cluster: its split points on pieces a few ulps long bend the chains by more than the
-      // checker allows (one rounding bound of the segment or of a piece between older points).
+      // Valid in doubles, always, and every check passes ("conforming" refuses, with
+      // InputError, to split a piece whose ends are adjacent doubles: counted as refused).
       const ConstrainedCheckOptions2 check{.method = method, .keep_exterior = true};
       const ConstrainedCheckReport2 report = check_constrained_validity2(ci, mine, check);
       ASSERT_TRUE(report.ok) << "trial " << trial << " " << method << ": " << to_text(report);
       const ConstrainedCheckReport2 full = verify_constrained2d(ci, mine, check);
       ours_chains_flagged += !full.ok;
-      if (std::string(method) != "conforming") {
-        EXPECT_TRUE(full.ok) << "trial " << trial << " " << method << ": " << to_text(full);
-      }
+      EXPECT_TRUE(full.ok) << "trial " << trial << " " << method << ": " << to_text(full);
       ++ours_valid;
       if (std::string(method) == "cdt") ours_steiner += mine.crossing_steiner_points;
     }
@@ -223,9 +220,17 @@ TEST(CgalConstrained2d, NearlyConcurrentSegmentsResolve) {
                                {-0.37009215130567419, 0.091903349182931957}};
   const std::vector<Segment> S = {{4, 5}, {6, 7}, {8, 9}, {10, 11}, {12, 13}};
   const ConstrainedInput2 ci{.points = P, .segments = S, .segment_markers = {}, .holes = {}, .regions = {}};
-  for (const char* method : {"cdt", "swap", "conforming"}) {
+  for (const char* method : {"cdt", "swap"}) {
     const Constrained2dResult mine = constrained2d(ci, {.method = method, .keep_exterior = true});
     EXPECT_TRUE(verify_constrained2d(ci, mine, {.method = method, .keep_exterior = true}).ok) << method;
+  }
+  // "conforming" would have to split a piece between crossings one ulp apart: it says so.
+  try {
+    const Constrained2dResult mine = constrained2d(ci, {.method = "conforming", .keep_exterior = true});
+    EXPECT_TRUE(verify_constrained2d(ci, mine, {.method = "conforming", .keep_exterior = true}).ok);
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot be split further"), std::string::npos) << e.what();
+    EXPECT_FALSE(e.items().empty());
   }
 }
 

@@ -529,6 +529,30 @@ TEST(Constrained2dRegression, ChainsThroughRoundedCrossingsEveryMethod) {
   expect_chains_everywhere(pts, segs);
 }
 
+// fuzz/constrained2d_fuzz (corpus: regression-conforming-two-chains-a-hair-apart): segments
+// 0-9 and 0-14 leave vertex 0 a hair apart, and "conforming" splits both on the same shells, so
+// their chains share pieces (labelled 0) and run side by side. The chain check, free to change
+// label, followed segment 0's chain for segment 5 and left segment 5's own Steiner points on no
+// chain found; it now tries a segment's own edges first.
+TEST(Constrained2dRegression, ChainsAHairApartKeepTheirOwnPoints) {
+  const std::vector<Vec2> pts = {
+      {-0x1.fffffffffffffp+1, -0x1p+2}, {-0x1.4p+1, 0x1p+0},
+      {0x1p+0, -0x1.3fffffffffffep+1}, {0x1p-1, 0x1.c000000000003p+1},
+      {-0x1.ffffffffffffep-2, 0x0p+0}, {-0x1.ffffffffffffep-2, -0x1.bfffffffffffdp+1},
+      {-0x1.bfffffffffffep+1, -0x1.7ffffffffffffp+0}, {0x1p+1, 0x1.8p+1},
+      {0x1p+0, 0x1.8000000000002p+0}, {0x1.8000000000003p+1, 0x1.0000000000002p+0},
+      {-0x1.cp+1, -0x1.fffffffffffffp-2}, {0x1.4p+1, -0x1p+2},
+      {-0x1.7fffffffffffdp+0, -0x1.3fffffffffffep+1}, {0x1.0000000000002p+0, std::ldexp(1.0, -142)},
+      {0x1.7ffffffffffffp+1, 0x1.0000000000002p+0}, {0x1.4000000000002p+1, -0x1.4p+1},
+      {0x1.8000000000001p+0, -0x1.fffffffffffffp+1}, {-0x1.7fffffffffffdp+1, -0x1.fffffffffffffp-1},
+      {0x1.8000000000001p+1, -0x1p+2}, {-0x1.7ffffffffffffp+1, 0x1.4p+1},
+      {-0x1.ffffffffffffep+0, -0x1.7ffffffffffffp+1}, {0x1.4000000000002p+1, 0x1.0000000000001p-1},
+      {std::ldexp(1.0, -142), 0x1p+1}, {0x1.0000000000003p+1, -0x1.7fffffffffffep+0}
+  };
+  const std::vector<Segment> segs = {{0, 9}, {19, 2}, {7, 6}, {11, 21}, {15, 3}, {0, 14}, {9, 13}, {4, 1}, {22, 16}, {5, 12}, {7, 20}, {0, 8}};
+  expect_chains_everywhere(pts, segs);
+}
+
 // --- generators ---------------------------------------------------------------------------------
 
 // A random star-shaped polygon around c (angles sorted, radii random), optionally with a
