@@ -81,15 +81,18 @@ bool strictly_between(const Vec2& a, const Vec2& b, const Vec2& p) {
   return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
 }
 
-// (d - c) . (b - a) > 0, exactly. The rounded differences have the right signs, so do their
-// products; only products of opposite signs need rationals.
-bool forward(const Vec2& c, const Vec2& d, const Vec2& a, const Vec2& b) {
+// The sign of (d - c) . (b - a), exactly. The rounded differences have the right signs, so do
+// their products; only products of opposite signs need rationals.
+Sign progress(const Vec2& c, const Vec2& d, const Vec2& a, const Vec2& b) {
   const double p1 = (d.x - c.x) * (b.x - a.x), p2 = (d.y - c.y) * (b.y - a.y);
-  if (p1 >= 0 && p2 >= 0) return p1 > 0 || p2 > 0;
-  if (p1 <= 0 && p2 <= 0) return false;
+  if (p1 >= 0 && p2 >= 0) return p1 > 0 || p2 > 0 ? Sign::Positive : Sign::Zero;
+  if (p1 <= 0 && p2 <= 0) return Sign::Negative;
   const Rational dot = (Rational(d.x) - Rational(c.x)) * (Rational(b.x) - Rational(a.x)) +
                        (Rational(d.y) - Rational(c.y)) * (Rational(b.y) - Rational(a.y));
-  return dot.sign() == Sign::Positive;
+  return dot.sign();
+}
+bool forward(const Vec2& c, const Vec2& d, const Vec2& a, const Vec2& b) {
+  return progress(c, d, a, b) == Sign::Positive;
 }
 
 // p within its rounding bound of an exact point of the closed segment AB (kernel/rounding.hpp).
@@ -356,7 +359,8 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
       }
       return within_rounding_bound_of_segment(P[d], A, B) || on_own_chord(c, d);
     };
-    // Depth-first, forward steps only: first along this segment's own edges alone (where
+    // Depth-first, no step backwards (a step across AB is allowed: two stops at the same place
+    // along AB, a hot point and a vertex whose rounding boxes both meet it), first along this segment's own edges alone (where
     // segments share pieces or run a hair apart, a search free to change label may take a
     // neighbour's chain and leave this one's Steiner points off every chain found), then, if that
     // finds no chain (a piece shared with a lower-numbered segment carries that one's label),
@@ -374,7 +378,9 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
           if (own_only && !own_edges) continue;
           for (std::uint32_t j = first[c]; j < first[c + 1] && !found; ++j) {
             const auto [d, label] = next[j];
-            if ((label == k) != own_edges || stamp[d] == search_mark || !forward(P[c], P[d], A, B)) continue;
+            if ((label == k) != own_edges || stamp[d] == search_mark ||
+                progress(P[c], P[d], A, B) == Sign::Negative)
+              continue;
             if (d == b) {
               parent[b] = c;
               found = true;

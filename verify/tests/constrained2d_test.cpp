@@ -462,6 +462,25 @@ TEST(Constrained2dRegression, CrossingRoundsOntoAnInputVertex) {
   }
 }
 
+// fuzz/constrained2d_fuzz input (CI run of 2026-11-23, reduced to its two segments):
+// AhgA+AH4APsAAnsAAAAC+QP5Av0BBKwGAAIAAwIGAwIC+QD/AQUA+AD9UAAAAFMAAABcAAAAAvsAAwH4AfoD/gEGAfgA+gEFAPwC+gEFAgEBAAMEAAQD/QIACRMCBwYLFQ8DAA4JDQQBFhAFDAcUAAg=
+// Segment 3 ends at vertex 3, an ulp left of the vertical segment 0, which it crosses just
+// before: the crossing rounds onto segment 0's line beside vertex 3, and vertex 3's rounding box
+// touches segment 0 too. Both stops lie at the same place along segment 0, so its chain steps
+// across it between them; the checker wanted every step strictly forward and found no chain.
+TEST(Constrained2dRegression, TwoStopsAtTheSamePlaceAlongASegment) {
+  const std::vector<Vec2> pts = {{-0x1.fffffffffffffp+1, -4},
+                                 {-0x1.fffffffffffffp+1, -0x1.7fffffffffffdp+1},
+                                 {0x1.3000000000002p+3, 0x1.c000000000002p+1},
+                                 {-4, -0x1.7ffffffffffffp+1}};
+  const std::vector<Segment> segs = {{0, 1}, {2, 3}};
+  for (const std::string& method : method_names()) {
+    const auto r = run(pts, segs, method);
+    expect_valid(pts, segs, method, r, false);
+    EXPECT_EQ(r.crossing_steiner_points, 1u) << method;
+  }
+}
+
 // fuzz/constrained2d_fuzz input (base64)
 // AhgA+AH4APsAAgACAPsCAQD4A/8ABAL/AvkD+QL9AQQABgACAAMCBgMCAvkBAgEFAPgA/QP7AgIC+wIGAQACBQL7AAMB+AH6A/4BBgH4APoBBQD8AvoBBQIBAQIDBAAEA/0CAAkTAgIGCxUPAhIOCQ0EARYQBQwHFAAI
 // failed on conforming: segment 4 (15-2) had no chain, Steiner point 45 on no chain.
