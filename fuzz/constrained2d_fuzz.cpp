@@ -117,19 +117,6 @@ Graph decode(const std::uint8_t* data, std::size_t size) {
   __builtin_trap();
 }
 
-// verify_constrained2d less its chain check (see the open bug in LLVMFuzzerTestOneInput).
-dtlab::ConstrainedCheckReport2 verify_without_chains(const dtlab::ConstrainedInput2& input,
-                                                     const dtlab::Constrained2dResult& result,
-                                                     const dtlab::ConstrainedCheckOptions2& options) {
-  dtlab::ConstrainedCheckReport2 r = dtlab::check_constrained_validity2(input, result, options);
-  if (!r.ok || r.triangles == 0) return r;
-  const dtlab::ConstrainedCheckReport2 delaunay = dtlab::check_locally_delaunay2(result, false, options);
-  r.ok = delaunay.ok;
-  r.problem_count += delaunay.problem_count;
-  r.problems.insert(r.problems.end(), delaunay.problems.begin(), delaunay.problems.end());
-  return r;
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -147,15 +134,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       fail(g, method + " threw: " + e.what());
     }
     const dtlab::ConstrainedCheckOptions2 options{.method = method, .keep_exterior = g.keep_exterior};
-    // Open bug (skipped narrowly): "conforming" splits pieces at rounded points (midpoints,
-    // Ruppert's shells); where pieces are a few ulps long (clusters of crossings) or shells run
-    // down many binades towards a vertex near the segment, the chains bend by more than the
-    // checker allows and it finds no chain ("no chain of constrained edges", "lies on no
-    // segment's chain"); the mesh stays valid and Delaunay. On results of "conforming" that split,
-    // only validity and the Delaunay property are checked; "cdt" and "swap" get every check.
-    const bool skip_chains = method == "conforming" && result.split_steiner_points > 0;
-    const dtlab::ConstrainedCheckReport2 report =
-        skip_chains ? verify_without_chains(input, result, options) : dtlab::verify_constrained2d(input, result, options);
+    const dtlab::ConstrainedCheckReport2 report = dtlab::verify_constrained2d(input, result, options);
     if (!report.ok) fail(g, method + ": verify_constrained2d: " + dtlab::to_text(report));
   }
   return 0;

@@ -254,6 +254,25 @@ ConstrainedCheckReport2 check_constrained_validity2(const ConstrainedInput2& inp
     if (seen[i] == seen[i - 1])
       r.add_problem("constrained edges: " + name.edge(std::uint32_t(seen[i] >> 32), std::uint32_t(seen[i])) +
                     " is listed twice");
+  // Shared edges: constrained edges, each further segment valid, higher than the edge's own.
+  std::map<std::uint64_t, std::uint32_t> own;
+  for (const ConstrainedEdge2& e : result.constrained_edges) own.emplace(edge_key(e.a, e.b), e.segment);
+  for (const ConstrainedEdge2& e : result.shared_edges) {
+    const auto it = e.a < e.b ? own.find(edge_key(e.a, e.b)) : own.end();
+    if (it == own.end()) {
+      r.add_problem("shared edges: " + name.edge(e.a, e.b) + " is not a constrained edge");
+      continue;
+    }
+    if (e.segment >= input.segments.size() || e.segment <= it->second) {
+      r.add_problem("shared edges: " + name.edge(e.a, e.b) + " names " + name.segment(e.segment) +
+                    ", not a segment numbered above its own " + name.segment(it->second));
+      continue;
+    }
+    const int marker = input.segment_markers.empty() ? 0 : input.segment_markers[e.segment];
+    if (e.marker != marker)
+      r.add_problem("shared edges: " + name.edge(e.a, e.b) + " has marker " + std::to_string(e.marker) + ", its " +
+                    name.segment(e.segment) + " has " + std::to_string(marker));
+  }
 
   // The domain: some of the triangles, each once, bounded by constrained (or kept hull) edges.
   std::vector<TriangleIds> domain;
@@ -305,14 +324,17 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
   // Adjacency of the constrained edges (compressed rows): neighbour and segment id.
   std::vector<std::uint32_t> first(P.size() + 1, 0);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> next;
-  for (const ConstrainedEdge2& e : result.constrained_edges)
-    if (e.a < P.size() && e.b < P.size()) ++first[e.a + 1], ++first[e.b + 1];
+  // Shared edges once per further segment.
+  for (const auto* edges : {&result.constrained_edges, &result.shared_edges})
+    for (const ConstrainedEdge2& e : *edges)
+      if (e.a < P.size() && e.b < P.size()) ++first[e.a + 1], ++first[e.b + 1];
   for (std::size_t v = 0; v < P.size(); ++v) first[v + 1] += first[v];
   next.resize(first.back());
   {
     std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (const ConstrainedEdge2& e : result.constrained_edges)
-      if (e.a < P.size() && e.b < P.size()) next[fill[e.a]++] = {e.b, e.segment}, next[fill[e.b]++] = {e.a, e.segment};
+    for (const auto* edges : {&result.constrained_edges, &result.shared_edges})
+      for (const ConstrainedEdge2& e : *edges)
+        if (e.a < P.size() && e.b < P.size()) next[fill[e.a]++] = {e.b, e.segment}, next[fill[e.b]++] = {e.a, e.segment};
   }
 
   std::vector<std::pair<std::uint32_t, std::uint32_t>> steiner_on;  // (Steiner vertex, segment)

@@ -60,8 +60,10 @@ void constrained2d_conforming(const Constrained2dContext& context) {
   std::vector<Piece> pieces;
   const auto size = static_cast<std::uint32_t>(tri.vertices().size());
   for (std::uint32_t h = 0; h < size; ++h)
-    if (h < tri.twin(h) && mesh.constraint(h) != ConstrainedMesh2::kNone)
+    if (h < tri.twin(h) && mesh.constraint(h) != ConstrainedMesh2::kNone) {
       pieces.push_back({tri.origin(h), tri.destination(h), mesh.constraint(h)});
+      for (const std::uint32_t s : mesh.shared_segments(h)) pieces.push_back({tri.origin(h), tri.destination(h), s});
+    }
   mesh.clear_constraints();
   mesh.lawson(mesh.take_changed_edges(), false);  // the rest is still Delaunay
 
@@ -126,8 +128,7 @@ void constrained2d_conforming(const Constrained2dContext& context) {
   for (const Piece& p : pieces) {
     const std::uint32_t h = mesh.find_half_edge(p.a, p.b);
     DTLAB_ASSERT(h != ConstrainedMesh2::kNone);
-    const std::uint32_t existing = mesh.constraint(h);
-    mesh.set_constraint(h, std::min(existing, p.segment));
+    mesh.add_constraint(h, p.segment);
   }
 }
 

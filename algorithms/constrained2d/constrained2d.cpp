@@ -106,6 +106,8 @@ Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrai
     }
     std::sort(result.constrained_edges.begin(), result.constrained_edges.end(),
               [](const ConstrainedEdge2& x, const ConstrainedEdge2& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
+    for (const auto& [a, b, s] : mesh.shared_constraints())
+      result.shared_edges.push_back({a, b, s, input.segment_markers.empty() ? 0 : input.segment_markers[s]});
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.predicate_stats = predicate_stats() - before;

@@ -47,12 +47,54 @@ ConstrainedMesh2::ConstrainedMesh2(Triangulation2& tri) : tri_(tri) {
     }
 }
 
+namespace {
+std::pair<std::uint32_t, std::uint32_t> edge_key(std::uint32_t a, std::uint32_t b) {
+  return {std::min(a, b), std::max(a, b)};
+}
+}  // namespace
+
 void ConstrainedMesh2::set_constraint(std::uint32_t h, std::uint32_t segment) noexcept {
   cons_[h] = segment;
   cons_[tri_.twin(h)] = segment;
+  if (!shared_.empty()) shared_.erase(edge_key(tri_.origin(h), tri_.destination(h)));
 }
 
-void ConstrainedMesh2::clear_constraints() noexcept { std::fill(cons_.begin(), cons_.end(), kNone); }
+std::uint32_t ConstrainedMesh2::add_constraint(std::uint32_t h, std::uint32_t segment) {
+  const std::uint32_t existing = cons_[h];
+  if (existing == segment) return existing;
+  if (existing == kNone) {
+    set_constraint(h, segment);
+    return existing;
+  }
+  std::vector<std::uint32_t>& others = shared_[edge_key(tri_.origin(h), tri_.destination(h))];
+  const std::uint32_t kept = std::min(existing, segment), other = std::max(existing, segment);
+  cons_[h] = cons_[tri_.twin(h)] = kept;
+  const auto at = std::lower_bound(others.begin(), others.end(), other);
+  if (at == others.end() || *at != other) others.insert(at, other);
+  if (kept != existing) {  // the old constraint joins the shared ones; the new one is not among them
+    const auto old_at = std::lower_bound(others.begin(), others.end(), kept);
+    if (old_at != others.end() && *old_at == kept) others.erase(old_at);
+  }
+  return existing;
+}
+
+std::vector<std::uint32_t> ConstrainedMesh2::shared_segments(std::uint32_t h) const {
+  if (shared_.empty()) return {};
+  const auto it = shared_.find(edge_key(tri_.origin(h), tri_.destination(h)));
+  return it == shared_.end() ? std::vector<std::uint32_t>{} : it->second;
+}
+
+std::vector<std::array<std::uint32_t, 3>> ConstrainedMesh2::shared_constraints() const {
+  std::vector<std::array<std::uint32_t, 3>> out;
+  for (const auto& [key, segments] : shared_)
+    for (const std::uint32_t s : segments) out.push_back({key.first, key.second, s});
+  return out;
+}
+
+void ConstrainedMesh2::clear_constraints() noexcept {
+  std::fill(cons_.begin(), cons_.end(), kNone);
+  shared_.clear();
+}
 
 std::uint32_t ConstrainedMesh2::index_of(std::uint32_t t, std::uint32_t v) const noexcept {
   for (std::uint32_t i = 0; i < 3; ++i)
@@ -261,8 +303,18 @@ std::uint32_t ConstrainedMesh2::insert(const Vec2& p, const Location& where, std
     tri_.link(enters[j], it->second);
   }
   if (split_segment != kNone) {
-    set_constraint(find_half_edge(x, split_u), split_segment);
-    set_constraint(find_half_edge(x, split_v), split_segment);
+    std::vector<std::uint32_t> others;
+    if (!shared_.empty()) {
+      if (const auto it = shared_.find(edge_key(split_u, split_v)); it != shared_.end()) {
+        others = std::move(it->second);
+        shared_.erase(it);
+      }
+    }
+    for (const std::uint32_t end : {split_u, split_v}) {
+      const std::uint32_t h = find_half_edge(x, end);
+      set_constraint(h, split_segment);
+      for (const std::uint32_t s : others) add_constraint(h, s);
+    }
   }
   return x;
 }

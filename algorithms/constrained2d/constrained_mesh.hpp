@@ -8,7 +8,10 @@
 // Every loop is bounded; a broken structure gives InternalError, never a hang.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <map>
+#include <utility>
 #include <vector>
 
 #include "kernel/vec.hpp"
@@ -33,6 +36,15 @@ class ConstrainedMesh2 {
   std::uint32_t constraint(std::uint32_t h) const noexcept { return cons_[h]; }
   // Sets (or clears, with kNone) the constraint on h and its twin.
   void set_constraint(std::uint32_t h, std::uint32_t segment) noexcept;
+  // Constrains h by `segment` as well: an edge covered by several segments (overlapping
+  // collinear segments, or chains that share pieces after rounding) keeps the lowest-numbered
+  // one as its constraint and the others as its shared segments. Returns the constraint h had.
+  std::uint32_t add_constraint(std::uint32_t h, std::uint32_t segment);
+  // The segments other than constraint(h) that share edge h, ascending (usually none).
+  std::vector<std::uint32_t> shared_segments(std::uint32_t h) const;
+  // Every edge with shared segments: {a, b, segment}, a < b, one entry per further segment.
+  std::vector<std::array<std::uint32_t, 3>> shared_constraints() const;
+  // Clears every constraint, shared ones included.
   void clear_constraints() noexcept;
 
   // The half-edge u -> v, or kNone if uv is not an edge. O(degree of u).
@@ -62,7 +74,7 @@ class ConstrainedMesh2 {
   Location locate(const Vec2& p, std::uint32_t start);
 
   // Appends p as a new vertex at `where` (not Where::Vertex) and retriangulates its cavity
-  // without flips; an edge split carries its constraint to both halves. Returns the new vertex
+  // without flips; an edge split carries its constraint (and shared segments) to both halves. Returns the new vertex
   // id; `outward` receives the half-edges opposite the new vertex (for Lawson).
   std::uint32_t insert(const Vec2& p, const Location& where, std::vector<std::uint32_t>* outward = nullptr);
 
@@ -93,6 +105,9 @@ class ConstrainedMesh2 {
 
   Triangulation2& tri_;
   std::vector<std::uint32_t> cons_;  // per half-edge
+  // Shared segments by edge (vertex pair, smaller first); an entry lives while its edge does
+  // (an edge split moves its segments to both halves) or until set_constraint clears the edge.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> shared_;
   std::vector<std::uint32_t> vtri_;  // per vertex
   std::vector<std::uint8_t> in_cavity_;
   std::vector<std::uint32_t> written_;  // triangles written since take_changed_edges

@@ -239,13 +239,13 @@ class SegmentResolver {
         if (hit == walk.crossed.end()) {
           const std::uint32_t h =
               enforce_by_swaps(mesh_, p.a, walk.stop, walk.crossed, context_.options.random_swaps ? &rng_ : nullptr);
-          const std::uint32_t existing = mesh_.constraint(h);
+          const std::uint32_t existing = mesh_.add_constraint(h, p.segment);
           if (existing != kNone && existing != p.segment) {
             context_.note("segments " + context_.number(existing) + " and " + context_.number(p.segment) +
                           " overlap along edge " + context_.number(p.a) + "-" + context_.number(walk.stop) +
-                          "; the edge keeps segment " + context_.number(std::min(existing, p.segment)));
+                          "; the edge is constrained by both (its marker is segment " +
+                          context_.number(std::min(existing, p.segment)) + "'s)");
           }
-          mesh_.set_constraint(h, std::min(existing, p.segment));
           if (walk.stop != p.b) {
             if (walk.stop < input_points_)
               context_.note("segment " + context_.number(p.segment) + " passes through vertex " +
@@ -312,9 +312,13 @@ class SegmentResolver {
     if (w != u && w != v) {
       const std::uint32_t e = mesh_.find_half_edge(u, v);
       if (e != kNone && mesh_.constraint(e) == j) {  // not split by the insertion: reroute through w
+        std::vector<std::uint32_t> segments = mesh_.shared_segments(e);
+        segments.push_back(j);
         mesh_.set_constraint(e, kNone);
-        stack.push_back({w, v, j});
-        stack.push_back({u, w, j});
+        for (const std::uint32_t s : segments) {
+          stack.push_back({w, v, s});
+          stack.push_back({u, w, s});
+        }
       }
     }
     return true;

@@ -462,6 +462,32 @@ TEST(Constrained2dRegression, CrossingRoundsOntoAnInputVertex) {
   }
 }
 
+// fuzz/constrained2d_fuzz input (corpus: regression-shared-pieces). Segments 2-4 and 8-4 run from
+// near the origin to vertex 4 near (2e30, 3e36), within an ulp of each other over most of their
+// length: "conforming" splits both by concentric shells, and a rounded split point of one lies
+// exactly on a piece of the other, so the two chains share pieces. Each shared edge kept only
+// the lower segment, and the checker found no chain for segment 3 (2-4) and its shell points on
+// no chain: an edge now carries every segment that covers it (Constrained2dResult::shared_edges).
+TEST(Constrained2dRegression, ChainsSharingPiecesKeepEverySegment) {
+  const std::vector<Vec2> pts = {
+      {0x1.6974f162d388p-8, -0x1.480d51ae4f299p-33}, {0x1.4feb67188d137p-11, 0x1.ac4b6b7fc6a2p-6},
+      {0x1.fa86f75a8a8ecp-2, 0x1.62472e512fa8p-4}, {0x1.593aa335b8148p-1, -0x1.f00040018021p+0},
+      {0x1.c800000174p+100, 0x1.3fff800000085p+121}, {-0x1.127f8ffffff04p+93, 0x1.42403fff80002p-139},
+      {0x1.004002ff902ffp+113, 0x1.02ff9020200ffp-107}, {0x1.140000011cp+108, 0x1.045000002fdp+129},
+      {0x1p+9, 0x1p-11}, {0x1.20f2f150b0602p+129, 0x1.014070c051016p-43},
+      {0x1.1e5d92a213087p-1, 0x1.dbb60abe4828p+107}, {-0x1p+109, 0x1.01813090002fdp-107},
+      {0x1.8083fffffcp+108, -0x1.ff00300010ap-127}, {-0x1.9340101006669p-94, 0x1.50400030302f3p-91},
+      {0x1.210080e0e0c0cp+113, 0x1.63bff0f02p+95}, {0x1.10100f3039699p-139, 0x1.5050400030302p+137},
+      {0x1.210080e0e0c0cp+113, -0x1.1p-115}, {-0x1.f1309fe9c5fe2p-100, 0x1.feae84ed19786p+124},
+      {0x1.fe132b03bb924p-48, 0x1.babb37a05a579p-1}, {0x1.5699581423254p-1, 0x1.ce97285111b9cp-2}};
+  const std::vector<Segment> segs = {{0, 8}, {8, 4}, {8, 19}, {2, 4}, {11, 2}, {19, 6}, {10, 1}, {12, 17}};
+  std::vector<int> markers;  // as the fuzz target numbers them
+  for (std::size_t k = 0; k < segs.size(); ++k) markers.push_back(static_cast<int>((k + 1) % 5));
+  const auto r = run(pts, segs, "conforming", markers);
+  expect_valid(pts, segs, "conforming", r, false, markers);
+  EXPECT_GT(r.shared_edges.size(), 0u);
+}
+
 // fuzz/constrained2d_fuzz input (CI run of 2026-11-23, reduced to its two segments):
 // AhgA+AH4APsAAnsAAAAC+QP5Av0BBKwGAAIAAwIGAwIC+QD/AQUA+AD9UAAAAFMAAABcAAAAAvsAAwH4AfoD/gEGAfgA+gEFAPwC+gEFAgEBAAMEAAQD/QIACRMCBwYLFQ8DAA4JDQQBFhAFDAcUAAg=
 // Segment 3 ends at vertex 3, an ulp left of the vertical segment 0, which it crosses just
