@@ -5,15 +5,21 @@
 namespace dtlab {
 
 void constrained3d_conforming(Constrained3dContext& context);
+void constrained3d_recover(Constrained3dContext& context);
 
 namespace {
 
-constexpr std::array<Constrained3dMethod, 1> kMethods{{
+constexpr std::array<Constrained3dMethod, 2> kMethods{{
     {"conforming",
      "Delaunay of the vertices, then missing edge pieces split (concentric shells) and missing "
      "triangle pieces refined (circumcentres, Ruppert's rule) until the Delaunay "
      "tetrahedralization holds every input edge and triangle; Steiner points on the boundary only",
      &constrained3d_conforming},
+    {"recover",
+     "Delaunay of the vertices, then missing edges recovered by flips along their pipes and missing "
+     "triangles by removing the edges that cross them (2-3 flips, edge removal by shell "
+     "retriangulation); Steiner points, as in conforming, only where these fail; not Delaunay",
+     &constrained3d_recover},
 }};
 
 }  // namespace

@@ -34,6 +34,13 @@ FlipMesh::FlipMesh(std::vector<Record>& records) : records_(records) {
   old_sorted_.reserve(64);
 }
 
+FlipMesh::FlipMesh(std::vector<Record>& records, Adopt) : records_(records), count_(records.size()) {
+  r_ = records_.data();
+  free_.reserve(64);
+  entries_.reserve(256);
+  old_sorted_.reserve(64);
+}
+
 // k more slots at the end. The vector's size runs ahead of count_ by a chunk so that most calls
 // only count; its capacity grows by a quarter when exhausted (the caller reserves the expected
 // size up front).

@@ -23,6 +23,10 @@ class FlipMesh {
   using Tuple = std::array<std::uint32_t, 4>;
 
   explicit FlipMesh(std::vector<Record>& records);
+  // Works on an existing tetrahedralization's records (compact, as tetrahedralization3.hpp
+  // requires): they are moved and flipped in place; finish() makes them compact again.
+  struct Adopt {};
+  FlipMesh(std::vector<Record>& records, Adopt);
 
   // Raw view of the records; valid until the next replace().
   const Record* records() const noexcept { return r_; }

@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
+#include "algorithms/constrained3d/registry.hpp"
 #include "algorithms/constrained3d/exhaustive_tetrahedralization.hpp"
 #include "algorithms/constrained3d/insert_point.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
@@ -176,20 +177,37 @@ struct CheckedRun {
 };
 
 // Everything the issue asks of a result, exactly (verify/checks_constrained3d.hpp), and the
-// volume each region encloses when there is one closed surface.
-CheckedRun run_and_check(const ClosedSurface3& s, const std::string& method = "conforming",
+// volume each region encloses when there is one closed surface. With no method named, every
+// registered method is run and checked, the same number of regions expected of each, and the
+// first one's ("conforming") run returned.
+CheckedRun run_and_check(const ClosedSurface3& s, const std::string& method = "",
                          std::span<const int> refs = {}, std::span<const Vec3> holes = {},
                          std::uint32_t steiner_limit_factor = 200) {
-  CheckedRun out;
-  const ConstrainedInput3 input{.points = s.points, .triangles = s.triangles, .triangle_refs = refs, .holes = holes,
-                                .regions = {}};
-  out.result = constrained3d(input, {.method = method, .steiner_limit_factor = steiner_limit_factor});
-  const ConstrainedCheckReport3 report = check_constrained3d(input, out.result, {.method = method});
-  EXPECT_TRUE(report.ok) << to_text(report);
-  EXPECT_EQ(report.regions, out.result.region_count);
-  EXPECT_EQ(report.input_triangles, s.triangles.size());
-  out.region_volume6 = report.region_volume6;
-  return out;
+  std::vector<std::string> methods;
+  if (method.empty()) {
+    for (const auto& m : constrained3d_methods()) methods.emplace_back(m.name);
+  } else {
+    methods.push_back(method);
+  }
+  CheckedRun first;
+  for (const std::string& name : methods) {
+    SCOPED_TRACE("method " + name);
+    CheckedRun out;
+    const ConstrainedInput3 input{.points = s.points, .triangles = s.triangles, .triangle_refs = refs, .holes = holes,
+                                  .regions = {}};
+    out.result = constrained3d(input, {.method = name, .steiner_limit_factor = steiner_limit_factor});
+    const ConstrainedCheckReport3 report = check_constrained3d(input, out.result, {.method = name});
+    EXPECT_TRUE(report.ok) << to_text(report);
+    EXPECT_EQ(report.regions, out.result.region_count);
+    EXPECT_EQ(report.input_triangles, s.triangles.size());
+    out.region_volume6 = report.region_volume6;
+    if (name == methods.front()) {
+      first = std::move(out);
+    } else {
+      EXPECT_EQ(out.result.region_count, first.result.region_count);
+    }
+  }
+  return first;
 }
 
 ClosedSurface3 cube(double lo = 0, double hi = 1, Vec3 offset = {0, 0, 0}) {
@@ -229,6 +247,10 @@ TEST(Constrained3d, Schonhardt) {
                 c.on_edges, c.on_faces, c.interior, run.result.tetrahedra.size());
     EXPECT_GT(c.total(), 0u);  // it has no tetrahedralization without (exhaustive test above)
     EXPECT_EQ(run.result.region_count, 1u);
+    const auto recovered = run_and_check(s, "recover");
+    std::printf("  recover: Steiner on edges %u, on faces %u\n", recovered.result.steiner_points.on_edges,
+                recovered.result.steiner_points.on_faces);
+    EXPECT_GT(recovered.result.steiner_points.total(), 0u);
   }
 }
 
@@ -237,8 +259,11 @@ TEST(Constrained3d, TwistedPrismsAndStacks) {
     for (const int layers : {1, 3}) {
       const auto s = twisted_prism({.sides = n, .twist_degrees = 120.0 / n, .layers = layers});
       const auto run = run_and_check(s);
-      std::printf("twisted %d-gon prism, %d layers: Steiner on edges %u, on faces %u\n", n, layers,
-                  run.result.steiner_points.on_edges, run.result.steiner_points.on_faces);
+      const auto recovered = run_and_check(s, "recover");
+      std::printf("twisted %d-gon prism, %d layers: Steiner on edges %u, on faces %u; recover %u, %u\n", n, layers,
+                  run.result.steiner_points.on_edges, run.result.steiner_points.on_faces,
+                  recovered.result.steiner_points.on_edges, recovered.result.steiner_points.on_faces);
+      EXPECT_GT(recovered.result.steiner_points.total(), 0u);
     }
 }
 
@@ -248,6 +273,9 @@ TEST(Constrained3d, Chazelle) {
     const auto run = run_and_check(s);
     std::printf("Chazelle n = %d: %zu vertices, Steiner on edges %u, on faces %u (n^2 = %d)\n", n, s.points.size(),
                 run.result.steiner_points.on_edges, run.result.steiner_points.on_faces, n * n);
+    const auto recovered = run_and_check(s, "recover");
+    std::printf("  recover: Steiner on edges %u, on faces %u\n", recovered.result.steiner_points.on_edges,
+                recovered.result.steiner_points.on_faces);
   }
 }
 
@@ -292,7 +320,7 @@ TEST(Constrained3d, CubeWithAnInternalFace) {
     face({{x0, 0, 2}, {x1, 0, 2}, {x1, 2, 2}, {x0, 2, 2}}, {0, 0, 1}, 1);
   }
   face({{1, 0, 0}, {1, 2, 0}, {1, 2, 2}, {1, 0, 2}}, {1, 0, 0}, 2);
-  const auto run = run_and_check(m.s, "conforming", refs);
+  const auto run = run_and_check(m.s, "", refs);
   EXPECT_EQ(run.result.region_count, 2u);
   ASSERT_EQ(run.region_volume6.size(), 2u);
   EXPECT_EQ(run.region_volume6.at(1), Rational(24));
@@ -326,7 +354,7 @@ TEST(Constrained3d, TwoStackedBoxes) {
   m.fan({{0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2}}, {0, 0, 1});
   tag(1);
   refs[contact] = refs[contact + 1] = 2;
-  const auto run = run_and_check(m.s, "conforming", refs);
+  const auto run = run_and_check(m.s, "", refs);
   EXPECT_EQ(run.result.region_count, 2u);
   std::multiset<std::string> volumes;
   for (const auto& [region, v6] : run.region_volume6) volumes.insert(v6.to_string());
@@ -390,7 +418,7 @@ TEST(Constrained3d, FaceRecoveryBetweenTwoNearbyShells) {
   add_tet({Vec3{8 + gap, 5, 3}, {9, 5, 3}, {9, 6, 3}, {9, 5, 4}}, true);
   add_tet({Vec3{8 - gap, 5, 3}, {7, 5, 3}, {7, 6, 3}, {7, 5, 4}}, false);  // a cavity: turned inward
   const std::vector<Vec3> holes{{7.25, 5.25, 3.25}};
-  const auto run = run_and_check(s, "conforming", {}, holes);
+  const auto run = run_and_check(s, "", {}, holes);
   std::printf("face recovery case: Steiner on edges %u, on faces %u\n", run.result.steiner_points.on_edges,
               run.result.steiner_points.on_faces);
   EXPECT_EQ(run.result.region_count, 2u);  // the cube less the hole, the outer tetrahedron
@@ -529,7 +557,7 @@ TEST(Constrained3d, MeshEdgeSkippingARoundedSteinerPoint) {
       {7, -48, -62}, {-3, 63, 26},  {-49, 71, -30},  {-93, 37, -1},  {31, 22, -42}, {72, -4, -56},
       {26, -35, 18}, {-14, -29, -10}, {29, -69, -9}, {-68, -92, -100}, {58, -55, -24}, {-56, -8, -36},
       {43, 31, 66},  {36, 26, 43},  {4, -33, -95},   {-73, 53, -12}, {-44, -36, -85}, {-80, 37, 42}};
-  run_and_check(random_star(lattice, {4, 3, 10, 9, 8, 9, 9}), "conforming", {}, {}, 20);
+  run_and_check(random_star(lattice, {4, 3, 10, 9, 8, 9, 9}), "", {}, {}, 20);
 }
 
 // Timing on larger inputs (run with --gtest_also_run_disabled_tests
@@ -570,7 +598,7 @@ RC_GTEST_PROP(Constrained3dProperty, RandomStarShapedSurfaces, ()) {
   // end with the limit's InputError naming a triangle, and are counted, not checked further.
   CheckedRun run;
   try {
-    run = run_and_check(s, "conforming", {}, {}, 20);
+    run = run_and_check(s, "", {}, {}, 20);
   } catch (const InputError& e) {
     RC_ASSERT(std::string(e.what()).find("limit") != std::string::npos);
     RC_ASSERT(e.items().size() == 1u);

@@ -1,0 +1,334 @@
+// Edge and triangle recovery by flips and edge removals (flip_recovery.hpp).
+#include "algorithms/constrained3d/flip_recovery.hpp"
+
+#include <algorithm>
+#include <unordered_set>
+
+#include "algorithms/shell/polygon_triangulations.hpp"
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+#include "mesh/element_sets3.hpp"
+
+namespace dtlab {
+
+namespace {
+
+using T3 = Tetrahedralization3;
+constexpr std::uint32_t kNone = T3::kNone;
+constexpr std::uint32_t kInf = T3::kInfinite;
+constexpr auto kFacet = T3::kFacetVertex;
+// Shells larger than this are not retriangulated: Cat(n - 1) triangulations (4862 at n = 11).
+constexpr int kLargestShell = 10;
+// Steps of one walk or one triangle's recovery (each removes a tetrahedron from a pipe or an
+// edge crossing a triangle; the bound only guards against a broken invariant).
+constexpr int kSteps = 512;
+
+std::uint64_t edge_key(std::uint32_t u, std::uint32_t v) noexcept {
+  return u < v ? std::uint64_t{u} << 32 | v : std::uint64_t{v} << 32 | u;
+}
+std::array<std::uint32_t, 3> face_key(std::uint32_t a, std::uint32_t b, std::uint32_t c) noexcept {
+  std::array<std::uint32_t, 3> k{a, b, c};
+  std::sort(k.begin(), k.end());
+  return k;
+}
+
+}  // namespace
+
+FlipRecovery::FlipRecovery(Tetrahedralization3& mesh, std::vector<std::uint64_t> protected_edges,
+                           std::vector<std::array<std::uint32_t, 3>> protected_faces)
+    : mesh_(mesh),
+      records_(mesh.mutable_records()),
+      flips_mesh_(mesh.mutable_records(), FlipMesh::Adopt{}),
+      vertex_tet_(vertex_tetrahedra(mesh)),
+      protected_edges_(std::move(protected_edges)),
+      protected_faces_(std::move(protected_faces)) {}
+
+void FlipRecovery::protect_edge(std::uint32_t u, std::uint32_t v) { extra_edges_.push_back(edge_key(u, v)); }
+void FlipRecovery::protect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  extra_faces_.push_back(face_key(a, b, c));
+}
+
+bool FlipRecovery::is_protected_edge(std::uint32_t u, std::uint32_t v) const {
+  const std::uint64_t k = edge_key(u, v);
+  return std::binary_search(protected_edges_.begin(), protected_edges_.end(), k) ||
+         std::find(extra_edges_.begin(), extra_edges_.end(), k) != extra_edges_.end();
+}
+bool FlipRecovery::is_protected_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
+  const auto k = face_key(a, b, c);
+  return std::binary_search(protected_faces_.begin(), protected_faces_.end(), k) ||
+         std::find(extra_faces_.begin(), extra_faces_.end(), k) != extra_faces_.end();
+}
+
+void FlipRecovery::finish() { flips_mesh_.finish(); }
+
+void FlipRecovery::ball_of(std::uint32_t u, std::vector<std::uint32_t>& out) {
+  out.clear();
+  if (u >= vertex_tet_.size() || vertex_tet_[u] == kNone) return;
+  if (mark_.size() < records_.size()) mark_.resize(records_.size(), 0);
+  ++stamp_;
+  const std::uint32_t t0 = vertex_tet_[u];
+  DTLAB_ASSERT(alive(t0));
+  out.push_back(t0);
+  mark_[t0] = stamp_;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (out.size() > records_.size()) throw InternalError("flip recovery: a vertex ball exceeded the mesh");
+    const auto& rec = records_[out[k]];
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (rec.vertex[i] == u) continue;  // the facet opposite u does not hold u
+      const std::uint32_t n = rec.neighbour[i] >> 2;
+      if (mark_[n] == stamp_) continue;
+      mark_[n] = stamp_;
+      out.push_back(n);
+    }
+  }
+}
+
+std::uint32_t FlipRecovery::tetrahedron_with(std::uint32_t u, std::uint32_t v, std::uint32_t w) {
+  ball_of(u, ball_);
+  for (const std::uint32_t t : ball_) {
+    const auto& x = records_[t].vertex;
+    if (x[0] == kInf) continue;
+    const bool has_v = x[0] == v || x[1] == v || x[2] == v || x[3] == v;
+    const bool has_w = w == kNone || x[0] == w || x[1] == w || x[2] == w || x[3] == w;
+    if (has_v && has_w) return t;
+  }
+  return kNone;
+}
+
+bool FlipRecovery::has_edge(std::uint32_t u, std::uint32_t v) { return tetrahedron_with(u, v) != kNone; }
+bool FlipRecovery::has_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  return tetrahedron_with(a, b, c) != kNone;
+}
+
+void FlipRecovery::replaced(std::span<const std::uint32_t> ids) {
+  for (const std::uint32_t t : ids)
+    for (const std::uint32_t v : records_[t].vertex)
+      if (v != kInf) vertex_tet_[v] = t;
+}
+
+bool FlipRecovery::flip23(std::uint32_t t, std::uint32_t i) {
+  const auto rec = records_[t];
+  const std::uint32_t g = rec.neighbour[i], t2 = g >> 2;
+  const std::uint32_t p = rec.vertex[i], q = records_[t2].vertex[g & 3u];
+  if (rec.vertex[0] == kInf || records_[t2].vertex[0] == kInf) return false;
+  const std::uint32_t a = rec.vertex[kFacet[i][0]], b = rec.vertex[kFacet[i][1]], c = rec.vertex[kFacet[i][2]];
+  if (is_protected_face(a, b, c)) return false;
+  // pq through the open triangle abc: the two tetrahedra's union is convex across it.
+  const Sign s1 = orient3d(P(p), P(q), P(a), P(b));
+  if (s1 == Sign::Zero || orient3d(P(p), P(q), P(b), P(c)) != s1 || orient3d(P(p), P(q), P(c), P(a)) != s1)
+    return false;
+  std::array<Tuple, 3> fresh;
+  const std::uint32_t ring[3] = {a, b, c};
+  for (int k = 0; k < 3; ++k) {
+    const std::uint32_t x = ring[k], y = ring[(k + 1) % 3];
+    fresh[k] = orient3d(P(x), P(y), P(p), P(q)) == Sign::Positive ? Tuple{x, y, p, q} : Tuple{y, x, p, q};
+  }
+  const std::uint32_t old[2] = {t, t2};
+  flips_mesh_.replace(old, fresh, ids_);
+  replaced(ids_);
+  ++flips_;
+  return true;
+}
+
+template <class Accept>
+bool FlipRecovery::remove_edge(std::uint32_t t, std::uint32_t e0, std::uint32_t e1, Accept&& accept) {
+  if (is_protected_edge(e0, e1)) return false;
+  const std::vector<std::uint32_t> sh = shell(mesh_, t, e0, e1);
+  const int n = static_cast<int>(sh.size());
+  if (n < 3 || n > kLargestShell) return false;
+  // ring[k]: the vertex shared by shell tetrahedra k and k + 1 besides e0, e1.
+  std::vector<std::uint32_t> ring(n);
+  for (int k = 0; k < n; ++k) {
+    const auto& x = records_[sh[k]].vertex;
+    const auto& y = records_[sh[(k + 1) % n]].vertex;
+    ring[k] = kNone;
+    for (const std::uint32_t v : x)
+      if (v != e0 && v != e1 && std::find(y.begin(), y.end(), v) != y.end()) ring[k] = v;
+    if (ring[k] == kNone) return false;
+    if (is_protected_face(e0, e1, ring[k])) return false;
+  }
+  // (a, b, ring[k], ring[k + 1]) positive: read off a finite tetrahedron of the shell.
+  std::uint32_t a = e0, b = e1;
+  {
+    int k = 0;
+    while (k < n && (ring[k] == kInf || ring[(k + 1) % n] == kInf)) ++k;
+    if (k == n) return false;
+    const Sign turn = orient3d(P(a), P(b), P(ring[k]), P(ring[(k + 1) % n]));
+    if (turn == Sign::Zero) return false;
+    if (turn == Sign::Negative) std::swap(a, b);
+  }
+  // A new tetrahedron is valid if positive; a new ghost (the edge is on the hull) if its hull
+  // facet is a proper triangle with no vertex of the shell strictly beyond it, so that the hull
+  // stays convex (tetrahedralization3.hpp: orient3d(q, x, y, z) > 0 for q beyond facet xyz).
+  const auto valid_tuple = [&](const Tuple& t) {
+    std::uint32_t m = 4;
+    for (std::uint32_t j = 0; j < 4; ++j)
+      if (t[j] == kInf) m = j;
+    if (m == 4) return orient3d(P(t[0]), P(t[1]), P(t[2]), P(t[3])) == Sign::Positive;
+    const Vec3 &x = P(t[1 ^ m]), &y = P(t[2 ^ m]), &z = P(t[3 ^ m]);
+    const auto flat = [](double ux, double uy, double vx, double vy, double wx, double wy) {
+      return orient2d(Vec2{ux, uy}, Vec2{vx, vy}, Vec2{wx, wy}) == Sign::Zero;
+    };
+    if (flat(x.x, x.y, y.x, y.y, z.x, z.y) && flat(x.y, x.z, y.y, y.z, z.y, z.z) && flat(x.z, x.x, y.z, y.x, z.z, z.x))
+      return false;  // collinear
+    for (const std::uint32_t p : ring)
+      if (p != kInf && orient3d(P(p), x, y, z) == Sign::Positive) return false;
+    return orient3d(P(a), x, y, z) != Sign::Positive && orient3d(P(b), x, y, z) != Sign::Positive;
+  };
+  // Triangle (i, j, k) of the ring polygon, increasing: (w_i, w_j, w_k, b) and (w_k, w_j, w_i, a)
+  // both valid. Cached: a triangle occurs in many triangulations.
+  std::vector<std::int8_t> valid(static_cast<std::size_t>(n * n * n), -1);
+  const auto is_valid = [&](const PolygonTriangle& tr) {
+    std::int8_t& v = valid[(tr[0] * n + tr[1]) * n + tr[2]];
+    if (v < 0) {
+      const std::uint32_t wi = ring[tr[0]], wj = ring[tr[1]], wk = ring[tr[2]];
+      v = valid_tuple({wi, wj, wk, b}) && valid_tuple({wk, wj, wi, a});
+    }
+    return v == 1;
+  };
+  std::vector<PolygonTriangle> chosen;
+  for_each_polygon_triangulation(n, [&](const std::vector<PolygonTriangle>& tris) {
+    if (!chosen.empty()) return;
+    for (const PolygonTriangle& tr : tris)
+      if (!is_valid(tr)) return;
+    if (accept(ring, tris)) chosen = tris;
+  });
+  if (chosen.empty()) return false;
+  std::vector<Tuple> fresh;
+  fresh.reserve(2 * chosen.size());
+  for (const PolygonTriangle& tr : chosen) {
+    fresh.push_back({ring[tr[0]], ring[tr[1]], ring[tr[2]], b});
+    fresh.push_back({ring[tr[2]], ring[tr[1]], ring[tr[0]], a});
+  }
+  flips_mesh_.replace(sh, fresh, ids_);
+  replaced(ids_);
+  ++removals_;
+  return true;
+}
+
+bool FlipRecovery::advance(std::uint32_t u, std::uint32_t v) {
+  ball_of(u, ball_);
+  const std::vector<std::uint32_t> ball = ball_;
+  for (const std::uint32_t t : ball) {
+    const auto& x = records_[t].vertex;
+    if (x[0] == kInf) continue;
+    std::uint32_t i = 0;
+    while (x[i] != u) ++i;
+    const std::uint32_t a = x[kFacet[i][0]], b = x[kFacet[i][1]], c = x[kFacet[i][2]];
+    const Sign tau = orient3d(P(u), P(a), P(b), P(c));
+    if (tau == Sign::Zero) continue;
+    // v = u + alpha (a - u) + beta (b - u) + gamma (c - u): the signs below are those of
+    // gamma, alpha, beta times tau; uv leaves t through abc, an edge of it or a vertex.
+    const Sign s[3] = {orient3d(P(u), P(a), P(b), P(v)), orient3d(P(u), P(b), P(c), P(v)),
+                       orient3d(P(u), P(c), P(a), P(v))};
+    int zeros = 0, against = 0;
+    for (const Sign si : s) zeros += si == Sign::Zero, against += si != Sign::Zero && si != tau;
+    if (against > 0) continue;
+    if (zeros > 1) return false;  // through a vertex of abc
+    // The shell's polygon fanned from u: every new tetrahedron holds u, so uv starts in one of
+    // them and leaves the former shell at once; the shell held t and the next tetrahedron of
+    // the pipe (uv leaves t through the edge, or through abc into the tetrahedron beyond, which
+    // holds all three edges of abc).
+    const auto fan_from_u = [&](const std::vector<std::uint32_t>& ring, const std::vector<PolygonTriangle>& tris) {
+      const auto at = std::find(ring.begin(), ring.end(), u);
+      if (at == ring.end()) return false;
+      const auto r = static_cast<std::uint8_t>(at - ring.begin());
+      return std::all_of(tris.begin(), tris.end(),
+                         [&](const PolygonTriangle& tr) { return tr[0] == r || tr[1] == r || tr[2] == r; });
+    };
+    if (zeros == 0) {
+      if (flip23(t, i)) return true;
+      // Not convex across abc: one of its edges is reflex; remove one of them instead.
+      return remove_edge(t, a, b, fan_from_u) || remove_edge(t, b, c, fan_from_u) || remove_edge(t, c, a, fan_from_u);
+    }
+    const std::uint32_t e0 = s[0] == Sign::Zero ? a : s[1] == Sign::Zero ? b : c;
+    const std::uint32_t e1 = s[0] == Sign::Zero ? b : s[1] == Sign::Zero ? c : a;
+    return remove_edge(t, e0, e1, fan_from_u);
+  }
+  return false;
+}
+
+bool FlipRecovery::recover_edge(std::uint32_t u, std::uint32_t v) {
+  for (int step = 0; step < kSteps; ++step) {
+    if (has_edge(u, v)) return true;
+    if (!advance(u, v) && !advance(v, u)) return false;
+  }
+  return has_edge(u, v);
+}
+
+bool FlipRecovery::crosses(std::uint32_t p, std::uint32_t q, std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
+  const Sign op = orient3d(P(a), P(b), P(c), P(p));
+  if (op == Sign::Zero || orient3d(P(a), P(b), P(c), P(q)) != -op) return false;
+  const Sign s1 = orient3d(P(p), P(q), P(a), P(b));
+  return s1 != Sign::Zero && orient3d(P(p), P(q), P(b), P(c)) == s1 && orient3d(P(p), P(q), P(c), P(a)) == s1;
+}
+
+void FlipRecovery::crossing_edges(std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                                  std::vector<std::array<std::uint32_t, 3>>& out) {
+  out.clear();
+  std::vector<std::uint32_t> seeds;
+  for (const std::uint32_t v : {a, b, c}) {
+    ball_of(v, ball_);
+    seeds.insert(seeds.end(), ball_.begin(), ball_.end());
+  }
+  if (mark_.size() < records_.size()) mark_.resize(records_.size(), 0);
+  ++stamp_;
+  stack_.clear();
+  for (const std::uint32_t t : seeds)
+    if (mark_[t] != stamp_) mark_[t] = stamp_, stack_.push_back(t);
+  std::unordered_set<std::uint64_t> tested, crossing;
+  while (!stack_.empty()) {
+    const std::uint32_t t = stack_.back();
+    stack_.pop_back();
+    const auto rec = records_[t];
+    if (rec.vertex[0] == kInf) continue;
+    bool any = false;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const std::uint32_t p = rec.vertex[i], q = rec.vertex[j];
+        if (p == a || p == b || p == c || q == a || q == b || q == c) continue;
+        const std::uint64_t k = edge_key(p, q);
+        if (tested.insert(k).second && crosses(p, q, a, b, c)) {
+          crossing.insert(k);
+          out.push_back({std::min(p, q), std::max(p, q), t});
+        }
+        any = any || crossing.count(k) != 0;
+      }
+    if (!any) continue;
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t n = rec.neighbour[i] >> 2;
+      if (mark_[n] != stamp_) mark_[n] = stamp_, stack_.push_back(n);
+    }
+  }
+  std::sort(out.begin(), out.end());
+}
+
+bool FlipRecovery::recover_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  if (!has_edge(a, b) || !has_edge(b, c) || !has_edge(c, a)) return false;
+  std::vector<std::array<std::uint32_t, 3>> crossing;
+  for (int step = 0; step < kSteps; ++step) {
+    if (has_face(a, b, c)) return true;
+    crossing_edges(a, b, c, crossing);
+    bool progress = false;
+    for (const auto& [p, q, t] : crossing) {
+      if (!alive(t)) continue;
+      // No new edge (a diagonal of the shell's polygon) may cross abc: the crossings decrease.
+      progress = remove_edge(t, p, q, [&](const std::vector<std::uint32_t>& ring, const std::vector<PolygonTriangle>& tris) {
+        const int n = static_cast<int>(ring.size());
+        for (const PolygonTriangle& tr : tris)
+          for (int x = 0; x < 3; ++x)
+            for (int y = x + 1; y < 3; ++y) {
+              const int i = tr[x], j = tr[y];
+              if (j - i == 1 || (i == 0 && j == n - 1)) continue;  // a side of the polygon
+              if (crosses(ring[i], ring[j], a, b, c)) return false;
+            }
+        return true;
+      });
+      if (progress) break;
+    }
+    if (!progress) return has_face(a, b, c);
+  }
+  return has_face(a, b, c);
+}
+
+}  // namespace dtlab

@@ -1,0 +1,86 @@
+// Recovery of missing constraint edges and triangles by local transformations, without Steiner
+// points (book §3.5.3, "edge recovery" and "face recovery"; the shell transformation of §8.3.3):
+// 2->3 flips and edge removals (n -> 2n - 4: the shell of an edge retriangulated, 3 -> 2 its
+// smallest case) on a tetrahedralization that is no longer Delaunay afterwards.
+//
+//  - Edge uv: walked from u (then from v) through its pipe (§1.7). The first tetrahedron, at u,
+//    is left through a face or an edge: a face is flipped 2->3 when u and the apex beyond it see
+//    each other through it; an edge is removed with its shell's polygon fanned from u. Either
+//    way the pipe loses a tetrahedron at u, so the walk ends: with uv an edge, or at a
+//    transformation that is not valid (a reflex pipe, as in Schönhardt's polyhedron).
+//  - Triangle abc (its edges present): the edges crossing its open interior are removed one at
+//    a time, each by a retriangulation of its shell whose new edges cross it nowhere; a removal
+//    destroys only faces through the edge it removes, so triangles recovered before stay. With
+//    no edge crossing it (and its edges present), abc is a face.
+// Every new tetrahedron is checked positive with exact orient3d (no perturbation: flat ones are
+// refused). Protected edges and faces (the constraints already present) are never removed.
+// Each call is bounded; giving up is an answer (the caller then inserts Steiner points).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/delaunay3d/flip_mesh.hpp"
+#include "mesh/tetrahedralization3.hpp"
+
+namespace dtlab {
+
+class FlipRecovery {
+ public:
+  // mesh: compact, as tetrahedralization3.hpp requires; it is transformed in place and is only a
+  // valid Tetrahedralization3 again after finish(). protected_edges: MeshIndex::key(u, v) of
+  // the constraint edges (sorted); protected_faces: the constraint triangles' sorted vertex
+  // triples (sorted).
+  FlipRecovery(Tetrahedralization3& mesh, std::vector<std::uint64_t> protected_edges,
+               std::vector<std::array<std::uint32_t, 3>> protected_faces);
+
+  bool has_edge(std::uint32_t u, std::uint32_t v);
+  bool has_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+  // Makes uv an edge if the walks above can; true if it is one afterwards.
+  bool recover_edge(std::uint32_t u, std::uint32_t v);
+  // Makes abc a face if removing the edges that cross it can; true if it is one afterwards.
+  bool recover_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+  // Adds a constraint to the protected ones (after recovering it).
+  void protect_edge(std::uint32_t u, std::uint32_t v);
+  void protect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+
+  void finish();
+  std::uint64_t flips() const noexcept { return flips_; }
+  std::uint64_t edge_removals() const noexcept { return removals_; }
+
+ private:
+  using Tuple = FlipMesh::Tuple;
+  const Vec3& P(std::uint32_t v) const noexcept { return mesh_.points()[v]; }
+  bool alive(std::uint32_t t) const noexcept { return records_[t].vertex[0] != Tetrahedralization3::kNone; }
+  // A finite tetrahedron holding u and v (kNone if none): a search of u's ball.
+  std::uint32_t tetrahedron_with(std::uint32_t u, std::uint32_t v, std::uint32_t w = Tetrahedralization3::kNone);
+  void ball_of(std::uint32_t u, std::vector<std::uint32_t>& out);
+  bool is_protected_edge(std::uint32_t u, std::uint32_t v) const;
+  bool is_protected_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) const;
+  // One step of the walk of uv from u: true if the mesh changed.
+  bool advance(std::uint32_t u, std::uint32_t v);
+  bool flip23(std::uint32_t t, std::uint32_t u_index);
+  // Removes edge (e0, e1) of finite tetrahedron t by the first valid retriangulation of its
+  // shell's polygon that `accept` takes (ring vertices, triangles); false if none.
+  template <class Accept>
+  bool remove_edge(std::uint32_t t, std::uint32_t e0, std::uint32_t e1, Accept&& accept);
+  void replaced(std::span<const std::uint32_t> ids);
+  // Edges crossing the open triangle abc, each once with a tetrahedron holding it.
+  void crossing_edges(std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                      std::vector<std::array<std::uint32_t, 3>>& out);
+  bool crosses(std::uint32_t p, std::uint32_t q, std::uint32_t a, std::uint32_t b, std::uint32_t c) const;
+
+  Tetrahedralization3& mesh_;
+  std::vector<Tetrahedralization3::Record>& records_;
+  FlipMesh flips_mesh_;
+  std::vector<std::uint32_t> vertex_tet_;
+  std::vector<std::uint64_t> protected_edges_, extra_edges_;
+  std::vector<std::array<std::uint32_t, 3>> protected_faces_, extra_faces_;
+  std::vector<std::uint32_t> mark_;
+  std::uint32_t stamp_ = 0;
+  std::vector<std::uint32_t> ids_, stack_, ball_;
+  std::uint64_t flips_ = 0, removals_ = 0;
+};
+
+}  // namespace dtlab

@@ -1,0 +1,91 @@
+// Method "recover": the book's boundary recovery (§3.5.3). The Delaunay tetrahedralization of the
+// vertices, then each round, on a copy of it: every missing edge piece recovered by flips along
+// its pipe, then every missing triangle (one with no Steiner point on it) by removing the edges
+// that cross it (flip_recovery.hpp). What the transformations cannot recover gets Steiner
+// points as in "conforming" (edge pieces split on concentric shells; triangles refined, with
+// Ruppert's rule), inserted into the Delaunay tetrahedralization, and the round starts again
+// from it; once a round leaves nothing missing, its transformed copy is the result. Steiner
+// points therefore go only where flips fail (Schönhardt's polyhedron and its kin), and they stay
+// exact points of the input (constrained3d.hpp). Every round adds a point or ends, so the
+// Steiner limit bounds the rounds.
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "algorithms/constrained3d/flip_recovery.hpp"
+#include "algorithms/constrained3d/recovery.hpp"
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+void constrained3d_recover(Constrained3dContext& c) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
+  SteinerInserter inserter(c);
+  for (;;) {
+    ++c.rounds;
+    auto start = Clock::now();
+    Tetrahedralization3 flipped = c.mesh;
+    std::vector<std::uint64_t> protected_edges;
+    for (const ConstraintEdge3& e : c.edges)
+      for (std::size_t i = 0; i + 1 < e.chain.size(); ++i) protected_edges.push_back(MeshIndex::key(e.chain[i], e.chain[i + 1]));
+    std::sort(protected_edges.begin(), protected_edges.end());
+    std::vector<std::array<std::uint32_t, 3>> protected_faces;
+    std::vector<std::uint8_t> single(c.facets.size(), 0);  // triangles with no Steiner point
+    for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
+      if (facet_vertex_count(c, f) != 3) continue;
+      single[f] = 1;
+      auto k = c.facets[f].corners;
+      std::sort(k.begin(), k.end());
+      protected_faces.push_back(k);
+    }
+    std::sort(protected_faces.begin(), protected_faces.end());
+    FlipRecovery recovery(flipped, std::move(protected_edges), std::move(protected_faces));
+
+    std::vector<EdgeSplit> splits;
+    std::vector<FacetPoint> points;
+    for (std::uint32_t e = 0; e < c.edges.size(); ++e) {
+      const auto& chain = c.edges[e].chain;
+      for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+        if (!recovery.has_edge(chain[i], chain[i + 1]) && !recovery.recover_edge(chain[i], chain[i + 1]))
+          splits.push_back({e, edge_split_parameter(c, e, i)});
+    }
+    c.edge_seconds += seconds(start);
+    if (!splits.empty()) {
+      inserter.insert(splits, points);
+      continue;
+    }
+    start = Clock::now();
+    for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
+      if (!single[f]) continue;
+      const auto& [a, b, cc] = c.facets[f].corners;
+      if (!recovery.has_face(a, b, cc)) recovery.recover_face(a, b, cc);
+    }
+    recovery.finish();
+    const MeshIndex index(flipped);
+    std::vector<std::array<std::uint32_t, 2>> missing;
+    for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
+      missing.clear();
+      if (facet_still_covered(c, f, index) || cover_facet(c, f, index, missing)) continue;
+      const FacetParameters st = facet_parameters(c, f);
+      for (const auto& m : missing) request_facet_point(c, f, st, m, splits, points);
+    }
+    if (splits.empty() && points.empty()) {
+      c.mesh = std::move(flipped);
+      c.face_seconds += seconds(start);
+      break;
+    }
+    const std::size_t added = inserter.insert(splits, points);
+    c.face_seconds += seconds(start);
+    if (added == 0) {
+      const std::uint32_t f = inserter.stuck_facet();
+      throw InputError("constrained3d: triangle " + std::to_string(f + 1) +
+                           " cannot be recovered: its Steiner points round onto existing vertices",
+                       {f});
+    }
+  }
+  c.rounding_checks_failed = inserter.rounding_checks_failed();
+}
+
+}  // namespace dtlab
