@@ -141,7 +141,8 @@ int run_constrain(ConstrainArgs args) {
          << ",\"crossing_steiner_points\":" << result.crossing_steiner_points
          << ",\"split_steiner_points\":" << result.split_steiner_points
          << ",\"constrained_edges\":" << result.constrained_edges.size()
-         << ",\"shared_edges\":" << result.shared_edges.size() << ",\"triangles\":" << result.triangles.size()
+         << ",\"shared_edges\":" << result.shared_edges.size() << ",\"bent_crossings\":" << result.bent_crossings.size()
+         << ",\"triangles\":" << result.triangles.size()
          << ",\"flips\":" << result.flips << ",\"rounding_checks_failed\":" << result.rounding_checks_failed
          << ",\"seconds\":" << json_number(result.seconds) << ",\"triangles_per_minute\":" << json_number(per_minute)
          << ",\"peak_rss_mb\":" << json_number(peak_mb) << ",\"predicates\":" << result.predicate_stats.to_json() << "}";

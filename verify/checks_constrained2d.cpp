@@ -338,6 +338,7 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
   }
 
   std::vector<std::pair<std::uint32_t, std::uint32_t>> steiner_on;  // (Steiner vertex, segment)
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> on_chain;    // (any chain vertex, segment)
   std::vector<std::uint32_t> stamp(P.size(), 0), parent(P.size(), T2::kNone), stack, chain;
   const std::size_t crossing_end = n + result.crossing_steiner_points;  // crossings come first
   for (std::size_t k = 0; k < input.segments.size(); ++k) {
@@ -426,6 +427,7 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
     for (std::uint32_t v = b; v != a; v = parent[v]) chain.push_back(v);
     chain.push_back(a);
     r.chain_edges += chain.size() - 1;
+    for (const std::uint32_t v : chain) on_chain.push_back({v, static_cast<std::uint32_t>(k)});
     // Each Steiner vertex within its rounding bound of an exact point of AB, or of the piece it
     // split when it was inserted: a piece between two older vertices of the chain, one on each
     // side (vertex ids grow with insertion). Later vertices only split pieces further, but an
@@ -466,6 +468,7 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
   // point may lie on two chains too, where a later piece of another segment runs exactly
   // through it; its bound is the piece's, checked above.)
   std::sort(steiner_on.begin(), steiner_on.end());
+  std::sort(on_chain.begin(), on_chain.end());
   std::size_t i = 0;
   for (std::uint32_t v = static_cast<std::uint32_t>(n); v < P.size(); ++v) {
     const std::size_t begin = i;
@@ -510,6 +513,31 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
           ++r.rounding_checks;
           within = within_rounding_bound(*exact, P[v]);
         }
+    }
+    if (crossing && !within) {
+      // Or a crossing of two chains bent by rounding (BentCrossing2): within its rounding bound of
+      // the exact intersection of the recorded pieces' lines, the ends of each piece vertices of
+      // its segment's chain (which the chain check above holds near the segment; where chains
+      // share edges the one found may go round them) or within their rounding bound of it.
+      const auto record = std::find_if(result.bent_crossings.begin(), result.bent_crossings.end(),
+                                       [&](const BentCrossing2& b) { return b.vertex == v; });
+      if (record != result.bent_crossings.end()) {
+        const auto& q = record->pieces;
+        bool on_chains = true;
+        for (int end = 0; end < 4 && on_chains; ++end) {
+          const std::uint32_t seg = record->segments[end / 2];
+          on_chains = q[end] < P.size() && seg < input.segments.size();
+          if (!on_chains) break;
+          const auto& [sa, sb] = input.segments[seg];
+          on_chains = std::binary_search(on_chain.begin(), on_chain.end(), std::pair{q[end], seg}) ||
+                      (sa < n && sb < n && within_rounding_bound_of_segment(P[q[end]], P[carrier[sa]], P[carrier[sb]]));
+        }
+        if (on_chains) {
+          const std::optional<ExactPoint2> exact = line_intersection_exact(P[q[0]], P[q[1]], P[q[2]], P[q[3]]);
+          ++r.rounding_checks;
+          within = exact && within_rounding_bound(*exact, P[v]);
+        }
+      }
     }
     if (crossing && !within)
       r.add_problem("Steiner " + name.point(v) + " " + coordinates(P[v]) + " on the chains of " + pair +

@@ -73,6 +73,16 @@ struct ConstrainedEdge2 {
   int marker = 0;              // that segment's marker (0 if no markers were given)
 };
 
+// A crossing Steiner point made where two constrained chains, bent by earlier rounding, cross
+// although their input segments do not cross there (the fallback of enforcement, which snap
+// rounding leaves rare): the correctly rounded intersection of the lines through the two pieces
+// (a0, a1) of segment `segments[0]` and (b0, b1) of `segments[1]`, as they were then.
+struct BentCrossing2 {
+  std::uint32_t vertex = 0;
+  std::array<std::uint32_t, 2> segments{};
+  std::array<std::uint32_t, 4> pieces{};  // a0, a1, b0, b1
+};
+
 struct Constrained2dResult {
   // Points: the input, in input order, then the Steiner points. Triangles: the whole convex hull
   // (closed by ghosts, the contract of mesh/triangulation2.hpp), exterior and holes included.
@@ -91,6 +101,7 @@ struct Constrained2dResult {
   std::uint32_t input_point_count = 0;
   std::uint32_t crossing_steiner_points = 0;  // from segment crossings
   std::uint32_t split_steiner_points = 0;     // from conforming splits
+  std::vector<BentCrossing2> bent_crossings;  // the crossing points made from pieces' lines
   // Steiner points on a crossing not within their rounding bound of the exact intersection
   // (must be 0; kept as a count so that tests and the CLI can check it).
   std::uint32_t rounding_checks_failed = 0;

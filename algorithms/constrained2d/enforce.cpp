@@ -275,9 +275,12 @@ class SegmentResolver {
     const auto& sj = context_.input_segment(j);
     std::optional<ExactPoint2> exact = line_intersection_exact(mesh_.point(si[0]), mesh_.point(si[1]),
                                                                mesh_.point(sj[0]), mesh_.point(sj[1]));
+    bool bent = false;
     if (!exact || !strictly_inside(*exact, mesh_.point(si[0]), mesh_.point(si[1])) ||
-        !strictly_inside(*exact, mesh_.point(sj[0]), mesh_.point(sj[1])))
+        !strictly_inside(*exact, mesh_.point(sj[0]), mesh_.point(sj[1]))) {
       exact = line_intersection_exact(mesh_.point(p.a), mesh_.point(p.b), mesh_.point(u), mesh_.point(v));
+      bent = true;
+    }
     DTLAB_ASSERT(exact.has_value());  // the walk saw u and v strictly on either side of ab
     const RoundedPoint2 rounded = round_point_checked(*exact);
     if (!rounded.exact && !rounding) return false;
@@ -300,6 +303,7 @@ class SegmentResolver {
       w = mesh_.insert(x, where);
       steiner_at_.emplace(std::pair{exact->x, exact->y}, w);
       ++result_.crossing_steiner_points;
+      if (bent) result_.bent_crossings.push_back({w, {p.segment, j}, {p.a, p.b, u, v}});
       std::string note = "segments " + context_.number(j) + " and " + context_.number(p.segment) +
                          " cross: Steiner vertex " + context_.number(w) + " at " + point_text(x) +
                          (rounded.exact ? " (exact)" : " (rounded; the pieces bend there by at most ulp/2)");
