@@ -236,14 +236,28 @@ bool FlipRecovery::advance(std::uint32_t u, std::uint32_t v) {
       return std::all_of(tris.begin(), tris.end(),
                          [&](const PolygonTriangle& tr) { return tr[0] == r || tr[1] == r || tr[2] == r; });
     };
+    // Where v is on the shell's polygon too, any retriangulation with the diagonal uv makes the
+    // edge at once (the two diagonals of a planar quadrilateral, as flat CAD faces give).
+    const auto has_uv = [&](const std::vector<std::uint32_t>& ring, const std::vector<PolygonTriangle>& tris) {
+      const auto iu = std::find(ring.begin(), ring.end(), u), iv = std::find(ring.begin(), ring.end(), v);
+      if (iu == ring.end() || iv == ring.end()) return false;
+      const auto ru = static_cast<std::uint8_t>(iu - ring.begin()), rv = static_cast<std::uint8_t>(iv - ring.begin());
+      return std::any_of(tris.begin(), tris.end(), [&](const PolygonTriangle& tr) {
+        const bool hu = tr[0] == ru || tr[1] == ru || tr[2] == ru, hv = tr[0] == rv || tr[1] == rv || tr[2] == rv;
+        return hu && hv;
+      });
+    };
+    const auto toward_v = [&](const std::vector<std::uint32_t>& ring, const std::vector<PolygonTriangle>& tris) {
+      return has_uv(ring, tris) || fan_from_u(ring, tris);
+    };
     if (zeros == 0) {
       if (flip23(t, i)) return true;
       // Not convex across abc: one of its edges is reflex; remove one of them instead.
-      return remove_edge(t, a, b, fan_from_u) || remove_edge(t, b, c, fan_from_u) || remove_edge(t, c, a, fan_from_u);
+      return remove_edge(t, a, b, toward_v) || remove_edge(t, b, c, toward_v) || remove_edge(t, c, a, toward_v);
     }
     const std::uint32_t e0 = s[0] == Sign::Zero ? a : s[1] == Sign::Zero ? b : c;
     const std::uint32_t e1 = s[0] == Sign::Zero ? b : s[1] == Sign::Zero ? c : a;
-    return remove_edge(t, e0, e1, fan_from_u);
+    return remove_edge(t, e0, e1, toward_v);
   }
   return false;
 }
