@@ -94,6 +94,7 @@ Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrai
   build_constraints(input, c);
 
   method->run(c);
+  r.messages = std::move(c.messages);
   r.seconds.edge_recovery = c.edge_seconds;
   r.seconds.face_recovery = c.face_seconds;
 

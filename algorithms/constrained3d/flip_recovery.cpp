@@ -43,20 +43,20 @@ FlipRecovery::FlipRecovery(Tetrahedralization3& mesh, std::vector<std::uint64_t>
       protected_edges_(std::move(protected_edges)),
       protected_faces_(std::move(protected_faces)) {}
 
-void FlipRecovery::protect_edge(std::uint32_t u, std::uint32_t v) { extra_edges_.push_back(edge_key(u, v)); }
+void FlipRecovery::protect_edge(std::uint32_t u, std::uint32_t v) { extra_edges_.insert(edge_key(u, v)); }
 void FlipRecovery::protect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  extra_faces_.push_back(face_key(a, b, c));
+  extra_faces_.insert(face_key(a, b, c));
 }
 
 bool FlipRecovery::is_protected_edge(std::uint32_t u, std::uint32_t v) const {
   const std::uint64_t k = edge_key(u, v);
   return std::binary_search(protected_edges_.begin(), protected_edges_.end(), k) ||
-         std::find(extra_edges_.begin(), extra_edges_.end(), k) != extra_edges_.end();
+         extra_edges_.count(k) != 0;
 }
 bool FlipRecovery::is_protected_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
   const auto k = face_key(a, b, c);
   return std::binary_search(protected_faces_.begin(), protected_faces_.end(), k) ||
-         std::find(extra_faces_.begin(), extra_faces_.end(), k) != extra_faces_.end();
+         extra_faces_.count(k) != 0;
 }
 
 void FlipRecovery::finish() { flips_mesh_.finish(); }
@@ -268,6 +268,113 @@ bool FlipRecovery::recover_edge(std::uint32_t u, std::uint32_t v) {
     if (!advance(u, v) && !advance(v, u)) return false;
   }
   return has_edge(u, v);
+}
+
+std::uint32_t FlipRecovery::insert_point(const Vec3& p, std::uint32_t near) {
+  // Search: from the ball of `near`, across every facet p lies strictly beyond.
+  ball_of(near < vertex_tet_.size() ? near : 0, ball_);
+  if (mark_.size() < records_.size()) mark_.resize(records_.size(), 0);
+  ++stamp_;
+  stack_.assign(ball_.begin(), ball_.end());
+  for (const std::uint32_t t : stack_) mark_[t] = stamp_;
+  std::uint32_t found = kNone;
+  std::array<Sign, 4> side{};
+  for (std::size_t k = 0; k < stack_.size() && found == kNone; ++k) {
+    const std::uint32_t t = stack_[k];
+    const auto& rec = records_[t];
+    if (rec.vertex[0] == kInf) continue;
+    bool inside = true;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const auto& f = kFacet[i];
+      side[i] = orient3d(P(rec.vertex[f[0]]), P(rec.vertex[f[1]]), P(rec.vertex[f[2]]), p);
+      if (side[i] != Sign::Negative) continue;
+      inside = false;
+      const std::uint32_t n = rec.neighbour[i] >> 2;
+      if (mark_[n] != stamp_) mark_[n] = stamp_, stack_.push_back(n);
+    }
+    if (inside) found = t;
+  }
+  if (found == kNone) return kNone;  // outside the hull
+  const auto rec = records_[found];
+  std::vector<std::uint32_t> zero;
+  for (std::uint32_t i = 0; i < 4; ++i)
+    if (side[i] == Sign::Zero) zero.push_back(i);
+  if (zero.size() > 2) return kNone;  // a vertex
+  const auto pid = static_cast<std::uint32_t>(mesh_.point_count());
+  std::vector<std::uint32_t> old;
+  std::vector<Tuple> fresh;
+  // Tetrahedron t's facets but the ones listed, each with p: positive, p being strictly on
+  // the inner side of each.
+  const auto cone = [&](std::uint32_t t, std::uint32_t skip_a, std::uint32_t skip_b) {
+    const auto& x = records_[t].vertex;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (x[i] == skip_a || x[i] == skip_b) continue;  // the facet opposite skip_a: the one p lies on
+      const auto& f = kFacet[i];
+      fresh.push_back({x[f[0]], x[f[1]], x[f[2]], pid});
+    }
+  };
+  if (zero.empty()) {
+    old = {found};
+    const auto& f = kFacet;
+    for (std::uint32_t i = 0; i < 4; ++i) fresh.push_back({rec.vertex[f[i][0]], rec.vertex[f[i][1]], rec.vertex[f[i][2]], pid});
+  } else if (zero.size() == 1) {
+    // On the facet opposite vertex i: both tetrahedra, less that facet.
+    const std::uint32_t i = zero[0];
+    const auto& f = kFacet[i];
+    const std::uint32_t a = rec.vertex[f[0]], b = rec.vertex[f[1]], c = rec.vertex[f[2]];
+    const std::uint32_t t2 = rec.neighbour[i] >> 2;
+    if (is_protected_face(a, b, c)) return kNone;
+    const std::uint32_t apex2 = records_[t2].vertex[rec.neighbour[i] & 3u];
+    old = {found, t2};
+    cone(found, rec.vertex[i], kNone);
+    cone(t2, apex2, kNone);
+  } else {
+    // On the edge shared by the two zero facets: every tetrahedron of its shell, less the faces
+    // through the edge.
+    std::uint32_t e[2], m = 0;
+    for (std::uint32_t i = 0; i < 4; ++i)
+      if (i != zero[0] && i != zero[1]) e[m++] = rec.vertex[i];
+    if (is_protected_edge(e[0], e[1])) return kNone;
+    const std::vector<std::uint32_t> sh = shell(mesh_, found, e[0], e[1]);
+    for (const std::uint32_t t : sh) {
+      const auto& x = records_[t].vertex;
+      for (const std::uint32_t w : x)
+        if (w != e[0] && w != e[1] && is_protected_face(e[0], e[1], w)) return kNone;
+    }
+    old = sh;
+    for (const std::uint32_t t : sh) {
+      // The facets opposite e0 and e1 (each holds the other end and the two ring vertices).
+      const auto& x = records_[t].vertex;
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        if (x[i] != e[0] && x[i] != e[1]) continue;
+        const auto& f = kFacet[i];
+        fresh.push_back({x[f[0]], x[f[1]], x[f[2]], pid});
+      }
+    }
+  }
+  mesh_.mutable_points().push_back(p);
+  vertex_tet_.push_back(kNone);
+  // Every new tetrahedron strictly positive, every new ghost's hull facet a proper triangle (p
+  // on the hull's surface leaves the hull as it was), or the location was wrong.
+  const auto proper = [&](const Tuple& t) {
+    std::uint32_t m = 4;
+    for (std::uint32_t j = 0; j < 4; ++j)
+      if (t[j] == kInf) m = j;
+    if (m == 4) return orient3d(P(t[0]), P(t[1]), P(t[2]), P(t[3])) == Sign::Positive;
+    const Vec3 &x = P(t[1 ^ m]), &y = P(t[2 ^ m]), &z = P(t[3 ^ m]);
+    return !(orient2d(Vec2{x.x, x.y}, Vec2{y.x, y.y}, Vec2{z.x, z.y}) == Sign::Zero &&
+             orient2d(Vec2{x.y, x.z}, Vec2{y.y, y.z}, Vec2{z.y, z.z}) == Sign::Zero &&
+             orient2d(Vec2{x.z, x.x}, Vec2{y.z, y.x}, Vec2{z.z, z.x}) == Sign::Zero);
+  };
+  for (const Tuple& t : fresh)
+    if (!proper(t)) {
+      mesh_.mutable_points().pop_back();
+      vertex_tet_.pop_back();
+      return kNone;
+    }
+  flips_mesh_.replace(old, fresh, ids_);
+  replaced(ids_);
+  return pid;
 }
 
 bool FlipRecovery::crosses(std::uint32_t p, std::uint32_t q, std::uint32_t a, std::uint32_t b, std::uint32_t c) const {

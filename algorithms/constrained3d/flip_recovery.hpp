@@ -19,6 +19,8 @@
 
 #include <array>
 #include <cstdint>
+#include <set>
+#include <unordered_set>
 #include <vector>
 
 #include "algorithms/delaunay3d/flip_mesh.hpp"
@@ -41,6 +43,11 @@ class FlipRecovery {
   bool recover_edge(std::uint32_t u, std::uint32_t v);
   // Makes abc a face if removing the edges that cross it can; true if it is one afterwards.
   bool recover_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+  // Inserts p as a new vertex (appended to the points) by splitting what holds it, without
+  // flips: a tetrahedron 1 -> 4, a face 2 -> 6, an edge n -> 2n, located by a search from the
+  // ball of vertex `near`. Returns its id, or kNone (nothing changed) where p is outside the hull,
+  // on a ghost, equal to a vertex, or inside a protected face or edge.
+  std::uint32_t insert_point(const Vec3& p, std::uint32_t near);
   // Adds a constraint to the protected ones (after recovering it).
   void protect_edge(std::uint32_t u, std::uint32_t v);
   void protect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
@@ -75,8 +82,10 @@ class FlipRecovery {
   std::vector<Tetrahedralization3::Record>& records_;
   FlipMesh flips_mesh_;
   std::vector<std::uint32_t> vertex_tet_;
-  std::vector<std::uint64_t> protected_edges_, extra_edges_;
-  std::vector<std::array<std::uint32_t, 3>> protected_faces_, extra_faces_;
+  std::vector<std::uint64_t> protected_edges_;
+  std::vector<std::array<std::uint32_t, 3>> protected_faces_;
+  std::unordered_set<std::uint64_t> extra_edges_;
+  std::set<std::array<std::uint32_t, 3>> extra_faces_;
   std::vector<std::uint32_t> mark_;
   std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> ids_, stack_, ball_;

@@ -1,5 +1,7 @@
-// Method "recover": the book's boundary recovery (§3.5.3). The Delaunay tetrahedralization of the
-// vertices, then each round, on a copy of it: every missing edge piece recovered by flips along
+// Method "recover": the book's boundary recovery (§3.5.3), in two ways. In place
+// (recover_in_place.cpp): flips, and Steiner points split into the transformed tetrahedralization.
+// By rounds, where that gets stuck: the Delaunay tetrahedralization of the vertices, then each
+// round, on a copy of it: every missing edge piece recovered by flips along
 // its pipe, then every missing triangle (one with no Steiner point on it) by removing the edges
 // that cross it (flip_recovery.hpp). What the transformations cannot recover gets Steiner
 // points as in "conforming" (edge pieces split on concentric shells; triangles refined, with
@@ -19,7 +21,8 @@
 
 namespace dtlab {
 
-void constrained3d_recover(Constrained3dContext& c) {
+// The rounds above (Steiner points into the Delaunay tetrahedralization, flips on a copy).
+void recover_by_rounds(Constrained3dContext& c) {
   using Clock = std::chrono::steady_clock;
   const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
   SteinerInserter inserter(c);
@@ -86,6 +89,25 @@ void constrained3d_recover(Constrained3dContext& c) {
     }
   }
   c.rounding_checks_failed = inserter.rounding_checks_failed();
+}
+
+std::string recover_in_place(Constrained3dContext& c);  // recover_in_place.cpp
+
+void constrained3d_recover(Constrained3dContext& c) {
+  // First with every Steiner point placed into the transformed tetrahedralization (TetGen's way,
+  // fewer points); where that gets stuck, the rounds from the Delaunay tetrahedralization.
+  Constrained3dContext saved = c;
+  std::string why;
+  try {
+    why = recover_in_place(c);
+    if (why.empty()) return;
+  } catch (const InputError& e) {
+    why = e.what();
+  }
+  c = std::move(saved);
+  c.messages.push_back("recover: in place recovery gave up (" + why +
+                       "); Steiner points inserted into the Delaunay tetrahedralization between rounds of flips");
+  recover_by_rounds(c);
 }
 
 }  // namespace dtlab

@@ -337,7 +337,8 @@ bool SteinerInserter::is_vertex(const Vec3& p) const {
   return false;
 }
 
-std::uint32_t SteinerInserter::add_vertex(const Vec3& p, const std::string& what, std::uint32_t item) {
+std::uint32_t SteinerInserter::add_vertex(const Vec3& p, const std::string& what, std::uint32_t item,
+                                          std::uint32_t hint) {
   if (c_.steiner.size() >= c_.steiner_limit)
     throw InputError("constrained3d: " + what + " needs more than the limit of " + std::to_string(c_.steiner_limit) +
                          " Steiner points",
@@ -351,7 +352,11 @@ std::uint32_t SteinerInserter::add_vertex(const Vec3& p, const std::string& what
       throw InputError("constrained3d: a Steiner point of " + what + " rounds onto vertex " + std::to_string(v + 1) +
                            "; the input is too fine for doubles there",
                        {item});
-  const std::uint32_t id = inserter_.insert(p);
+  const std::uint32_t id = place_ ? place_(p, hint) : inserter_.insert(p);
+  if (id == Tetrahedralization3::kNone)
+    throw InputError("constrained3d: a Steiner point of " + what +
+                         " cannot be placed in the transformed tetrahedralization (on a constraint or the hull)",
+                     {item});
   same.push_back(id);
   return id;
 }
@@ -367,7 +372,7 @@ bool SteinerInserter::insert_split(const EdgeSplit& r) {
   SteinerPoint3 s{.kind = SteinerPoint3::Kind::OnEdge, .owner = edge.face, .support = {edge.a, edge.b, 0},
                   .parameters = {r.t, 0}};
   const auto pos = at - edge.t.begin();
-  const std::uint32_t id = add_vertex(x.point, what, edge.face);
+  const std::uint32_t id = add_vertex(x.point, what, edge.face, edge.a);
   if (!steiner_point_within_rounding_bound(c_.mesh.points(), s, x.point)) ++rounding_failed_;
   c_.steiner.push_back(s);
   edge.t.insert(edge.t.begin() + pos, r.t);
@@ -405,7 +410,7 @@ std::size_t SteinerInserter::insert(const std::vector<EdgeSplit>& splits, const 
       }
       SteinerPoint3 s{.kind = SteinerPoint3::Kind::OnFace, .owner = r.facet, .support = facet.corners,
                       .parameters = {s0, t0}};
-      const std::uint32_t id = add_vertex(x, "triangle " + std::to_string(r.facet + 1), r.facet);
+      const std::uint32_t id = add_vertex(x, "triangle " + std::to_string(r.facet + 1), r.facet, facet.corners[0]);
       if (!steiner_point_within_rounding_bound(p(), s, x)) ++rounding_failed_;
       c_.steiner.push_back(s);
       facet.interior.push_back(id);

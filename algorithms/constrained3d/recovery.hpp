@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <unordered_map>
 #include <string>
 #include <vector>
@@ -109,17 +110,23 @@ void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const F
 class SteinerInserter {
  public:
   explicit SteinerInserter(Constrained3dContext& c);
+  // Where the points go instead of Delaunay insertion (a tetrahedralization no longer Delaunay):
+  // place(p, a vertex near p) returns p's new vertex id, or kNone where it cannot place p (then
+  // insert throws InputError naming the item).
+  using Placement = std::function<std::uint32_t(const Vec3&, std::uint32_t)>;
+  void set_placement(Placement place) { place_ = std::move(place); }
   std::size_t insert(const std::vector<EdgeSplit>& splits, const std::vector<FacetPoint>& points);
   std::uint32_t rounding_checks_failed() const noexcept { return rounding_failed_; }
   // The last triangle whose request could not be placed at all (kNone if none).
   std::uint32_t stuck_facet() const noexcept { return stuck_facet_; }
 
  private:
-  std::uint32_t add_vertex(const Vec3& p, const std::string& what, std::uint32_t item);
+  std::uint32_t add_vertex(const Vec3& p, const std::string& what, std::uint32_t item, std::uint32_t hint);
   bool is_vertex(const Vec3& p) const;
   bool insert_split(const EdgeSplit& r);
   Constrained3dContext& c_;
   DelaunayInserter inserter_;
+  Placement place_;
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> by_coordinates_;
   std::uint32_t rounding_failed_ = 0;
   std::uint32_t stuck_facet_ = Tetrahedralization3::kNone;

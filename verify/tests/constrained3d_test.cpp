@@ -251,6 +251,7 @@ TEST(Constrained3d, Schonhardt) {
     std::printf("  recover: Steiner on edges %u, on faces %u\n", recovered.result.steiner_points.on_edges,
                 recovered.result.steiner_points.on_faces);
     EXPECT_GT(recovered.result.steiner_points.total(), 0u);
+    EXPECT_TRUE(recovered.result.messages.empty()) << recovered.result.messages.front();  // recovered in place
   }
 }
 
@@ -274,8 +275,9 @@ TEST(Constrained3d, Chazelle) {
     std::printf("Chazelle n = %d: %zu vertices, Steiner on edges %u, on faces %u (n^2 = %d)\n", n, s.points.size(),
                 run.result.steiner_points.on_edges, run.result.steiner_points.on_faces, n * n);
     const auto recovered = run_and_check(s, "recover");
-    std::printf("  recover: Steiner on edges %u, on faces %u\n", recovered.result.steiner_points.on_edges,
-                recovered.result.steiner_points.on_faces);
+    std::printf("  recover: Steiner on edges %u, on faces %u%s\n", recovered.result.steiner_points.on_edges,
+                recovered.result.steiner_points.on_faces,
+                recovered.result.messages.empty() ? "" : (" (" + recovered.result.messages.front() + ")").c_str());
   }
 }
 

@@ -1,0 +1,228 @@
+// Method "recover" in place (recover.cpp): one tetrahedralization, transformed by flips
+// (flip_recovery.hpp) and split at Steiner points without any Delaunay insertion, as TetGen
+// does. Edges: every missing piece recovered by flips along its pipe, else split (concentric
+// shells, as "conforming") into the mesh, and its halves tried again. Triangles: each is given a
+// triangulation of its vertices in its own (s, t) parameters (its boundary polygon clipped ear by
+// ear, then its interior points each splitting the triangle that holds it); every triangle of
+// it is recovered by flips (its new edges first, then the face), and where one is not, its
+// centroid becomes a Steiner point of the input triangle and the triangulation is made again.
+// Gives up (returning why, or throwing InputError) where a point cannot be placed or a triangle
+// stays missing after its share of points; the caller then takes the rounds of recover.cpp.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "algorithms/constrained3d/flip_recovery.hpp"
+#include "algorithms/constrained3d/recovery.hpp"
+#include "kernel/error.hpp"
+#include "kernel/rounding.hpp"
+
+namespace dtlab {
+
+namespace {
+
+using Tri = std::array<std::uint32_t, 3>;
+
+Sign turn(const FacetParameters& st, std::uint32_t a, std::uint32_t b, std::uint32_t d) {
+  const auto &pa = st.at(a), &pb = st.at(b), &pd = st.at(d);
+  return ((pb[0] - pa[0]) * (pd[1] - pa[1]) - (pb[1] - pa[1]) * (pd[0] - pa[0])).sign();
+}
+
+// A triangulation of facet f's vertices in (s, t), counter-clockwise (the input triangle's turn);
+// empty if an interior point is not strictly inside it (cannot happen for points made inside).
+std::vector<Tri> facet_triangulation(const Constrained3dContext& c, std::uint32_t f, const FacetParameters& st) {
+  std::vector<std::uint32_t> polygon;
+  for (const auto& piece : facet_boundary(c, f)) polygon.push_back(piece[0]);
+  std::vector<Tri> out;
+  while (polygon.size() > 3) {
+    const std::size_t n = polygon.size();
+    // An ear: a strictly convex corner (no flat triangle) whose clipping leaves a polygon with a
+    // strictly convex corner still (clipping a corner of the triangle first could leave only the
+    // points on its opposite side, all in a line).
+    const auto convex_at = [&](const std::vector<std::uint32_t>& q, std::size_t i) {
+      const std::size_t m = q.size();
+      return turn(st, q[(i + m - 1) % m], q[i], q[(i + 1) % m]) == Sign::Positive;
+    };
+    std::size_t ear = n;
+    std::vector<std::uint32_t> rest;
+    for (std::size_t i = 0; i < n && ear == n; ++i) {
+      if (!convex_at(polygon, i)) continue;
+      rest = polygon;
+      rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(i));
+      for (std::size_t j = 0; j < rest.size() && ear == n; ++j)
+        if (convex_at(rest, j)) ear = i;
+    }
+    if (ear == n) return {};
+    out.push_back({polygon[(ear + n - 1) % n], polygon[ear], polygon[(ear + 1) % n]});
+    polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(ear));
+  }
+  out.push_back({polygon[0], polygon[1], polygon[2]});
+  for (const std::uint32_t x : c.facets[f].interior) {
+    bool placed = false;
+    for (std::size_t k = 0; k < out.size() && !placed; ++k) {
+      const Tri t = out[k];
+      const Sign s0 = turn(st, t[0], t[1], x), s1 = turn(st, t[1], t[2], x), s2 = turn(st, t[2], t[0], x);
+      if (s0 == Sign::Negative || s1 == Sign::Negative || s2 == Sign::Negative) continue;
+      const int zeros = (s0 == Sign::Zero) + (s1 == Sign::Zero) + (s2 == Sign::Zero);
+      if (zeros > 1) return {};
+      if (zeros == 0) {
+        out[k] = {t[0], t[1], x};
+        out.push_back({t[1], t[2], x});
+        out.push_back({t[2], t[0], x});
+      } else {
+        // On side (u, v) of t: t and the triangle across split in two each.
+        const std::uint32_t u = s0 == Sign::Zero ? t[0] : s1 == Sign::Zero ? t[1] : t[2];
+        const std::uint32_t v = s0 == Sign::Zero ? t[1] : s1 == Sign::Zero ? t[2] : t[0];
+        const std::uint32_t w = s0 == Sign::Zero ? t[2] : s1 == Sign::Zero ? t[0] : t[1];
+        std::size_t other = out.size();
+        for (std::size_t j = 0; j < out.size() && other == out.size(); ++j)
+          for (int r = 0; r < 3; ++r)
+            if (out[j][r] == v && out[j][(r + 1) % 3] == u) other = j;
+        if (other == out.size()) return {};  // on the triangle's boundary: not an interior point
+        const Tri o = out[other];
+        std::uint32_t z = o[0];
+        for (const std::uint32_t y : o)
+          if (y != u && y != v) z = y;
+        out[k] = {u, x, w};
+        out.push_back({x, v, w});
+        out[other] = {v, x, z};
+        out.push_back({x, u, z});
+      }
+      placed = true;
+    }
+    if (!placed) return {};
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string recover_in_place(Constrained3dContext& c) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
+  auto start = Clock::now();
+  std::vector<std::uint64_t> protected_edges;
+  for (const ConstraintEdge3& e : c.edges)
+    for (std::size_t i = 0; i + 1 < e.chain.size(); ++i) protected_edges.push_back(MeshIndex::key(e.chain[i], e.chain[i + 1]));
+  std::sort(protected_edges.begin(), protected_edges.end());
+  std::vector<Tri> protected_faces;
+  for (const ConstraintFacet3& f : c.facets) {
+    Tri k = f.corners;
+    std::sort(k.begin(), k.end());
+    protected_faces.push_back(k);
+  }
+  std::sort(protected_faces.begin(), protected_faces.end());
+  FlipRecovery recovery(c.mesh, std::move(protected_edges), std::move(protected_faces));
+  SteinerInserter inserter(c);
+  inserter.set_placement([&](const Vec3& p, std::uint32_t near) { return recovery.insert_point(p, near); });
+
+  // Edges. Each round splits the pieces that flips could not make; the Steiner limit (in the
+  // inserter) bounds the rounds.
+  std::vector<EdgeSplit> splits;
+  const std::vector<FacetPoint> none;
+  for (;;) {
+    ++c.rounds;
+    splits.clear();
+    for (std::uint32_t e = 0; e < c.edges.size(); ++e) {
+      const auto& chain = c.edges[e].chain;
+      for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+        if (!recovery.has_edge(chain[i], chain[i + 1]) && !recovery.recover_edge(chain[i], chain[i + 1]))
+          splits.push_back({e, edge_split_parameter(c, e, i)});
+    }
+    if (splits.empty()) break;
+    // One at a time: a split point that lands on another constraint (two edges a hair apart, as
+    // in Chazelle's polyhedron) is moved along its piece, towards either end, before giving up.
+    std::size_t added = 0;
+    for (const EdgeSplit& split : splits) {
+      const auto& t = c.edges[split.edge].t;
+      const auto at = std::lower_bound(t.begin(), t.end(), split.t);
+      if (at == t.begin() || at == t.end()) return "an edge split outside its piece";
+      const double lo = *(at - 1), hi = *at;
+      // Flips for a later piece may have made this one since it was found missing.
+      const auto& chain = c.edges[split.edge].chain;
+      const auto piece = static_cast<std::size_t>(at - t.begin());
+      if (recovery.has_edge(chain[piece - 1], chain[piece])) continue;
+      bool placed = false;
+      for (int k = 0; k < 7 && !placed; ++k) {
+        const double w = k == 0 ? 0.0 : std::ldexp(k % 2 ? 1.0 : -1.0, -(k + 3) / 2);  // 0, +-1/4, +-1/8, +-1/16
+        const double tk = split.t + w * (hi - lo);
+        if (!(lo < tk && tk < hi)) continue;
+        try {
+          added += inserter.insert({{split.edge, tk}}, none);
+          placed = true;
+        } catch (const InputError&) {
+        }
+      }
+      if (!placed)
+        return "a Steiner point of the edge between vertices " + std::to_string(c.edges[split.edge].a + 1) + " and " +
+               std::to_string(c.edges[split.edge].b + 1) + " lands on another constraint or the hull";
+    }
+    if (added == 0 && !splits.empty()) continue;  // every piece was made meanwhile: look again
+    for (const ConstraintEdge3& e : c.edges)
+      for (std::size_t i = 0; i + 1 < e.chain.size(); ++i) recovery.protect_edge(e.chain[i], e.chain[i + 1]);
+  }
+  c.edge_seconds += seconds(start);
+  start = Clock::now();
+
+  // Triangles: a few points each at most, past which the rounds are left to do it.
+  std::vector<FacetPoint> points;
+  std::vector<std::uint32_t> tries(c.facets.size(), 0);
+  constexpr std::uint32_t kPointsPerTriangle = 16;
+  for (;;) {
+    ++c.rounds;
+    points.clear();
+    bool edges_missing = false;
+    for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
+      const FacetParameters st = facet_parameters(c, f);
+      const std::vector<Tri> tris = facet_triangulation(c, f, st);
+      if (tris.empty()) return "triangle " + std::to_string(f + 1) + " has a point off its interior";
+      for (const Tri& t : tris) {
+        bool ok = true;
+        for (int r = 0; r < 3 && ok; ++r)
+          ok = recovery.has_edge(t[r], t[(r + 1) % 3]) || recovery.recover_edge(t[r], t[(r + 1) % 3]);
+        if (ok) ok = recovery.has_face(t[0], t[1], t[2]) || recovery.recover_face(t[0], t[1], t[2]);
+        if (ok) {
+          for (int r = 0; r < 3; ++r) recovery.protect_edge(t[r], t[(r + 1) % 3]);
+          recovery.protect_face(t[0], t[1], t[2]);
+          continue;
+        }
+        if (++tries[f] > kPointsPerTriangle)
+          return "triangle " + std::to_string(f + 1) + " is still missing after " + std::to_string(kPointsPerTriangle) +
+                 " Steiner points";
+        // The centroid of the missing triangle, in (s, t) rounded to doubles.
+        const auto &a = st.at(t[0]), &b = st.at(t[1]), &d = st.at(t[2]);
+        const double s = round_to_double((a[0] + b[0] + d[0]) / Rational(3));
+        const double tt = round_to_double((a[1] + b[1] + d[1]) / Rational(3));
+        points.push_back({.facet = f, .s = s, .t = tt, .fallback_s = s, .fallback_t = tt, .piece = {t[0], t[1]}});
+        break;  // one point per triangle and round
+      }
+    }
+    // A boundary piece a facet point's fallback split goes back to the edges' flips above; a
+    // piece missing now makes the rounds take over.
+    for (const ConstraintEdge3& e : c.edges)
+      for (std::size_t i = 0; i + 1 < e.chain.size() && !edges_missing; ++i)
+        if (recovery.has_edge(e.chain[i], e.chain[i + 1]) || recovery.recover_edge(e.chain[i], e.chain[i + 1]))
+          recovery.protect_edge(e.chain[i], e.chain[i + 1]);
+        else
+          edges_missing = true;
+    if (edges_missing) return "an edge piece made by a triangle's point is missing";
+    if (points.empty()) break;
+    if (inserter.insert({}, points) == 0) return "triangle points repeat points already there";
+  }
+  recovery.finish();
+  c.face_seconds += seconds(start);
+
+  // The pieces of every triangle, found and checked in the final mesh.
+  const MeshIndex index(c.mesh);
+  std::vector<std::array<std::uint32_t, 2>> missing;
+  for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
+    missing.clear();
+    if (!cover_facet(c, f, index, missing)) return "triangle " + std::to_string(f + 1) + " is not covered by its pieces";
+  }
+  c.rounding_checks_failed = inserter.rounding_checks_failed();
+  return {};
+}
+
+}  // namespace dtlab
