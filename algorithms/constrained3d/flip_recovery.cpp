@@ -250,19 +250,24 @@ bool FlipRecovery::advance(std::uint32_t u, std::uint32_t v) {
     const auto toward_v = [&](const std::vector<std::uint32_t>& ring, const std::vector<PolygonTriangle>& tris) {
       return has_uv(ring, tris) || fan_from_u(ring, tris);
     };
+    bool moved;
     if (zeros == 0) {
-      if (flip23(t, i)) return true;
       // Not convex across abc: one of its edges is reflex; remove one of them instead.
-      return remove_edge(t, a, b, toward_v) || remove_edge(t, b, c, toward_v) || remove_edge(t, c, a, toward_v);
+      moved = flip23(t, i) || remove_edge(t, a, b, toward_v) || remove_edge(t, b, c, toward_v) ||
+              remove_edge(t, c, a, toward_v);
+    } else {
+      const std::uint32_t e0 = s[0] == Sign::Zero ? a : s[1] == Sign::Zero ? b : c;
+      const std::uint32_t e1 = s[0] == Sign::Zero ? b : s[1] == Sign::Zero ? c : a;
+      moved = remove_edge(t, e0, e1, toward_v);
     }
-    const std::uint32_t e0 = s[0] == Sign::Zero ? a : s[1] == Sign::Zero ? b : c;
-    const std::uint32_t e1 = s[0] == Sign::Zero ? b : s[1] == Sign::Zero ? c : a;
-    return remove_edge(t, e0, e1, toward_v);
+    if (!moved && block_[0] == kNone) block_ = {a, b, c};
+    return moved;
   }
   return false;
 }
 
 bool FlipRecovery::recover_edge(std::uint32_t u, std::uint32_t v) {
+  block_ = {kNone, kNone, kNone};
   for (int step = 0; step < kSteps; ++step) {
     if (has_edge(u, v)) return true;
     if (!advance(u, v) && !advance(v, u)) return false;
@@ -422,6 +427,13 @@ void FlipRecovery::crossing_edges(std::uint32_t a, std::uint32_t b, std::uint32_
     }
   }
   std::sort(out.begin(), out.end());
+}
+
+std::array<std::uint32_t, 2> FlipRecovery::crossing_edge(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  std::vector<std::array<std::uint32_t, 3>> crossing;
+  crossing_edges(a, b, c, crossing);
+  if (crossing.empty()) return {kNone, kNone};
+  return {crossing.front()[0], crossing.front()[1]};
 }
 
 bool FlipRecovery::recover_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {

@@ -41,6 +41,11 @@ class FlipRecovery {
   bool has_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   // Makes uv an edge if the walks above can; true if it is one afterwards.
   bool recover_edge(std::uint32_t u, std::uint32_t v);
+  // After recover_edge(u, v) failed: the face of the mesh where the walk from u (or else from v)
+  // stopped, which the segment crosses or touches (kNone if it found none).
+  std::array<std::uint32_t, 3> blocking_face() const noexcept { return block_; }
+  // An edge crossing the open triangle abc ({kNone, kNone} if none).
+  std::array<std::uint32_t, 2> crossing_edge(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   // Makes abc a face if removing the edges that cross it can; true if it is one afterwards.
   bool recover_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   // Inserts p as a new vertex (appended to the points) by splitting what holds it, without
@@ -90,6 +95,7 @@ class FlipRecovery {
   std::uint32_t stamp_ = 0;
   std::vector<std::uint32_t> ids_, stack_, ball_;
   std::uint64_t flips_ = 0, removals_ = 0;
+  std::array<std::uint32_t, 3> block_{Tetrahedralization3::kNone, Tetrahedralization3::kNone, Tetrahedralization3::kNone};
 };
 
 }  // namespace dtlab

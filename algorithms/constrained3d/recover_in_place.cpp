@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,56 @@ std::vector<Tri> facet_triangulation(const Constrained3dContext& c, std::uint32_
   return out;
 }
 
+// Where to split piece i of edge e that flips could not make: where it meets the face its walk
+// stopped at (TetGen's choice: the pipe is cut there), kept in the middle three quarters of the
+// piece; the usual split (concentric shells, midpoint) if there is no such face. A placement in
+// doubles: any parameter inside the piece gives an exact point of the edge.
+double split_at_block(const Constrained3dContext& c, const FlipRecovery& recovery, std::uint32_t e, std::size_t i) {
+  const auto [x, y, z] = recovery.blocking_face();
+  if (x == Tetrahedralization3::kNone || x == Tetrahedralization3::kInfinite || y == Tetrahedralization3::kInfinite ||
+      z == Tetrahedralization3::kInfinite)
+    return edge_split_parameter(c, e, i);
+  const auto P = c.mesh.points();
+  const ConstraintEdge3& edge = c.edges[e];
+  const Vec3 &u = P[edge.chain[i]], &v = P[edge.chain[i + 1]];
+  const Vec3 n = cross(P[y] - P[x], P[z] - P[x]);
+  const double du = dot(n, u - P[x]), dv = dot(n, v - P[x]);
+  if (!(du != dv) || !std::isfinite(du) || !std::isfinite(dv)) return edge_split_parameter(c, e, i);
+  const double lambda = std::clamp(du / (du - dv), 0.125, 0.875);
+  const double t0 = edge.t[i], t1 = edge.t[i + 1];
+  const double t = t0 + lambda * (t1 - t0);
+  return t0 < t && t < t1 ? t : edge_split_parameter(c, e, i);
+}
+
+// Where an edge of the mesh crosses sub-triangle t of facet f, in f's (s, t), computed in doubles
+// (a placement: the point made is the exact facet point at these parameters); nothing if no edge
+// crosses t or the point found is not strictly inside t.
+std::optional<std::array<double, 2>> crossing_in_triangle(const Constrained3dContext& c, FlipRecovery& recovery,
+                                                          std::uint32_t f, const FacetParameters& st, const Tri& t) {
+  const auto [p, q] = recovery.crossing_edge(t[0], t[1], t[2]);
+  if (p == Tetrahedralization3::kNone) return std::nullopt;
+  const auto P = c.mesh.points();
+  const auto& corners = c.facets[f].corners;
+  const Vec3 A = P[corners[0]], e1 = P[corners[1]] - A, e2 = P[corners[2]] - A;
+  const Vec3 n = cross(e1, e2);
+  const double dp = dot(n, P[p] - A), dq = dot(n, P[q] - A);
+  if (!(dp != dq)) return std::nullopt;
+  const Vec3 x = P[p] + (dp / (dp - dq)) * (P[q] - P[p]) - A;
+  // x = s e1 + t e2: the 2 x 2 normal equations.
+  const double g11 = dot(e1, e1), g12 = dot(e1, e2), g22 = dot(e2, e2), r1 = dot(x, e1), r2 = dot(x, e2);
+  const double det = g11 * g22 - g12 * g12;
+  if (!(det > 0)) return std::nullopt;
+  const std::array<double, 2> at{(r1 * g22 - r2 * g12) / det, (r2 * g11 - r1 * g12) / det};
+  if (!std::isfinite(at[0]) || !std::isfinite(at[1])) return std::nullopt;
+  // Strictly inside t, exactly.
+  const Rational S(at[0]), T(at[1]);
+  for (int r = 0; r < 3; ++r) {
+    const auto &u = st.at(t[r]), &v = st.at(t[(r + 1) % 3]);
+    if (((v[0] - u[0]) * (T - u[1]) - (v[1] - u[1]) * (S - u[0])).sign() != Sign::Positive) return std::nullopt;
+  }
+  return at;
+}
+
 }  // namespace
 
 std::string recover_in_place(Constrained3dContext& c) {
@@ -129,7 +180,7 @@ std::string recover_in_place(Constrained3dContext& c) {
       const auto& chain = c.edges[e].chain;
       for (std::size_t i = 0; i + 1 < chain.size(); ++i)
         if (!recovery.has_edge(chain[i], chain[i + 1]) && !recovery.recover_edge(chain[i], chain[i + 1]))
-          splits.push_back({e, edge_split_parameter(c, e, i)});
+          splits.push_back({e, split_at_block(c, recovery, e, i)});
     }
     if (splits.empty()) break;
     // One at a time: a split point that lands on another constraint (two edges a hair apart, as
@@ -191,11 +242,14 @@ std::string recover_in_place(Constrained3dContext& c) {
         if (++tries[f] > kPointsPerTriangle)
           return "triangle " + std::to_string(f + 1) + " is still missing after " + std::to_string(kPointsPerTriangle) +
                  " Steiner points";
-        // The centroid of the missing triangle, in (s, t) rounded to doubles.
+        // The centroid of the missing triangle, in (s, t) rounded to doubles; first, where an edge
+        // crosses it, that crossing (TetGen's choice: the point cuts the edge's pipe there).
         const auto &a = st.at(t[0]), &b = st.at(t[1]), &d = st.at(t[2]);
         const double s = round_to_double((a[0] + b[0] + d[0]) / Rational(3));
         const double tt = round_to_double((a[1] + b[1] + d[1]) / Rational(3));
-        points.push_back({.facet = f, .s = s, .t = tt, .fallback_s = s, .fallback_t = tt, .piece = {t[0], t[1]}});
+        FacetPoint point{.facet = f, .s = s, .t = tt, .fallback_s = s, .fallback_t = tt, .piece = {t[0], t[1]}};
+        if (const auto cross = crossing_in_triangle(c, recovery, f, st, t)) point.s = (*cross)[0], point.t = (*cross)[1];
+        points.push_back(point);
         break;  // one point per triangle and round
       }
     }
