@@ -64,6 +64,7 @@ Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrai
   std::vector<std::array<std::uint32_t, 2>> segments;
   std::vector<std::uint32_t> ids;
   std::vector<std::uint32_t> kept;  // input indices
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicate_of;  // (dropped segment, the one kept)
   for (std::size_t k = 0; k < keyed.size(); ++k) {
     if (k > 0 && keyed[k][0] == keyed[k - 1][0] && keyed[k][1] == keyed[k - 1][1]) {
       std::size_t first = k - 1;
@@ -72,6 +73,7 @@ Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrai
         result.messages.push_back("segment " + number(keyed[k][2]) + " duplicates segment " +
                                   number(keyed[first][2]) + ": kept " + number(keyed[first][2]));
       ++result.message_count;
+      duplicate_of.emplace_back(keyed[k][2], keyed[first][2]);
       continue;
     }
     kept.push_back(keyed[k][2]);
@@ -106,8 +108,19 @@ Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrai
     }
     std::sort(result.constrained_edges.begin(), result.constrained_edges.end(),
               [](const ConstrainedEdge2& x, const ConstrainedEdge2& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
-    for (const auto& [a, b, s] : mesh.shared_constraints())
-      result.shared_edges.push_back({a, b, s, input.segment_markers.empty() ? 0 : input.segment_markers[s]});
+    const auto marker = [&](std::uint32_t s) { return input.segment_markers.empty() ? 0 : input.segment_markers[s]; };
+    for (const auto& [a, b, s] : mesh.shared_constraints()) result.shared_edges.push_back({a, b, s, marker(s)});
+    // A dropped duplicate covers the edges of the segment kept for it.
+    if (!duplicate_of.empty()) {
+      std::vector<std::vector<std::array<std::uint32_t, 2>>> edges_of(input.segments.size());
+      for (const auto* list : {&result.constrained_edges, &result.shared_edges})
+        for (const ConstrainedEdge2& e : *list) edges_of[e.segment].push_back({e.a, e.b});
+      for (const auto& [dropped, kept_one] : duplicate_of)
+        for (const auto& [a, b] : edges_of[kept_one]) result.shared_edges.push_back({a, b, dropped, marker(dropped)});
+    }
+    std::sort(result.shared_edges.begin(), result.shared_edges.end(), [](const ConstrainedEdge2& x, const ConstrainedEdge2& y) {
+      return std::tie(x.a, x.b, x.segment) < std::tie(y.a, y.b, y.segment);
+    });
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.predicate_stats = predicate_stats() - before;

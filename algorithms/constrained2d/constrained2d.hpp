@@ -95,8 +95,8 @@ struct Constrained2dResult {
   // "conforming") split points.
   std::vector<ConstrainedEdge2> constrained_edges;
   // The edges covered by more than one segment (collinear overlaps, chains sharing pieces after
-  // rounding): one entry per further segment, with its marker, sorted; each such edge is in
-  // constrained_edges with its lowest-numbered segment.
+  // rounding, the dropped duplicates of a segment): one entry per further segment, with its
+  // marker, sorted; each such edge is in constrained_edges with its lowest-numbered segment.
   std::vector<ConstrainedEdge2> shared_edges;
   std::uint32_t input_point_count = 0;
   std::uint32_t crossing_steiner_points = 0;  // from segment crossings

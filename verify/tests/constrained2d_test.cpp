@@ -525,6 +525,41 @@ TEST(Constrained2dRegression, BentChainsCrossAtRecordedPieces) {
   }
 }
 
+// fuzz/constrained2d_fuzz input (corpus: regression-duplicate-chains; its hole left out). Segment 3,
+// (1, 2.5)-(1 + 2 ulps, -2.5), has five duplicates (15, 19, 31, 51, 63), dropped with a message.
+// "conforming" bends its chain through input vertex 22, a little more than its rounding bound
+// off the segment; the kept segment's own edges admit it, the duplicates had none and found no
+// chain. A dropped duplicate now covers the kept segment's edges (shared_edges).
+TEST(Constrained2dRegression, DroppedDuplicatesCoverTheKeptChain) {
+  const std::vector<Vec2> pts = {
+      {0x1.8p+3, -0x1.fffffffffffffp+1}, {-0x1.ffffffffffffep+1, -0x1.4p+1}, {0x1.0000000000002p+0,
+      -0x1.4p+1}, {0x1p-1, 0x1.fffffffffffffp-1}, {-0x1.0000000000001p-1, 0x1.4000000000002p+1}, {0,
+      -0x1.ffffffffffffep-2}, {-0x1.bfffffffffffep+1, 0x1.8p+3}, {-0x1.fffffffffffffp+1, -0x1p+2}, {-0x1.4p+1,
+      0x1p+0}, {0x1p+0, 0x1.4p+1}, {0x1p-1, 0x1.e800000000003p+5}, {-0x1.ffffffffffffep-2, 0},
+      {-0x1.ffffffffffffep-2, -0x1.bffffffffffffp+1}, {0, 0x1p-142}, {0x1.7fffffffffffdp+0,
+      0x1.ffffffffffffdp-1}, {0x1p-1, -0x1.4fffffffffffep+5}, {-0x1.fffffffffffffp+5, 0x1p-142},
+      {0x1.6c00000000002p+5, 0x1.8p+0}, {-0x1.fffffffffffffp+1, -0x1p+2}, {-0x1.4p+1, 0x1p+0}, {0x1p+0,
+      -0x1.3fffffffffffep+1}, {0x1p-1, 0x1.bfffffffffffdp+1}, {0x1p+0, 0x1.0000000000003p+0},
+      {-0x1.0000000000003p-1, 0x1p+0}};
+  const std::vector<Segment> segs = {
+      {2, 3}, {15, 0}, {15, 3}, {9, 2}, {6, 0}, {1, 4}, {6, 0}, {1, 0}, {13, 19}, {6, 11}, {2, 1}, {8, 2}, {3,
+      15}, {2, 0}, {4, 15}, {2, 9}, {3, 9}, {2, 0}, {15, 3}, {9, 2}, {6, 0}, {1, 4}, {7, 0}, {1, 0}, {13, 19},
+      {6, 11}, {2, 1}, {8, 2}, {3, 15}, {2, 0}, {4, 15}, {2, 9}, {3, 9}, {2, 13}, {1, 4}, {4, 6}, {0, 1}, {0,
+      13}, {19, 6}, {3, 0}, {8, 1}, {8, 0}, {2, 0}, {2, 0}, {11, 2}, {1, 8}, {7, 9}, {2, 4}, {2, 3}, {15, 0},
+      {15, 3}, {9, 2}, {6, 0}, {1, 4}, {6, 0}, {1, 0}, {13, 19}, {6, 11}, {2, 1}, {8, 2}, {3, 15}, {0, 15},
+      {1, 2}, {2, 9}};
+  std::vector<int> markers;  // as the fuzz target numbers them
+  for (std::size_t k = 0; k < segs.size(); ++k) markers.push_back(static_cast<int>((k + 1) % 5));
+  for (const std::string& method : method_names()) {
+    const auto r = run(pts, segs, method, markers);
+    expect_valid(pts, segs, method, r, false, markers);
+    EXPECT_TRUE(std::any_of(r.shared_edges.begin(), r.shared_edges.end(),
+                            [](const ConstrainedEdge2& e) { return e.segment == 63; }))
+        << method;
+  }
+}
+
+
 // fuzz/constrained2d_fuzz input (CI run of 2026-11-23, reduced to its two segments):
 // AhgA+AH4APsAAnsAAAAC+QP5Av0BBKwGAAIAAwIGAwIC+QD/AQUA+AD9UAAAAFMAAABcAAAAAvsAAwH4AfoD/gEGAfgA+gEFAPwC+gEFAgEBAAMEAAQD/QIACRMCBwYLFQ8DAA4JDQQBFhAFDAcUAAg=
 // Segment 3 ends at vertex 3, an ulp left of the vertical segment 0, which it crosses just
