@@ -35,22 +35,11 @@ void constrained3d_conforming(Constrained3dContext& c) {
     }
     c.edge_seconds += std::chrono::duration<double>(Clock::now() - start).count();
     start = Clock::now();
-    std::vector<std::array<std::uint32_t, 2>> missing;
-    for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
-      missing.clear();
-      if (facet_still_covered(c, f, index) || cover_facet(c, f, index, missing)) continue;
-      const FacetParameters st = facet_parameters(c, f);
-      for (const auto& m : missing) request_facet_point(c, f, st, m, splits, points);
-    }
+    request_missing_facet_points(c, index, splits, points);
     const std::size_t added = splits.empty() && points.empty() ? 0 : inserter.insert(splits, points);
     c.face_seconds += std::chrono::duration<double>(Clock::now() - start).count();
     if (splits.empty() && points.empty()) break;
-    if (added == 0) {
-      const std::uint32_t f = inserter.stuck_facet();
-      throw InputError("constrained3d: triangle " + std::to_string(f + 1) +
-                           " cannot be recovered: its Steiner points round onto existing vertices",
-                       {f});
-    }
+    if (added == 0) inserter.throw_stuck();
   }
   c.rounding_checks_failed = inserter.rounding_checks_failed();
 }

@@ -26,6 +26,20 @@ constexpr int kSteps = 512;
 std::uint64_t edge_key(std::uint32_t u, std::uint32_t v) noexcept {
   return u < v ? std::uint64_t{u} << 32 | v : std::uint64_t{v} << 32 | u;
 }
+// The index of kInfinite in tuple t, or 4 if it is a finite tetrahedron.
+std::uint32_t infinite_index(const FlipMesh::Tuple& t) noexcept {
+  for (std::uint32_t j = 0; j < 4; ++j)
+    if (t[j] == kInf) return j;
+  return 4;
+}
+
+// x, y, z on one line, exactly: every coordinate projection flat.
+bool collinear(const Vec3& x, const Vec3& y, const Vec3& z) {
+  return orient2d(Vec2{x.x, x.y}, Vec2{y.x, y.y}, Vec2{z.x, z.y}) == Sign::Zero &&
+         orient2d(Vec2{x.y, x.z}, Vec2{y.y, y.z}, Vec2{z.y, z.z}) == Sign::Zero &&
+         orient2d(Vec2{x.z, x.x}, Vec2{y.z, y.x}, Vec2{z.z, z.x}) == Sign::Zero;
+}
+
 std::array<std::uint32_t, 3> face_key(std::uint32_t a, std::uint32_t b, std::uint32_t c) noexcept {
   std::array<std::uint32_t, 3> k{a, b, c};
   std::sort(k.begin(), k.end());
@@ -160,17 +174,11 @@ bool FlipRecovery::remove_edge(std::uint32_t t, std::uint32_t e0, std::uint32_t 
   // A new tetrahedron is valid if positive; a new ghost (the edge is on the hull) if its hull
   // facet is a proper triangle with no vertex of the shell strictly beyond it, so that the hull
   // stays convex (tetrahedralization3.hpp: orient3d(q, x, y, z) > 0 for q beyond facet xyz).
-  const auto valid_tuple = [&](const Tuple& t) {
-    std::uint32_t m = 4;
-    for (std::uint32_t j = 0; j < 4; ++j)
-      if (t[j] == kInf) m = j;
-    if (m == 4) return orient3d(P(t[0]), P(t[1]), P(t[2]), P(t[3])) == Sign::Positive;
-    const Vec3 &x = P(t[1 ^ m]), &y = P(t[2 ^ m]), &z = P(t[3 ^ m]);
-    const auto flat = [](double ux, double uy, double vx, double vy, double wx, double wy) {
-      return orient2d(Vec2{ux, uy}, Vec2{vx, vy}, Vec2{wx, wy}) == Sign::Zero;
-    };
-    if (flat(x.x, x.y, y.x, y.y, z.x, z.y) && flat(x.y, x.z, y.y, y.z, z.y, z.z) && flat(x.z, x.x, y.z, y.x, z.z, z.x))
-      return false;  // collinear
+  const auto valid_tuple = [&](const Tuple& tuple) {
+    const std::uint32_t m = infinite_index(tuple);
+    if (m == 4) return orient3d(P(tuple[0]), P(tuple[1]), P(tuple[2]), P(tuple[3])) == Sign::Positive;
+    const Vec3 &x = P(tuple[1 ^ m]), &y = P(tuple[2 ^ m]), &z = P(tuple[3 ^ m]);
+    if (collinear(x, y, z)) return false;
     for (const std::uint32_t p : ring)
       if (p != kInf && orient3d(P(p), x, y, z) == Sign::Positive) return false;
     return orient3d(P(a), x, y, z) != Sign::Positive && orient3d(P(b), x, y, z) != Sign::Positive;
@@ -362,14 +370,9 @@ std::uint32_t FlipRecovery::insert_point(const Vec3& p, std::uint32_t near) {
   // Every new tetrahedron strictly positive, every new ghost's hull facet a proper triangle (p
   // on the hull's surface leaves the hull as it was), or the location was wrong.
   const auto proper = [&](const Tuple& t) {
-    std::uint32_t m = 4;
-    for (std::uint32_t j = 0; j < 4; ++j)
-      if (t[j] == kInf) m = j;
+    const std::uint32_t m = infinite_index(t);
     if (m == 4) return orient3d(P(t[0]), P(t[1]), P(t[2]), P(t[3])) == Sign::Positive;
-    const Vec3 &x = P(t[1 ^ m]), &y = P(t[2 ^ m]), &z = P(t[3 ^ m]);
-    return !(orient2d(Vec2{x.x, x.y}, Vec2{y.x, y.y}, Vec2{z.x, z.y}) == Sign::Zero &&
-             orient2d(Vec2{x.y, x.z}, Vec2{y.y, y.z}, Vec2{z.y, z.z}) == Sign::Zero &&
-             orient2d(Vec2{x.z, x.x}, Vec2{y.z, y.x}, Vec2{z.z, z.x}) == Sign::Zero);
+    return !collinear(P(t[1 ^ m]), P(t[2 ^ m]), P(t[3 ^ m]));
   };
   for (const Tuple& t : fresh)
     if (!proper(t)) {

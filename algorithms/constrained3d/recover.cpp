@@ -67,13 +67,7 @@ void recover_by_rounds(Constrained3dContext& c) {
     }
     recovery.finish();
     const MeshIndex index(flipped);
-    std::vector<std::array<std::uint32_t, 2>> missing;
-    for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
-      missing.clear();
-      if (facet_still_covered(c, f, index) || cover_facet(c, f, index, missing)) continue;
-      const FacetParameters st = facet_parameters(c, f);
-      for (const auto& m : missing) request_facet_point(c, f, st, m, splits, points);
-    }
+    request_missing_facet_points(c, index, splits, points);
     if (splits.empty() && points.empty()) {
       c.mesh = std::move(flipped);
       c.face_seconds += seconds(start);
@@ -81,12 +75,7 @@ void recover_by_rounds(Constrained3dContext& c) {
     }
     const std::size_t added = inserter.insert(splits, points);
     c.face_seconds += seconds(start);
-    if (added == 0) {
-      const std::uint32_t f = inserter.stuck_facet();
-      throw InputError("constrained3d: triangle " + std::to_string(f + 1) +
-                           " cannot be recovered: its Steiner points round onto existing vertices",
-                       {f});
-    }
+    if (added == 0) inserter.throw_stuck();
   }
   c.rounding_checks_failed = inserter.rounding_checks_failed();
 }

@@ -380,6 +380,23 @@ bool SteinerInserter::insert_split(const EdgeSplit& r) {
   return true;
 }
 
+void request_missing_facet_points(Constrained3dContext& c, const MeshIndex& index, std::vector<EdgeSplit>& splits,
+                                  std::vector<FacetPoint>& points) {
+  std::vector<std::array<std::uint32_t, 2>> missing;
+  for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
+    missing.clear();
+    if (facet_still_covered(c, f, index) || cover_facet(c, f, index, missing)) continue;
+    const FacetParameters st = facet_parameters(c, f);
+    for (const auto& m : missing) request_facet_point(c, f, st, m, splits, points);
+  }
+}
+
+void SteinerInserter::throw_stuck() const {
+  throw InputError("constrained3d: triangle " + std::to_string(stuck_facet_ + 1) +
+                       " cannot be recovered: its Steiner points round onto existing vertices",
+                   {stuck_facet_});
+}
+
 std::size_t SteinerInserter::insert(const std::vector<EdgeSplit>& splits, const std::vector<FacetPoint>& points) {
   std::size_t count = 0;
   const auto p = [&] { return c_.mesh.points(); };

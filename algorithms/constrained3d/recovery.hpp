@@ -100,6 +100,11 @@ void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const F
                          std::array<std::uint32_t, 2> missing, std::vector<EdgeSplit>& splits,
                          std::vector<FacetPoint>& points);
 
+// For every input triangle whose pieces the mesh (index) does not hold: its Steiner point
+// requests, one per missing piece (request_facet_point). Fills the triangles' pieces where held.
+void request_missing_facet_points(Constrained3dContext& c, const MeshIndex& index, std::vector<EdgeSplit>& splits,
+                                  std::vector<FacetPoint>& points);
+
 // Inserts requested points: each computed exactly, rounded to nearest, recorded in c.steiner,
 // added to its edge's chain (kept sorted) or its facet's interior, and inserted into c.mesh.
 // An edge split that repeats a parameter already there is dropped; a facet point that rounds
@@ -119,6 +124,8 @@ class SteinerInserter {
   std::uint32_t rounding_checks_failed() const noexcept { return rounding_failed_; }
   // The last triangle whose request could not be placed at all (kNone if none).
   std::uint32_t stuck_facet() const noexcept { return stuck_facet_; }
+  // The InputError for a round that placed nothing: naming stuck_facet().
+  [[noreturn]] void throw_stuck() const;
 
  private:
   std::uint32_t add_vertex(const Vec3& p, const std::string& what, std::uint32_t item, std::uint32_t hint);
