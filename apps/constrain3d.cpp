@@ -87,7 +87,9 @@ int run_constrain3d(const Constrain3dCliArgs& args) {
          << ",\"elements\":" << result.tetrahedra.size() << ",\"regions\":" << result.region_count
          << ",\"steiner_points\":{\"on_edges\":" << result.steiner_points.on_edges
          << ",\"on_faces\":" << result.steiner_points.on_faces << ",\"interior\":" << result.steiner_points.interior
-         << "},\"rounding_checks_failed\":" << result.rounding_checks_failed << ",\"seconds\":{\"checks\":"
+         << "},\"rounding_checks_failed\":" << result.rounding_checks_failed
+         << ",\"constrained_delaunay\":" << (result.constrained_delaunay ? "true" : "false") << ",\"rounds\":" << result.rounds
+         << ",\"seconds\":{\"checks\":"
          << json_number(s.checks) << ",\"delaunay\":" << json_number(s.delaunay)
          << ",\"edge_recovery\":" << json_number(s.edge_recovery) << ",\"face_recovery\":" << json_number(s.face_recovery)
          << ",\"regions\":" << json_number(s.regions) << ",\"total\":" << json_number(s.total)

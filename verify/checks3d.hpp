@@ -23,6 +23,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -64,6 +65,12 @@ CheckReport3 check_orientation3(const Tetrahedralization3& tetrahedralization);
 // For every facet between two finite tetrahedra, the apex of one is outside the sphere of the
 // other by the exact, perturbed in-sphere test (the tie-break all variants share).
 CheckReport3 check_empty_sphere3(const Tetrahedralization3& tetrahedralization);
+// The same test skipping the facets `constrained` names (sorted vertex triples): with the
+// constraint triangles named, it proves a constrained Delaunay tetrahedralization (the
+// constrained Delaunay lemma: every unconstrained interior facet locally Delaunay; Shewchuk
+// 2008, "General-dimensional constrained Delaunay and constrained regular triangulations").
+CheckReport3 check_constrained_empty_sphere3(const Tetrahedralization3& tetrahedralization,
+                                             const std::function<bool(std::array<std::uint32_t, 3>)>& constrained);
 
 // The hull: the finite tetrahedron under each ghost lies strictly on the inner side of its
 // hull facet; at each hull edge the apex of the adjacent hull facet is not strictly beyond this

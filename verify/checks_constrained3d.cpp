@@ -7,6 +7,7 @@
 #include <climits>
 #include <cstdio>
 #include <optional>
+#include <set>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -59,6 +60,7 @@ class Checker {
   bool check_tetrahedralization();
   void check_regions();
   void check_faces();
+  void check_constrained_delaunay();
   void check_edges();
   std::optional<St> parameters_in(std::uint32_t f, std::uint32_t v, std::string& why) const;
 
@@ -337,12 +339,24 @@ void Checker::check_edges() {
   }
 }
 
+// Method "cdt", where it reports a CDT: every interior facet that is no piece of an input
+// triangle is locally Delaunay (the constrained Delaunay lemma, checks3d.hpp).
+void Checker::check_constrained_delaunay() {
+  if (o_.method != "cdt" || !r_.constrained_delaunay) return;
+  std::set<Ids3> pieces;
+  for (const auto& t : r_.triangles) pieces.insert(sorted(t));
+  const CheckReport3 d = check_constrained_empty_sphere3(
+      r_.tetrahedralization, [&](const Ids3& f) { return pieces.count(f) != 0; });
+  for (const std::string& p : d.problems) rep_.add_problem("constrained Delaunay (numbered from 0): " + p);
+}
+
 void Checker::run() {
   if (!check_records()) return;
   if (!check_tetrahedralization()) return;
   check_regions();
   check_faces();
   check_edges();
+  check_constrained_delaunay();
   check_region_volumes3(in_, r_, o_, rep_);
 }
 

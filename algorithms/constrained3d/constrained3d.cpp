@@ -162,6 +162,7 @@ Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrai
   }
   r.rounding_checks_failed = c.rounding_checks_failed;
   r.rounds = c.rounds;
+  r.constrained_delaunay = c.constrained_delaunay;
   r.tetrahedralization = std::move(c.mesh);
   r.predicate_stats = predicate_stats() - stats_before;
   r.seconds.total = since(start);

@@ -98,6 +98,9 @@ struct Constrained3dResult {
   // Steiner points not within their rounding bound of the exact point (must be 0).
   std::uint32_t rounding_checks_failed = 0;
   std::uint32_t rounds = 0;  // insertion rounds of the recovery
+  // Method "cdt" made a constrained Delaunay tetrahedralization (false where it handed over to
+  // "recover", which messages then say; always false for the other methods).
+  bool constrained_delaunay = false;
   std::vector<std::string> messages;
   PredicateStats predicate_stats;
   Constrained3dPhaseTimes seconds;

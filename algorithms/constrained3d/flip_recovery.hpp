@@ -20,6 +20,8 @@
 #include <array>
 #include <cstdint>
 #include <set>
+#include <span>
+#include <string>
 #include <unordered_set>
 #include <vector>
 
@@ -48,6 +50,13 @@ class FlipRecovery {
   std::array<std::uint32_t, 2> crossing_edge(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   // Makes abc a face if removing the edges that cross it can; true if it is one afterwards.
   bool recover_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+  // Makes the triangles `pieces` (a triangulated facet: its boundary edges present, its
+  // diagonals inside) faces by retriangulating their cavity, the tetrahedra that the facet
+  // crosses (flip_recovery_facet.cpp): removed, then refilled by gift-wrapping on both sides of
+  // the pieces (gift_wrapping.hpp). Constrained Delaunay when the tetrahedralization was, and
+  // the facet's boundary edges are (Shewchuk 2002); false with `why` (nothing changed) when the
+  // cavity reaches the hull or a protected edge, or has no such filling. Protects the pieces.
+  bool insert_facet(std::span<const std::array<std::uint32_t, 3>> pieces, std::string& why);
   // Inserts p as a new vertex (appended to the points) by splitting what holds it, without
   // flips: a tetrahedron 1 -> 4, a face 2 -> 6, an edge n -> 2n, located by a search from the
   // ball of vertex `near`. Returns its id, or kNone (nothing changed) where p is outside the hull,
@@ -81,6 +90,10 @@ class FlipRecovery {
   // Edges crossing the open triangle abc, each once with a tetrahedron holding it.
   void crossing_edges(std::uint32_t a, std::uint32_t b, std::uint32_t c,
                       std::vector<std::array<std::uint32_t, 3>>& out);
+  // Whether mesh edge pq must go for the facet with these pieces to be faces (insert_facet).
+  bool conflicts_with_facet(std::uint32_t p, std::uint32_t q, std::span<const std::array<std::uint32_t, 3>> pieces,
+                            const std::set<std::uint64_t>& facet_edges, const std::set<std::uint64_t>& diagonals,
+                            const std::set<std::uint32_t>& facet_vertices) const;
   bool crosses(std::uint32_t p, std::uint32_t q, std::uint32_t a, std::uint32_t b, std::uint32_t c) const;
 
   Tetrahedralization3& mesh_;

@@ -266,6 +266,72 @@ bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& inde
   return true;
 }
 
+std::vector<std::array<std::uint32_t, 3>> facet_delaunay_pieces(const Constrained3dContext& c, std::uint32_t f) {
+  const FacetParameters st = facet_parameters(c, f);
+  const auto boundary = facet_boundary(c, f);
+  // The metric of the triangle's plane in (s, t): |s e1 + t e2|^2, e1 = B - A, e2 = C - A, exact.
+  const auto p = c.mesh.points();
+  const auto& k = c.facets[f].corners;
+  const ExactPoint3 A = to_exact(p[k[0]]), B = to_exact(p[k[1]]), C = to_exact(p[k[2]]);
+  const Rational e1[3] = {B.x - A.x, B.y - A.y, B.z - A.z}, e2[3] = {C.x - A.x, C.y - A.y, C.z - A.z};
+  const Rational g11 = e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2];
+  const Rational g12 = e1[0] * e2[0] + e1[1] * e2[1] + e1[2] * e2[2];
+  const Rational g22 = e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2];
+  std::unordered_map<std::uint32_t, Rational> lift;
+  for (const auto& [v, x] : st) lift.emplace(v, g11 * x[0] * x[0] + Rational(2) * g12 * x[0] * x[1] + g22 * x[1] * x[1]);
+  // In-circle of x against (u, v, w) counter-clockwise, perturbed: det [s t h 1] of the four
+  // rows; when zero, the sign of the cofactor (-1)^i orient(the other three) of the row with
+  // the smallest vertex id that is non-zero (the lifting raised by eps^rank, smallest id first).
+  const auto inside = [&](std::uint32_t u, std::uint32_t v, std::uint32_t w, std::uint32_t x) {
+    const std::array<std::uint32_t, 4> ids{u, v, w, x};
+    const St& px = st.at(x);
+    const Rational& hx = lift.at(x);
+    Rational m[3][3];
+    for (int r = 0; r < 3; ++r) {
+      const St& q = st.at(ids[r]);
+      m[r][0] = q[0] - px[0], m[r][1] = q[1] - px[1], m[r][2] = lift.at(ids[r]) - hx;
+    }
+    const Rational det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    if (det.sign() != Sign::Zero) return det.sign() == Sign::Positive;
+    std::array<int, 4> order{0, 1, 2, 3};
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return ids[a] < ids[b]; });
+    for (const int i : order) {
+      std::array<std::uint32_t, 3> rest{};
+      for (int j = 0, n = 0; j < 4; ++j)
+        if (j != i) rest[n++] = ids[j];
+      const Sign o = orient_st(st.at(rest[0]), st.at(rest[1]), st.at(rest[2])).sign();
+      if (o == Sign::Zero) continue;
+      return (i % 2 == 0 ? o : -o) == Sign::Positive;
+    }
+    throw InternalError("facet_delaunay_pieces: four collinear vertices in an in-circle test");
+  };
+  std::set<std::array<std::uint32_t, 2>> covered, outer(boundary.begin(), boundary.end());
+  std::vector<std::array<std::uint32_t, 2>> open(boundary.begin(), boundary.end());
+  std::vector<std::array<std::uint32_t, 3>> pieces;
+  while (!open.empty()) {
+    const auto [u, v] = open.back();
+    open.pop_back();
+    if (covered.count({u, v})) continue;
+    std::uint32_t w = T3::kNone;
+    for (const auto& [x, px] : st)
+      if (orient_st(st.at(u), st.at(v), px).sign() == Sign::Positive && (w == T3::kNone || inside(u, v, w, x))) w = x;
+    if (w == T3::kNone || covered.count({v, w}) || covered.count({w, u}))
+      throw InternalError("facet_delaunay_pieces: the gift-wrapping of triangle " + std::to_string(f + 1) + " failed");
+    covered.insert({u, v});
+    covered.insert({v, w});
+    covered.insert({w, u});
+    pieces.push_back({u, v, w});
+    if (!outer.count({v, w})) open.push_back({w, v});
+    if (!outer.count({w, u})) open.push_back({u, w});
+  }
+  Rational area;
+  for (const auto& t : pieces) area += orient_st(st.at(t[0]), st.at(t[1]), st.at(t[2]));
+  if (area != Rational(1))
+    throw InternalError("facet_delaunay_pieces: the pieces of triangle " + std::to_string(f + 1) + " do not cover it");
+  return pieces;
+}
+
 void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const FacetParameters& st,
                          std::array<std::uint32_t, 2> piece, std::vector<EdgeSplit>& splits,
                          std::vector<FacetPoint>& points) {

@@ -89,6 +89,14 @@ bool facet_still_covered(const Constrained3dContext& c, std::uint32_t f, const M
 bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& index,
                  std::vector<std::array<std::uint32_t, 2>>& missing);
 
+// The Delaunay triangulation of facet f's vertices in its own plane (metric of the input
+// triangle, exact in its (s, t) parameters; cocircular ties broken by a symbolic perturbation
+// of the lifting, smallest vertex id first): the pieces, each turned like the triangle, that a
+// constrained Delaunay tetrahedralization holds on f once its boundary pieces are Delaunay
+// (Shewchuk 2002). Gift-wrapped in (s, t) from the boundary pieces; checked to cover the
+// triangle exactly (InternalError otherwise).
+std::vector<std::array<std::uint32_t, 3>> facet_delaunay_pieces(const Constrained3dContext& c, std::uint32_t f);
+
 // Where facet f gets a point for its missing piece (u, v) (f on its left in (s, t)): the
 // circumcentre of (u, v, w), w the Delaunay apex of (u, v) among the vertices of f on its left
 // (the one whose circumcentre lies furthest back across (u, v), measured in the triangle's

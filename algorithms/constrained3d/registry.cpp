@@ -6,10 +6,11 @@ namespace dtlab {
 
 void constrained3d_conforming(Constrained3dContext& context);
 void constrained3d_recover(Constrained3dContext& context);
+void constrained3d_cdt(Constrained3dContext& context);
 
 namespace {
 
-constexpr std::array<Constrained3dMethod, 2> kMethods{{
+constexpr std::array<Constrained3dMethod, 3> kMethods{{
     {"conforming",
      "Delaunay of the vertices, then missing edge pieces split (concentric shells) and missing "
      "triangle pieces refined (circumcentres, Ruppert's rule) until the Delaunay "
@@ -20,6 +21,11 @@ constexpr std::array<Constrained3dMethod, 2> kMethods{{
      "triangles by removing the edges that cross them (2-3 flips, edge removal by shell "
      "retriangulation); Steiner points, as in conforming, only where these fail; not Delaunay",
      &constrained3d_recover},
+    {"cdt",
+     "constrained Delaunay tetrahedralization (Shewchuk): missing edge pieces split until every one is "
+     "a Delaunay edge, then each missing triangle inserted as the Delaunay triangulation of its "
+     "vertices by cavity retriangulation (gift-wrapping); Steiner points on input edges only",
+     &constrained3d_cdt},
 }};
 
 }  // namespace

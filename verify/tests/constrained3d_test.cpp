@@ -19,6 +19,7 @@
 #include "algorithms/constrained3d/exhaustive_tetrahedralization.hpp"
 #include "algorithms/constrained3d/insert_point.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
+#include "algorithms/delaunay3d/flip_mesh.hpp"
 #include "algorithms/constrained3d/plc_checks.hpp"
 #include "algorithms/constrained3d/schonhardt.hpp"
 #include "kernel/error.hpp"
@@ -201,6 +202,10 @@ CheckedRun run_and_check(const ClosedSurface3& s, const std::string& method = ""
     EXPECT_EQ(report.regions, out.result.region_count);
     EXPECT_EQ(report.input_triangles, s.triangles.size());
     out.region_volume6 = report.region_volume6;
+    if (name == "cdt") {  // constrained Delaunay (checked above), with Steiner points on edges only
+      EXPECT_TRUE(out.result.constrained_delaunay) << (out.result.messages.empty() ? "" : out.result.messages.front());
+      EXPECT_EQ(out.result.steiner_points.on_faces + out.result.steiner_points.interior, 0u);
+    }
     if (name == methods.front()) {
       first = std::move(out);
     } else {
@@ -521,6 +526,59 @@ TEST(ConstrainedChecks3, CatchDamagedResults) {
   fails("a tetrahedron in another region", [](Constrained3dResult& r) { r.tetrahedron_regions[0] = 5; });
   fails("a tetrahedron turned", [](Constrained3dResult& r) { std::swap(r.tetrahedra[0][0], r.tetrahedra[0][1]); });
   fails("an input point moved", [](Constrained3dResult& r) { r.vertices[0].x += 1; });
+}
+
+ClosedSurface3 random_star(const std::vector<std::array<int, 3>>& lattice, const std::vector<int>& factors);
+
+// The CDT check is not a formality: one 2-3 flip across an unconstrained facet of a "cdt"
+// result (the two tetrahedra's union convex) makes the new facets fail it, and the same
+// result unflipped passes.
+TEST(ConstrainedChecks3, CatchAFlippedFacetInAConstrainedDelaunayResult) {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> coordinate(-100, 100);
+  std::vector<std::array<int, 3>> lattice(40);
+  for (auto& q : lattice) q = {coordinate(rng), coordinate(rng), coordinate(rng)};
+  const ClosedSurface3 s = random_star(lattice, {4, 9, 12, 6, 15, 8, 10});
+  const ConstrainedInput3 in{.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {}, .regions = {}};
+  Constrained3dResult r = constrained3d(in, {.method = "cdt"});
+  ASSERT_TRUE(r.constrained_delaunay);
+  std::set<Ids3> pieces;
+  for (auto t : r.triangles) {
+    std::sort(t.begin(), t.end());
+    pieces.insert(t);
+  }
+  const auto constrained = [&](const Ids3& f) { return pieces.count(f) != 0; };
+  ASSERT_TRUE(check_constrained_empty_sphere3(r.tetrahedralization, constrained).ok);
+  Tetrahedralization3& t = r.tetrahedralization;
+  const auto P = t.points();
+  bool flipped = false;
+  for (std::uint32_t a = 0; a < t.tetrahedron_count() && !flipped; ++a) {
+    if (t.is_ghost(a)) continue;
+    for (std::uint32_t i = 0; i < 4 && !flipped; ++i) {
+      const std::uint32_t g = t.twin(Tetrahedralization3::facet(a, i)), b = Tetrahedralization3::tetrahedron_of(g);
+      if (t.is_ghost(b)) continue;
+      const auto& x = t.records()[a].vertex;
+      const auto& k = Tetrahedralization3::kFacetVertex[i];
+      const std::array<std::uint32_t, 3> v{x[k[0]], x[k[1]], x[k[2]]};
+      Ids3 key = v;
+      std::sort(key.begin(), key.end());
+      if (constrained(key)) continue;
+      const std::uint32_t p = x[i], d = t.apex(g);
+      const Sign s1 = orient3d(P[p], P[d], P[v[0]], P[v[1]]);
+      if (s1 == Sign::Zero || orient3d(P[p], P[d], P[v[1]], P[v[2]]) != s1 || orient3d(P[p], P[d], P[v[2]], P[v[0]]) != s1)
+        continue;
+      FlipMesh mesh(t.mutable_records(), FlipMesh::Adopt{});
+      std::vector<std::uint32_t> ids;
+      mesh.flip23(a, b, v, p, d, ids);
+      mesh.finish();
+      flipped = true;
+    }
+  }
+  ASSERT_TRUE(flipped);
+  ASSERT_TRUE(check_topology3(t).ok);
+  const CheckReport3 report = check_constrained_empty_sphere3(t, constrained);
+  EXPECT_FALSE(report.ok);
+  EXPECT_GE(report.problem_count, 1u);
 }
 
 // A star-shaped closed surface: the convex hull of random lattice points around the origin

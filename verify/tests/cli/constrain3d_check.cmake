@@ -121,6 +121,20 @@ elseif(CASE STREQUAL "schonhardt")
   if(NOT method STREQUAL "recover" OR NOT recovered GREATER 0 OR NOT recovered LESS steiner)
     fail("recover on Schönhardt's prism: ${recovered} Steiner points (conforming ${steiner})")
   endif()
+  # The constrained Delaunay tetrahedralization: Steiner points on input edges only, and --verify
+  # checks the CDT property.
+  run(constrain schonhardt.off --method cdt --verify --stats -o c.mesh)
+  expect_success()
+  read_json()
+  string(JSON method GET "${json}" method)
+  string(JSON cdt GET "${json}" constrained_delaunay)
+  string(JSON on_edges GET "${json}" steiner_points on_edges)
+  string(JSON on_faces GET "${json}" steiner_points on_faces)
+  string(JSON interior GET "${json}" steiner_points interior)
+  if(NOT method STREQUAL "cdt" OR NOT cdt STREQUAL "ON" OR NOT on_edges GREATER 0 OR NOT on_faces EQUAL 0
+     OR NOT interior EQUAL 0)
+    fail("cdt on Schönhardt's prism: constrained_delaunay ${cdt}, Steiner ${on_edges} ${on_faces} ${interior}")
+  endif()
 
 elseif(CASE STREQUAL "open_surface")
   string(REGEX REPLACE "3 3 7 5\n$" "" open_faces "${cube_faces}")
