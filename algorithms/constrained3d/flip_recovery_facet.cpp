@@ -12,6 +12,7 @@
 #include "kernel/error.hpp"
 #include "kernel/intersections.hpp"
 #include "kernel/predicates.hpp"
+#include "kernel/predicates/perturbation.hpp"
 
 namespace dtlab {
 
@@ -156,6 +157,44 @@ bool FlipRecovery::insert_facet(std::span<const Face> pieces, std::string& why) 
     why = "its cavity's filling loses constraint edge (" + std::to_string((e >> 32) + 1) + ", " +
           std::to_string((e & 0xFFFFFFFFu) + 1) + ")";
     return false;
+  }
+  // Constrained Delaunay across every facet of the filling that is no constraint (between two
+  // new tetrahedra, or a new one and the one outside the cavity): gift-wrapping completes on
+  // some cavities that have no CDT (with rounded Steiner points the facets are not exactly
+  // planar), and then this finds the witness.
+  std::map<Face, std::uint32_t> outside_apex;  // the cavity's outer faces, with the apex beyond
+  for (const std::uint32_t t : cavity) {
+    const auto& rec = records_[t];
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t g = rec.neighbour[i], n = g >> 2;
+      if (in_cavity.count(n)) continue;
+      outside_apex[sorted3({rec.vertex[kFacet[i][0]], rec.vertex[kFacet[i][1]], rec.vertex[kFacet[i][2]]})] =
+          records_[n].vertex[g & 3u];
+    }
+  }
+  std::map<Face, std::uint32_t> first_side;  // face -> index of the new tetrahedron seen first
+  const auto violates = [&](const Tuple& t, std::uint32_t x) {
+    return x != kInf && insphere_perturbed(P(t[0]), P(t[1]), P(t[2]), P(t[3]), P(x)) == Sign::Positive;
+  };
+  for (std::uint32_t k = 0; k < fresh.size(); ++k) {
+    const Tuple& t = fresh[k];
+    for (int i = 0; i < 4; ++i) {
+      const Face f = sorted3({t[kFacet[i][0]], t[kFacet[i][1]], t[kFacet[i][2]]});
+      if (piece_keys.count(f) || is_protected_face(f[0], f[1], f[2])) continue;
+      std::uint32_t beyond = kInf;
+      if (const auto out = outside_apex.find(f); out != outside_apex.end()) {
+        beyond = out->second;
+      } else if (const auto [it, inserted] = first_side.emplace(f, k); !inserted) {
+        const Tuple& u = fresh[it->second];
+        for (const std::uint32_t x : u)
+          if (std::find(t.begin(), t.end(), x) == t.end()) beyond = x;
+      }
+      if (violates(t, beyond)) {
+        why = "the filling of its cavity is not constrained Delaunay (vertex " + std::to_string(beyond + 1) +
+              " is in the sphere of a new tetrahedron)";
+        return false;
+      }
+    }
   }
   flips_mesh_.replace(cavity, fresh, ids_);
   replaced(ids_);
