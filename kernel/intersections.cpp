@@ -56,16 +56,19 @@ int projection_axis(const Vec3& a, const Vec3& b, const Vec3& c) noexcept {
   return 2;  // collinear: the caller's precondition is broken; any answer is as good
 }
 
+bool segment_meets_triangle2(const Vec2& p, const Vec2& q, const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
+  return in_triangle2(p, a, b, c) || in_triangle2(q, a, b, c) || segments_intersect2(p, q, a, b) ||
+         segments_intersect2(p, q, b, c) || segments_intersect2(p, q, c, a);
+}
+
 bool segment_meets_triangle3(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) noexcept {
   const int sp = sign_of(orient3d(a, b, c, p)), sq = sign_of(orient3d(a, b, c, q));
   if (sp * sq > 0) return false;  // both strictly on one side of the plane
   if (sp == 0 && sq == 0) {
     // Coplanar: a 2D question in a projection that keeps the triangle a triangle.
     const int axis = projection_axis(a, b, c);
-    const Vec2 P = project(p, axis), Q = project(q, axis);
-    const Vec2 A = project(a, axis), B = project(b, axis), C = project(c, axis);
-    return in_triangle2(P, A, B, C) || in_triangle2(Q, A, B, C) || segments_intersect2(P, Q, A, B) ||
-           segments_intersect2(P, Q, B, C) || segments_intersect2(P, Q, C, A);
+    return segment_meets_triangle2(project(p, axis), project(q, axis), project(a, axis), project(b, axis),
+                                   project(c, axis));
   }
   // The line pq crosses the plane at one point, which lies on [p, q]; it is in the closed
   // triangle iff the line passes no edge on the wrong side: the three orientations of the line

@@ -17,6 +17,8 @@ bool on_segment2(const Vec2& p, const Vec2& a, const Vec2& b) noexcept;
 bool segments_intersect2(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept;
 // p in the closed triangle (a, b, c), a, b, c not collinear, either orientation.
 bool in_triangle2(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
+// The closed segment [p, q] and the closed triangle (a, b, c) (not collinear) share a point.
+bool segment_meets_triangle2(const Vec2& p, const Vec2& q, const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 
 // 3D: the closed segment [p, q] (p != q) and the closed triangle (a, b, c) (not collinear) share
 // a point. Coplanar operands are decided in a coordinate plane onto which the triangle projects

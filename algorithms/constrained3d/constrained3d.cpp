@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <map>
 #include <string>
+#include <unordered_map>
 
 #include "algorithms/constrained3d/context.hpp"
 #include "algorithms/constrained3d/plc_checks.hpp"
@@ -27,7 +27,10 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 
 // The input edges (each once, a < b) and triangles with their edges.
 void build_constraints(const ConstrainedInput3& input, Constrained3dContext& c) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edge_ids;
+  std::unordered_map<std::uint64_t, std::uint32_t> edge_ids;
+  edge_ids.reserve(2 * input.triangles.size());
+  c.edges.reserve(3 * input.triangles.size() / 2 + 3);
+  c.facets.reserve(input.triangles.size());
   for (std::uint32_t f = 0; f < input.triangles.size(); ++f) {
     ConstraintFacet3 facet;
     facet.corners = input.triangles[f];
@@ -35,7 +38,7 @@ void build_constraints(const ConstrainedInput3& input, Constrained3dContext& c) 
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t u = facet.corners[k], v = facet.corners[(k + 1) % 3];
       const std::pair<std::uint32_t, std::uint32_t> key = std::minmax(u, v);
-      auto [it, inserted] = edge_ids.emplace(key, static_cast<std::uint32_t>(c.edges.size()));
+      auto [it, inserted] = edge_ids.emplace(std::uint64_t{key.first} << 32 | key.second, static_cast<std::uint32_t>(c.edges.size()));
       if (inserted) {
         ConstraintEdge3 edge;
         edge.a = key.first, edge.b = key.second, edge.face = f;

@@ -106,7 +106,7 @@ class FlipRecovery {
   std::set<std::array<std::uint32_t, 3>> extra_faces_;
   std::vector<std::uint32_t> mark_;
   std::uint32_t stamp_ = 0;
-  std::vector<std::uint32_t> ids_, stack_, ball_;
+  std::vector<std::uint32_t> ids_, stack_, ball_, walk_;
   std::uint64_t flips_ = 0, removals_ = 0;
   std::array<std::uint32_t, 3> block_{Tetrahedralization3::kNone, Tetrahedralization3::kNone, Tetrahedralization3::kNone};
 };

@@ -155,6 +155,47 @@ bool faces_intersect_improperly(std::span<const Vec3> P, const Face3& f, const F
     return orient2d(project(P[u], axis), project(P[v], axis), project(P[a], axis)) ==
            orient2d(project(P[u], axis), project(P[v], axis), project(P[b], axis));
   }
+  // The vertices of g not on f against f's plane: strictly on one side, g meets f at most at
+  // their shared vertex; all on it, the faces are coplanar and the question is a 2D one in a
+  // projection that keeps f (and so g) a triangle; else f's vertices against g's plane.
+  Sign side = Sign::Zero;
+  bool mixed = false, coplanar = true;
+  for (const std::uint32_t x : g) {
+    if (x == f[0] || x == f[1] || x == f[2]) continue;
+    const Sign s = orient3d(P[f[0]], P[f[1]], P[f[2]], P[x]);
+    coplanar = coplanar && s == Sign::Zero;
+    if (s == Sign::Zero || (side != Sign::Zero && s != side)) mixed = true;
+    if (s != Sign::Zero) side = s;
+  }
+  if (!mixed) return false;
+  if (coplanar) {
+    const int axis = projection_axis(P[f[0]], P[f[1]], P[f[2]]);
+    std::array<Vec2, 3> F, G;
+    for (int k = 0; k < 3; ++k) F[k] = project(P[f[k]], axis), G[k] = project(P[g[k]], axis);
+    // An edge of one (the one opposite the shared vertex, if any) meets the other.
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t p = f[k], q = f[(k + 1) % 3];
+      if (shared == 1 && (std::count(g.begin(), g.end(), p) || std::count(g.begin(), g.end(), q))) continue;
+      if (segment_meets_triangle2(F[k], F[(k + 1) % 3], G[0], G[1], G[2])) return true;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t p = g[k], q = g[(k + 1) % 3];
+      if (shared == 1 && (std::count(f.begin(), f.end(), p) || std::count(f.begin(), f.end(), q))) continue;
+      if (segment_meets_triangle2(G[k], G[(k + 1) % 3], F[0], F[1], F[2])) return true;
+    }
+    return false;
+  }
+  {
+    Sign other = Sign::Zero;
+    bool separated = true;
+    for (const std::uint32_t x : f) {
+      if (x == g[0] || x == g[1] || x == g[2]) continue;
+      const Sign s = orient3d(P[g[0]], P[g[1]], P[g[2]], P[x]);
+      if (s == Sign::Zero || (other != Sign::Zero && s != other)) separated = false;
+      other = s;
+    }
+    if (separated) return false;
+  }
   const auto edge_meets = [&](std::uint32_t p, std::uint32_t q, const Face3& t) {
     return segment_meets_triangle3(P[p], P[q], P[t[0]], P[t[1]], P[t[2]]);
   };

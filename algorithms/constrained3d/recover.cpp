@@ -85,7 +85,17 @@ std::string recover_in_place(Constrained3dContext& c);  // recover_in_place.cpp
 void constrained3d_recover(Constrained3dContext& c) {
   // First with every Steiner point placed into the transformed tetrahedralization (TetGen's way,
   // fewer points); where that gets stuck, the rounds from the Delaunay tetrahedralization.
-  Constrained3dContext saved = c;
+  // What to go back to: from the input's state (no Steiner point yet) only the tetrahedralization
+  // is copied and the chains are reset after, since copying every edge's vectors costs as much
+  // as building them; otherwise (method cdt hands over after its splits) the whole context.
+  const bool fresh = c.steiner.empty();
+  Tetrahedralization3 saved_mesh;
+  Constrained3dContext saved;
+  if (fresh) {
+    saved_mesh = c.mesh;
+  } else {
+    saved = c;
+  }
   std::string why;
   try {
     why = recover_in_place(c);
@@ -93,7 +103,17 @@ void constrained3d_recover(Constrained3dContext& c) {
   } catch (const InputError& e) {
     why = e.what();
   }
-  c = std::move(saved);
+  if (fresh) {
+    c.mesh = std::move(saved_mesh);
+    c.steiner.clear();
+    for (ConstraintEdge3& e : c.edges) e.chain = {e.a, e.b}, e.t = {0.0, 1.0};
+    for (ConstraintFacet3& f : c.facets) {
+      f.interior.clear(), f.interior_st.clear(), f.pieces.clear();
+      f.pieces_vertex_count = 0;
+    }
+  } else {
+    c = std::move(saved);
+  }
   c.messages.push_back("recover: in place recovery gave up (" + why +
                        "); Steiner points inserted into the Delaunay tetrahedralization between rounds of flips");
   recover_by_rounds(c);

@@ -220,30 +220,45 @@ std::string recover_in_place(Constrained3dContext& c) {
   // Triangles: a few points each at most, past which the rounds are left to do it.
   std::vector<FacetPoint> points;
   std::vector<std::uint32_t> tries(c.facets.size(), 0);
+  std::vector<std::size_t> done(c.facets.size(), 0);  // the vertex count when last recovered whole
   constexpr std::uint32_t kPointsPerTriangle = 16;
   for (;;) {
     ++c.rounds;
     points.clear();
     bool edges_missing = false;
     for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
-      const FacetParameters st = facet_parameters(c, f);
-      const std::vector<Tri> tris = facet_triangulation(c, f, st);
+      // Recovered before, with no point on it since: its faces are protected, so still there.
+      const std::size_t vertex_count = facet_vertex_count(c, f);
+      if (done[f] == vertex_count) continue;
+      // The exact (s, t) only where the triangle has Steiner points or needs one.
+      std::optional<FacetParameters> parameters;
+      const auto st_of = [&]() -> const FacetParameters& {
+        if (!parameters) parameters = facet_parameters(c, f);
+        return *parameters;
+      };
+      const std::vector<Tri> tris = vertex_count == 3 ? std::vector<Tri>{c.facets[f].corners} : facet_triangulation(c, f, st_of());
       if (tris.empty()) return "triangle " + std::to_string(f + 1) + " has a point off its interior";
+      bool all_made = true;
       for (const Tri& t : tris) {
-        bool ok = true;
-        for (int r = 0; r < 3 && ok; ++r)
-          ok = recovery.has_edge(t[r], t[(r + 1) % 3]) || recovery.recover_edge(t[r], t[(r + 1) % 3]);
-        if (ok) ok = recovery.has_face(t[0], t[1], t[2]) || recovery.recover_face(t[0], t[1], t[2]);
+        bool ok = recovery.has_face(t[0], t[1], t[2]);
+        if (!ok) {
+          ok = true;
+          for (int r = 0; r < 3 && ok; ++r)
+            ok = recovery.has_edge(t[r], t[(r + 1) % 3]) || recovery.recover_edge(t[r], t[(r + 1) % 3]);
+          if (ok) ok = recovery.recover_face(t[0], t[1], t[2]);
+        }
         if (ok) {
           for (int r = 0; r < 3; ++r) recovery.protect_edge(t[r], t[(r + 1) % 3]);
           recovery.protect_face(t[0], t[1], t[2]);
           continue;
         }
+        all_made = false;
         if (++tries[f] > kPointsPerTriangle)
           return "triangle " + std::to_string(f + 1) + " is still missing after " + std::to_string(kPointsPerTriangle) +
                  " Steiner points";
         // The centroid of the missing triangle, in (s, t) rounded to doubles; first, where an edge
         // crosses it, that crossing (TetGen's choice: the point cuts the edge's pipe there).
+        const FacetParameters& st = st_of();
         const auto &a = st.at(t[0]), &b = st.at(t[1]), &d = st.at(t[2]);
         const double s = round_to_double((a[0] + b[0] + d[0]) / Rational(3));
         const double tt = round_to_double((a[1] + b[1] + d[1]) / Rational(3));
@@ -252,6 +267,7 @@ std::string recover_in_place(Constrained3dContext& c) {
         points.push_back(point);
         break;  // one point per triangle and round
       }
+      if (all_made) done[f] = vertex_count;
     }
     // A boundary piece a facet point's fallback split goes back to the edges' flips above; a
     // piece missing now makes the rounds take over.

@@ -208,6 +208,15 @@ bool facet_still_covered(const Constrained3dContext& c, std::uint32_t f, const M
 
 bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& index,
                  std::vector<std::array<std::uint32_t, 2>>& missing) {
+  // A triangle with no Steiner point is covered exactly when it is a mesh face.
+  if (facet_vertex_count(c, f) == 3) {
+    const auto& k = c.facets[f].corners;
+    if (index.has_face(k[0], k[1], k[2])) {
+      c.facets[f].pieces.assign(1, k);
+      c.facets[f].pieces_vertex_count = 3;
+      return true;
+    }
+  }
   const FacetParameters st = facet_parameters(c, f);
   const auto boundary = facet_boundary(c, f);
   std::set<std::array<std::uint32_t, 2>> covered;                            // directed pieces with their face
