@@ -3,8 +3,10 @@
 
 Inputs: the Schönhardt family written by bench/constrained3d_inputs (Schönhardt's polyhedron at
 5, 30 and 55 degrees, twisted 4-, 6- and 8-gonal prisms, a stack of three twisted prisms,
-Chazelle's polyhedron with 2, 4 and 8 notches a side) and the closed surfaces of Debian's CGAL
-data (libcgal-demo: /usr/share/doc/libcgal-dev/data.tar.gz) named by --cgal-meshes. For each:
+Chazelle's polyhedron with 2, 4 and 8 notches a side), the closed surfaces of Debian's CGAL
+data (libcgal-demo: /usr/share/doc/libcgal-dev/data.tar.gz) named by --cgal-meshes, and, where
+Debian's gmsh is installed, the CAD part data/cad_part.geo meshed by `gmsh -2 -clmax H` for each
+H in --gmsh-sizes (10^3 to 10^6 triangles; Medit .mesh, which both programs read). For each:
     build/dtlab constrain IN.off --method M --stats          (every 3D method dtlab lists)
     tetgen -p IN.off                                         (TetGen 1.5, Debian's binary)
 RUNS times each; prints a Markdown table row per (input, program): input vertices and triangles,
@@ -34,6 +36,7 @@ from bench_delaunay2d import fmt, machine, progress
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
+DEFAULT_GMSH_SIZES = "0.05,0.015,0.005"
 DEFAULT_MESHES = "tetrahedron.off,icosahedron.off,sphere.stl,elephant.off,eight.off,cow.off,fandisk.off,knot1.off"
 PRODUCER = ("Produced by `scripts/bench_constrained3d.py --update-readme` (dtlab's 3D constrained methods "
             "through `dtlab constrain --stats`, TetGen 1.5 through `tetgen -p`, same files).")
@@ -110,12 +113,35 @@ def extract_meshes(names, into):
     return paths
 
 
+def gmsh_surfaces(sizes, into, timeout):
+    """data/cad_part.geo meshed by gmsh -2 at each -clmax; none without gmsh."""
+    if not sizes:
+        return []
+    if shutil.which("gmsh") is None:
+        progress("bench_constrained3d: gmsh not installed (apt-get install gmsh): CAD surfaces left out")
+        return []
+    os.makedirs(into, exist_ok=True)
+    paths = []
+    for h in sizes:
+        path = os.path.join(into, f"cad_part_{h}.mesh")
+        progress(f"bench_constrained3d: gmsh -2 data/cad_part.geo -clmax {h}")
+        p, err = run(["gmsh", "-2", os.path.join(ROOT, "data", "cad_part.geo"), "-clmax", h, "-format", "mesh",
+                      "-o", path], into, timeout)
+        if err or p.returncode != 0 or not os.path.exists(path):
+            progress(f"bench_constrained3d: gmsh failed for -clmax {h}: {err or p.stderr.strip()[-200:]}")
+            continue
+        paths.append(path)
+    return paths
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--timeout", type=int, default=300, help="seconds per run")
     ap.add_argument("--cgal-meshes", default=DEFAULT_MESHES, help="comma-separated names in CGAL's data/meshes")
+    ap.add_argument("--gmsh-sizes", default=DEFAULT_GMSH_SIZES,
+                    help="comma-separated -clmax values for data/cad_part.geo (empty: none)")
     ap.add_argument("--update-readme", action="store_true")
     args = ap.parse_args()
 
@@ -134,6 +160,7 @@ def main():
         files = subprocess.run([inputs_bin, os.path.join(work, "family")], stdout=subprocess.PIPE, text=True,
                                check=True).stdout.split()
         files += extract_meshes([n for n in args.cgal_meshes.split(",") if n], os.path.join(work, "cgal"))
+        files += gmsh_surfaces([h for h in args.gmsh_sizes.split(",") if h], os.path.join(work, "gmsh"), args.timeout)
         rows = []
         for path in files:
             name = os.path.basename(path)
@@ -167,7 +194,7 @@ def main():
         print(text)
         if args.update_readme:
             readme_tables.write_block(os.path.join(ROOT, "README.md"), "constrained3d",
-                                      "3D constrained (Schönhardt family, CGAL's closed surfaces) beside TetGen",
+                                      "3D constrained (Schönhardt family, CGAL's closed surfaces, a gmsh CAD part) beside TetGen",
                                       PRODUCER, text)
     finally:
         shutil.rmtree(work, ignore_errors=True)
