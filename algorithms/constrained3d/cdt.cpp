@@ -103,7 +103,7 @@ void constrained3d_cdt(Constrained3dContext& c) {
     for (const std::uint32_t f : missing) {
       std::vector<std::array<std::uint32_t, 3>> pieces = facet_delaunay_pieces(c, f);
       std::string reason;
-      if (recovery.insert_facet(pieces, true, reason)) {
+      if (recovery.insert_facet(pieces, reason)) {
         c.facets[f].pieces = std::move(pieces);
         c.facets[f].pieces_vertex_count = facet_vertex_count(c, f);
       } else {

@@ -53,12 +53,10 @@ class FlipRecovery {
   // Makes the triangles `pieces` (a triangulated facet: its boundary edges present, its
   // diagonals inside) faces by retriangulating their cavity, the tetrahedra that the facet
   // crosses (flip_recovery_facet.cpp): removed, then refilled by gift-wrapping on both sides of
-  // the pieces (gift_wrapping.hpp). With `constrained_delaunay`, the filling must also be
-  // constrained Delaunay against its surroundings, as it is when the tetrahedralization was and
-  // the facet's boundary edges are Delaunay (Shewchuk 2002); without, any filling does. False
-  // with `why` (nothing changed) when the cavity reaches the hull or a protected edge, or has no
-  // such filling. Protects the pieces.
-  bool insert_facet(std::span<const std::array<std::uint32_t, 3>> pieces, bool constrained_delaunay, std::string& why);
+  // the pieces (gift_wrapping.hpp). Constrained Delaunay when the tetrahedralization was, and
+  // the facet's boundary edges are (Shewchuk 2002); false with `why` (nothing changed) when the
+  // cavity reaches the hull or a protected edge, or has no such filling. Protects the pieces.
+  bool insert_facet(std::span<const std::array<std::uint32_t, 3>> pieces, std::string& why);
   // Inserts p as a new vertex (appended to the points) by splitting what holds it, without
   // flips: a tetrahedron 1 -> 4, a face 2 -> 6, an edge n -> 2n, located by a search from the
   // ball of vertex `near`. Returns its id, or kNone (nothing changed) where p is outside the hull,

@@ -64,7 +64,7 @@ bool FlipRecovery::conflicts_with_facet(std::uint32_t p, std::uint32_t q, std::s
   return false;
 }
 
-bool FlipRecovery::insert_facet(std::span<const Face> pieces, bool constrained_delaunay, std::string& why) {
+bool FlipRecovery::insert_facet(std::span<const Face> pieces, std::string& why) {
   std::map<std::uint64_t, int> uses;
   std::set<std::uint32_t> facet_vertices;
   for (const Face& t : pieces)
@@ -88,7 +88,7 @@ bool FlipRecovery::insert_facet(std::span<const Face> pieces, bool constrained_d
   // The cavity: from the balls of the facet's vertices, across every tetrahedron with a
   // conflicting edge.
   std::unordered_set<std::uint32_t> seen, in_cavity;
-  std::vector<std::uint32_t> queue, cavity, ghosts;
+  std::vector<std::uint32_t> queue, cavity;
   for (const std::uint32_t v : facet_vertices) {
     ball_of(v, ball_);
     for (const std::uint32_t t : ball_)
@@ -109,9 +109,11 @@ bool FlipRecovery::insert_facet(std::span<const Face> pieces, bool constrained_d
         conflict = true;
       }
     if (!conflict) continue;
-    // A ghost: the facet lies on the hull, triangulated otherwise there; its hull faces go and
-    // the pieces become hull faces instead.
-    (rec.vertex[0] == kInf ? ghosts : cavity).push_back(t);
+    if (rec.vertex[0] == kInf) {
+      why = "its cavity reaches the convex hull";
+      return false;
+    }
+    cavity.push_back(t);
     in_cavity.insert(t);
     for (int i = 0; i < 4; ++i) {
       const std::uint32_t n = rec.neighbour[i] >> 2;
@@ -135,60 +137,18 @@ bool FlipRecovery::insert_facet(std::span<const Face> pieces, bool constrained_d
       for (int j = i + 1; j < 4; ++j)
         if (is_protected_edge(rec.vertex[i], rec.vertex[j])) kept_edges.insert(key2(rec.vertex[i], rec.vertex[j]));
       const Face f{rec.vertex[kFacet[i][0]], rec.vertex[kFacet[i][1]], rec.vertex[kFacet[i][2]]};
-      const std::uint32_t n = rec.neighbour[i] >> 2;
-      if (!in_cavity.count(n) || (records_[n].vertex[0] != kInf && (piece_keys.count(sorted3(f)) ||
-                                                                     is_protected_face(f[0], f[1], f[2]))))
+      if (!in_cavity.count(rec.neighbour[i] >> 2) || piece_keys.count(sorted3(f)) || is_protected_face(f[0], f[1], f[2]))
         front.push_back(f);
     }
   }
-  // The missing pieces: both sides inside the hull; with ghosts in the cavity, those on the
-  // hull (every cavity vertex on one side of them) on their inner side only, each with a new
-  // ghost beyond it (inf, a, b, c), orient3d(q, a, b, c) > 0 for q outside.
-  std::vector<Tuple> hull_ghosts;
-  for (const Face& t : pieces) {
-    if (has_face(t[0], t[1], t[2])) continue;
-    Sign side = Sign::Zero;
-    bool one_side = !ghosts.empty();
-    for (const std::uint32_t v : vertices) {
-      if (!one_side) break;
-      const Sign sv = orient3d(P(t[0]), P(t[1]), P(t[2]), P(v));
-      if (sv != Sign::Zero && side != Sign::Zero && sv != side) one_side = false;
-      if (sv != Sign::Zero) side = sv;
-    }
-    if (one_side && side != Sign::Zero) {
-      const Face inner = side == Sign::Positive ? t : Face{t[0], t[2], t[1]};
-      front.push_back(inner);
-      hull_ghosts.push_back({kInf, inner[0], inner[1], inner[2]});
-    } else {
+  for (const Face& t : pieces)
+    if (!has_face(t[0], t[1], t[2])) {
       front.push_back(t);
       front.push_back({t[0], t[2], t[1]});
     }
-  }
   const std::vector<std::uint32_t> cavity_vertices(vertices.begin(), vertices.end());
   std::vector<Tuple> fresh = gift_wrap_cavity(mesh_.points(), front, cavity_vertices, why);
   if (fresh.empty()) return false;
-  const std::size_t finite_count = fresh.size();
-  fresh.insert(fresh.end(), hull_ghosts.begin(), hull_ghosts.end());
-  // The new tetrahedra's outer facets must be the cavity's (FlipMesh::replace requires it); a
-  // hull region that the pieces do not cover exactly fails here.
-  {
-    std::map<Face, int> old_outer, new_outer;
-    for (const std::vector<std::uint32_t>* list : {&cavity, &ghosts})
-      for (const std::uint32_t t : *list)
-        for (int i = 0; i < 4; ++i)
-          if (!in_cavity.count(records_[t].neighbour[i] >> 2)) {
-            const auto& x = records_[t].vertex;
-            ++old_outer[sorted3({x[kFacet[i][0]], x[kFacet[i][1]], x[kFacet[i][2]]})];
-          }
-    for (const Tuple& x : fresh)
-      for (int i = 0; i < 4; ++i) ++new_outer[sorted3({x[kFacet[i][0]], x[kFacet[i][1]], x[kFacet[i][2]]})];
-    std::erase_if(new_outer, [](const auto& e) { return e.second != 1; });
-    if (old_outer != new_outer) {
-      why = "its pieces do not cover the part of the hull their cavity replaces";
-      return false;
-    }
-  }
-  for (const std::uint32_t g : ghosts) cavity.push_back(g);
   for (const Tuple& t : fresh)
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) kept_edges.erase(key2(t[i], t[j]));
@@ -202,13 +162,6 @@ bool FlipRecovery::insert_facet(std::span<const Face> pieces, bool constrained_d
   // new tetrahedra, or a new one and the one outside the cavity): gift-wrapping completes on
   // some cavities that have no CDT (with rounded Steiner points the facets are not exactly
   // planar), and then this finds the witness.
-  const auto apply = [&] {
-    flips_mesh_.replace(cavity, fresh, ids_);
-    replaced(ids_);
-    protect_all();
-    return true;
-  };
-  if (!constrained_delaunay) return apply();
   std::map<Face, std::uint32_t> outside_apex;  // the cavity's outer faces, with the apex beyond
   for (const std::uint32_t t : cavity) {
     const auto& rec = records_[t];
@@ -223,7 +176,7 @@ bool FlipRecovery::insert_facet(std::span<const Face> pieces, bool constrained_d
   const auto violates = [&](const Tuple& t, std::uint32_t x) {
     return x != kInf && insphere_perturbed(P(t[0]), P(t[1]), P(t[2]), P(t[3]), P(x)) == Sign::Positive;
   };
-  for (std::uint32_t k = 0; k < finite_count; ++k) {
+  for (std::uint32_t k = 0; k < fresh.size(); ++k) {
     const Tuple& t = fresh[k];
     for (int i = 0; i < 4; ++i) {
       const Face f = sorted3({t[kFacet[i][0]], t[kFacet[i][1]], t[kFacet[i][2]]});
@@ -243,7 +196,10 @@ bool FlipRecovery::insert_facet(std::span<const Face> pieces, bool constrained_d
       }
     }
   }
-  return apply();
+  flips_mesh_.replace(cavity, fresh, ids_);
+  replaced(ids_);
+  protect_all();
+  return true;
 }
 
 }  // namespace dtlab

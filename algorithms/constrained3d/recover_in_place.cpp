@@ -252,16 +252,6 @@ std::string recover_in_place(Constrained3dContext& c) {
           recovery.protect_face(t[0], t[1], t[2]);
           continue;
         }
-        // Flips cannot make it: the whole triangle's pieces by retriangulating the cavity they
-        // cross (Si and Gärtner 2005; TetGen's face recovery), when its sides are there.
-        const auto boundary = facet_boundary(c, f);
-        std::string why_not;
-        if (std::all_of(boundary.begin(), boundary.end(), [&](const auto& e) { return recovery.has_edge(e[0], e[1]); }) &&
-            recovery.insert_facet(tris, false, why_not)) {
-          for (const Tri& u : tris)
-            for (int r = 0; r < 3; ++r) recovery.protect_edge(u[r], u[(r + 1) % 3]);
-          break;
-        }
         all_made = false;
         if (++tries[f] > kPointsPerTriangle)
           return "triangle " + std::to_string(f + 1) + " is still missing after " + std::to_string(kPointsPerTriangle) +
