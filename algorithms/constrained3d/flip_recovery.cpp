@@ -57,9 +57,14 @@ FlipRecovery::FlipRecovery(Tetrahedralization3& mesh, std::vector<std::uint64_t>
       protected_edges_(std::move(protected_edges)),
       protected_faces_(std::move(protected_faces)) {}
 
-void FlipRecovery::protect_edge(std::uint32_t u, std::uint32_t v) { extra_edges_.insert(edge_key(u, v)); }
+// The sets hold only what the constructor's sorted lists do not (pieces made by splits).
+void FlipRecovery::protect_edge(std::uint32_t u, std::uint32_t v) {
+  const std::uint64_t k = edge_key(u, v);
+  if (!std::binary_search(protected_edges_.begin(), protected_edges_.end(), k)) extra_edges_.insert(k);
+}
 void FlipRecovery::protect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  extra_faces_.insert(face_key(a, b, c));
+  const auto k = face_key(a, b, c);
+  if (!std::binary_search(protected_faces_.begin(), protected_faces_.end(), k)) extra_faces_.insert(k);
 }
 
 bool FlipRecovery::is_protected_edge(std::uint32_t u, std::uint32_t v) const {
