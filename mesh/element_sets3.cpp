@@ -4,6 +4,8 @@
 #include <unordered_set>
 
 #include "kernel/error.hpp"
+#include "kernel/intersections.hpp"
+#include "kernel/predicates.hpp"
 
 namespace dtlab {
 
@@ -92,6 +94,52 @@ std::vector<std::uint32_t> shell(const Tetrahedralization3& tet, std::uint32_t t
     if (!even_permutation(ia, ib, k, l)) std::swap(k, l);
     t = tet.adjacent(t, k);
   } while (t != tetrahedron);
+  return out;
+}
+
+std::vector<std::uint32_t> pipe(const Tetrahedralization3& tet, std::uint32_t tetrahedron, std::uint32_t a,
+                                std::uint32_t b) {
+  if (a == b || a >= tet.point_count() || b >= tet.point_count())
+    throw InternalError("pipe: [" + std::to_string(a) + ", " + std::to_string(b) + "] is no segment between two vertices");
+  const auto P = tet.points();
+  // Whether the open segment (a, b) meets closed finite tetrahedron t.
+  const auto meets = [&](std::uint32_t t) {
+    if (tet.is_ghost(t)) return false;
+    const std::uint32_t ia = index_of(tet, t, a), ib = index_of(tet, t, b);
+    if (ia != T3::kNone && ib != T3::kNone) return true;  // [a, b] is its edge
+    if (ia != T3::kNone || ib != T3::kNone) {
+      // From its vertex s towards the other end e: into the closed cone of t at s, i.e. e on
+      // the inner side (or on) each facet through s (facet i, listed, has t on its positive side).
+      const std::uint32_t is = ia != T3::kNone ? ia : ib, e = ia != T3::kNone ? b : a;
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        if (i == is) continue;
+        const auto& f = T3::kFacetVertex[i];
+        if (orient3d(P[tet.vertex(t, f[0])], P[tet.vertex(t, f[1])], P[tet.vertex(t, f[2])], P[e]) == Sign::Negative)
+          return false;
+      }
+      return true;
+    }
+    // Neither end is in t (a vertex lies in no other tetrahedron), so the segment meets it iff
+    // it meets one of its facets.
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const auto& f = T3::kFacetVertex[i];
+      if (segment_meets_triangle3(P[a], P[b], P[tet.vertex(t, f[0])], P[tet.vertex(t, f[1])], P[tet.vertex(t, f[2])]))
+        return true;
+    }
+    return false;
+  };
+  std::vector<std::uint32_t> out, queue = ball(tet, tetrahedron, a);
+  std::unordered_set<std::uint32_t> seen(queue.begin(), queue.end());
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const std::uint32_t t = queue[k];
+    if (!meets(t)) continue;
+    out.push_back(t);
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t u = tet.adjacent(t, i);
+      if (seen.insert(u).second) queue.push_back(u);
+    }
+    if (queue.size() > tet.tetrahedron_count()) throw InternalError("pipe: the search exceeds the tetrahedron count");
+  }
   return out;
 }
 

@@ -1,5 +1,5 @@
-// Element sets of a 3D tetrahedralization (book §1.7): the ball of a vertex, the shell of an edge.
-// Both walk the adjacency of Tetrahedralization3 (mesh/tetrahedralization3.hpp) with loops
+// Element sets of a 3D tetrahedralization (book §1.7): the ball of a vertex, the shell of an edge,
+// the pipe of a segment. Each walks the adjacency of Tetrahedralization3 (mesh/tetrahedralization3.hpp) with loops
 // bounded by the number of tetrahedra; a broken structure gives InternalError, never a hang.
 #pragma once
 
@@ -24,5 +24,14 @@ std::vector<std::uint32_t> ball(const Tetrahedralization3& tet, std::uint32_t te
 // tetrahedron after (a, b, c, d), positively oriented, is the one across facet (a, b, d).
 std::vector<std::uint32_t> shell(const Tetrahedralization3& tet, std::uint32_t tetrahedron, std::uint32_t a,
                                  std::uint32_t b);
+
+// The general pipe of segment [a, b] between vertices a != b (book §1.7): every finite
+// tetrahedron that the open segment meets, closed: through its interior, along one of its faces
+// or edges, or at one of its vertices, so that where the segment passes through an edge or a
+// vertex the whole shell or ball is in it; the finite shell of [a, b] when it is an edge.
+// Decided exactly (orient3d, kernel/intersections.hpp); breadth-first from `tetrahedron`
+// (which must have a as a vertex) through the tetrahedra it takes, in that order.
+std::vector<std::uint32_t> pipe(const Tetrahedralization3& tet, std::uint32_t tetrahedron, std::uint32_t a,
+                                std::uint32_t b);
 
 }  // namespace dtlab

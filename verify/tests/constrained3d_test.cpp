@@ -17,6 +17,7 @@
 #include "algorithms/constrained3d/constrained3d.hpp"
 #include "algorithms/constrained3d/registry.hpp"
 #include "algorithms/constrained3d/exhaustive_tetrahedralization.hpp"
+#include "algorithms/constrained3d/flip_recovery.hpp"
 #include "algorithms/constrained3d/insert_point.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "algorithms/delaunay3d/flip_mesh.hpp"
@@ -529,6 +530,50 @@ TEST(ConstrainedChecks3, CatchDamagedResults) {
 }
 
 ClosedSurface3 random_star(const std::vector<std::array<int, 3>>& lattice, const std::vector<int>& factors);
+
+// Facet insertion by cavity retriangulation (FlipRecovery::insert_facet), on a quadrilateral in
+// z = 0 among four points off it (found by a search over random ones): its Delaunay
+// triangulation goes in, and the filling is a CDT with the two pieces as constraints; with the
+// other diagonal gift-wrapping completes, but the filling is not constrained Delaunay against
+// its surroundings, so insert_facet refuses it and leaves the mesh as it was.
+TEST(FacetInsertion, InsertsTheDelaunayPiecesAndRefusesAFillingThatIsNotConstrainedDelaunay) {
+  const std::vector<Vec3> P = {{0, 0, 0},
+                               {4, 0, 0},
+                               {3.9144096185533819, 0.86139714045389082, 0},
+                               {0.87825558993052089, 2.0567784710778394, 0},
+                               {2.8638820441446682, 1.2110300138297134, -0.81439837938480819},
+                               {2.0726101935769643, 1.4600809820707785, 0.6582938217998513},
+                               {3.3184134588437568, -0.9078000904628496, -0.8815136057465196},
+                               {2.6821121656132325, 0.37226206725309297, 0.34330818356066373}};
+  const Tetrahedralization3 delaunay = delaunay3d(P).tetrahedralization;
+  std::vector<std::uint64_t> sides;
+  for (const auto& [x, y] : {std::pair{0u, 1u}, {1u, 2u}, {2u, 3u}, {0u, 3u}}) sides.push_back(std::uint64_t{x} << 32 | y);
+  std::sort(sides.begin(), sides.end());
+  const std::vector<Ids3> good{{0, 1, 2}, {0, 2, 3}}, bad{{0, 1, 3}, {1, 2, 3}};
+  {
+    Tetrahedralization3 t = delaunay;
+    FlipRecovery recovery(t, sides, {});
+    for (const auto& [x, y] : {std::pair{0u, 1u}, {1u, 2u}, {2u, 3u}, {0u, 3u}}) ASSERT_TRUE(recovery.has_edge(x, y));
+    ASSERT_FALSE(recovery.has_face(0, 1, 2) && recovery.has_face(0, 2, 3));  // there is something to insert
+    std::string why;
+    ASSERT_TRUE(recovery.insert_facet(good, why)) << why;
+    EXPECT_TRUE(recovery.has_face(0, 1, 2) && recovery.has_face(0, 2, 3));
+    recovery.finish();
+    ASSERT_TRUE(check_topology3(t).ok);
+    ASSERT_TRUE(check_orientation3(t).ok);
+    const auto constrained = [&](const Ids3& f) { return f == Ids3{0, 1, 2} || f == Ids3{0, 2, 3}; };
+    EXPECT_TRUE(check_constrained_empty_sphere3(t, constrained).ok);
+  }
+  {
+    Tetrahedralization3 t = delaunay;
+    FlipRecovery recovery(t, sides, {});
+    std::string why;
+    EXPECT_FALSE(recovery.insert_facet(bad, why));
+    EXPECT_NE(why.find("not constrained Delaunay"), std::string::npos) << why;
+    recovery.finish();
+    EXPECT_EQ(canonical_tetrahedron_set(t), canonical_tetrahedron_set(delaunay));  // unchanged
+  }
+}
 
 // The CDT check is not a formality: one 2-3 flip across an unconstrained facet of a "cdt"
 // result (the two tetrahedra's union convex) makes the new facets fail it, and the same

@@ -20,7 +20,9 @@
 #include "algorithms/delaunay3d/registry.hpp"
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/error.hpp"
+#include "kernel/exact_rational.hpp"
 #include "kernel/predicates.hpp"
+#include "kernel/rounding.hpp"
 #include "mesh/element_sets3.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
@@ -601,6 +603,98 @@ TEST(ElementSets3, ShellTurnsRightHandedAboutTheEdge) {
     const auto Q = tet.points();
     EXPECT_EQ(orient3d(Q[0], Q[1], Q[own], Q[shared]), Sign::Positive) << "step " << k;
   }
+}
+
+// The pipe against its definition, tetrahedron by tetrahedron over the whole mesh: the open
+// segment meets the closed tetrahedron iff some point of it lies in the tetrahedron, tested with
+// exact rationals at the points where the segment crosses the tetrahedron's planes.
+std::set<std::uint32_t> brute_force_pipe(const T3& tet, std::uint32_t a, std::uint32_t b) {
+  const auto P = tet.points();
+  std::set<std::uint32_t> out;
+  for (std::uint32_t t = 0; t < tet.tetrahedron_count(); ++t) {
+    if (tet.is_ghost(t)) continue;
+    // Barycentric signs of a + s (b - a) are affine in s: the segment's points in t form an
+    // interval, found from where each of the four signed volumes changes sign.
+    std::array<Rational, 4> va, vb;  // signed volumes of the facets with a and with b
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const auto& f = T3::kFacetVertex[i];
+      const ExactPoint3 x = to_exact(P[tet.vertex(t, f[0])]), y = to_exact(P[tet.vertex(t, f[1])]),
+                        z = to_exact(P[tet.vertex(t, f[2])]);
+      const auto volume = [&](const ExactPoint3& q) {
+        const Rational ux = y.x - x.x, uy = y.y - x.y, uz = y.z - x.z, wx = z.x - x.x, wy = z.y - x.y, wz = z.z - x.z;
+        const Rational qx = q.x - x.x, qy = q.y - x.y, qz = q.z - x.z;
+        return ux * (wy * qz - wz * qy) - uy * (wx * qz - wz * qx) + uz * (wx * qy - wy * qx);
+      };
+      va[i] = volume(to_exact(P[a]));
+      vb[i] = volume(to_exact(P[b]));
+    }
+    // The points a + s (b - a) of t: s in [lo, hi], where each volume (1 - s) va + s vb is
+    // non-negative; the open segment meets t iff that interval meets (0, 1).
+    Rational lo(0), hi(1);
+    bool empty = false;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const Rational d = vb[i] - va[i];
+      if (d.sign() == Sign::Zero) {
+        empty = empty || va[i].sign() == Sign::Negative;
+        continue;
+      }
+      const Rational zero = (Rational(0) - va[i]) / d;
+      if (d.sign() == Sign::Positive) lo = std::max(lo, zero);
+      else hi = std::min(hi, zero);
+    }
+    if (!empty && lo <= hi && (lo < hi || (Rational(0) < lo && lo < Rational(1)))) out.insert(t);
+  }
+  return out;
+}
+
+TEST(ElementSets3, PipeOfRandomSegmentsMatchesItsDefinition) {
+  const auto r = run(uniform(60, 5));
+  const T3& tet = r.tetrahedralization;
+  const auto start = vertex_tetrahedra(tet);
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<std::uint32_t> vertex(0, static_cast<std::uint32_t>(tet.point_count() - 1));
+  for (int k = 0; k < 120; ++k) {
+    const std::uint32_t a = vertex(rng), b = vertex(rng);
+    if (a == b) continue;
+    const auto p = pipe(tet, start[a], a, b);
+    const std::set<std::uint32_t> got(p.begin(), p.end());
+    EXPECT_EQ(got.size(), p.size()) << "a tetrahedron listed twice";
+    EXPECT_EQ(got, brute_force_pipe(tet, a, b)) << "segment " << a << " - " << b;
+  }
+}
+
+TEST(ElementSets3, PipeThroughAVertexAndAnEdgeTakesTheirBallAndShell) {
+  // A 3 x 3 x 3 grid: the main diagonal passes through the centre vertex, and the segment from
+  // (0, 0, 1) to (2, 2, 1) through the middle; every tetrahedron of the centre's ball is in both
+  // pipes, since each holds the centre.
+  std::vector<Vec3> P;
+  for (int z = 0; z < 3; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 3; ++x) P.push_back({double(x), double(y), double(z)});
+  const auto r = run(P);
+  const T3& tet = r.tetrahedralization;
+  const auto start = vertex_tetrahedra(tet);
+  const auto id = [](int x, int y, int z) { return static_cast<std::uint32_t>(x + 3 * y + 9 * z); };
+  const std::uint32_t centre = id(1, 1, 1);
+  std::set<std::uint32_t> centre_ball;
+  for (const std::uint32_t t : ball(tet, start[centre], centre))
+    if (!tet.is_ghost(t)) centre_ball.insert(t);
+  for (const auto& [a, b] : {std::pair{id(0, 0, 0), id(2, 2, 2)}, std::pair{id(0, 0, 1), id(2, 2, 1)}}) {
+    const auto p = pipe(tet, start[a], a, b);
+    const std::set<std::uint32_t> got(p.begin(), p.end());
+    for (const std::uint32_t t : centre_ball) EXPECT_TRUE(got.count(t)) << "tetrahedron " << t;
+    EXPECT_EQ(got, brute_force_pipe(tet, a, b));
+  }
+  // An edge's pipe is its finite shell.
+  const std::uint32_t t0 = start[0];
+  std::uint32_t w = T3::kNone;
+  for (std::uint32_t i = 0; i < 4; ++i)
+    if (tet.vertex(t0, i) != 0 && tet.vertex(t0, i) != kInf) w = tet.vertex(t0, i);
+  std::set<std::uint32_t> finite_shell;
+  for (const std::uint32_t t : shell(tet, t0, 0, w))
+    if (!tet.is_ghost(t)) finite_shell.insert(t);
+  const auto p = pipe(tet, t0, 0, w);
+  EXPECT_EQ(std::set<std::uint32_t>(p.begin(), p.end()), finite_shell);
 }
 
 TEST(ElementSets3, BrokenStartGivesInternalError) {
