@@ -88,7 +88,8 @@ MeshIndex::MeshIndex(const Tetrahedralization3& mesh)
       if (v != T3::kInfinite) incident_[v] = t;
 }
 
-// Depth-first over the tetrahedra holding u, through their facets that hold u.
+// Depth-first over the tetrahedra holding u, through their facets that hold u; stops early
+// where f returns true.
 template <class F>
 void MeshIndex::for_each_in_star(std::uint32_t u, F&& f) const {
   if (u >= incident_.size() || incident_[u] == T3::kNone) return;
@@ -98,7 +99,7 @@ void MeshIndex::for_each_in_star(std::uint32_t u, F&& f) const {
   while (!stack_.empty()) {
     const std::uint32_t t = stack_.back();
     stack_.pop_back();
-    f(t);
+    if (f(t)) return;
     const auto& r = mesh_.records()[t];
     for (std::uint32_t i = 0; i < 4; ++i) {
       if (r.vertex[i] == u) continue;  // the facet opposite u does not hold it
@@ -113,7 +114,7 @@ bool MeshIndex::has_edge(std::uint32_t u, std::uint32_t v) const {
   bool found = false;
   for_each_in_star(u, [&](std::uint32_t t) {
     const auto& x = mesh_.records()[t].vertex;
-    found = found || std::find(x.begin(), x.end(), v) != x.end();
+    return found = std::find(x.begin(), x.end(), v) != x.end();
   });
   return found;
 }
@@ -123,7 +124,7 @@ bool MeshIndex::has_face(std::uint32_t u, std::uint32_t v, std::uint32_t w) cons
   bool found = false;
   for_each_in_star(u, [&](std::uint32_t t) {
     const auto& x = mesh_.records()[t].vertex;
-    found = found || (std::find(x.begin(), x.end(), v) != x.end() && std::find(x.begin(), x.end(), w) != x.end());
+    return found = std::find(x.begin(), x.end(), v) != x.end() && std::find(x.begin(), x.end(), w) != x.end();
   });
   return found;
 }
@@ -133,9 +134,10 @@ void MeshIndex::ring(std::uint32_t u, std::uint32_t v, std::vector<std::uint32_t
   if (u == T3::kInfinite) std::swap(u, v);
   for_each_in_star(u, [&](std::uint32_t t) {
     const auto& x = mesh_.records()[t].vertex;
-    if (std::find(x.begin(), x.end(), v) == x.end()) return;
+    if (std::find(x.begin(), x.end(), v) == x.end()) return false;
     for (const std::uint32_t w : x)
       if (w != u && w != v && std::find(out.begin(), out.end(), w) == out.end()) out.push_back(w);
+    return false;
   });
 }
 

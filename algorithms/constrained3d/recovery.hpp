@@ -33,7 +33,7 @@ class MeshIndex {
   }
 
  private:
-  // Calls f(t) for every tetrahedron holding u (finite u).
+  // Calls f(t) for every tetrahedron holding u (finite u) until f returns true.
   template <class F>
   void for_each_in_star(std::uint32_t u, F&& f) const;
 

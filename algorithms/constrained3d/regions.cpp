@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <map>
-#include <set>
 
 #include "kernel/predicates.hpp"
 
@@ -13,11 +12,10 @@ using T3 = Tetrahedralization3;
 
 TetrahedronComponents tetrahedron_components(const Tetrahedralization3& mesh,
                                              std::span<const std::array<std::uint32_t, 3>> walls) {
-  std::set<std::array<std::uint32_t, 3>> wall;
-  for (auto w : walls) {
-    std::sort(w.begin(), w.end());
-    wall.insert(w);
-  }
+  std::vector<std::array<std::uint32_t, 3>> wall(walls.begin(), walls.end());  // sorted triples, sorted
+  for (auto& w : wall) std::sort(w.begin(), w.end());
+  std::sort(wall.begin(), wall.end());
+  const auto is_wall = [&](const std::array<std::uint32_t, 3>& f) { return std::binary_search(wall.begin(), wall.end(), f); };
   TetrahedronComponents c;
   const std::size_t n = mesh.tetrahedron_count();
   c.component.assign(n, T3::kNone);
@@ -37,7 +35,7 @@ TetrahedronComponents tetrahedron_components(const Tetrahedralization3& mesh,
         if (c.component[u] != T3::kNone) continue;
         auto f = mesh.facet_vertices(T3::facet(t, i));
         std::sort(f.begin(), f.end());
-        if (wall.count(f)) continue;
+        if (is_wall(f)) continue;
         c.component[u] = id;
         queue.push_back(u);
       }
