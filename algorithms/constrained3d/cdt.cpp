@@ -9,8 +9,9 @@
 //     in its plane (facet_delaunay_pieces) inserted by cavity retriangulation
 //     (FlipRecovery::insert_facet: the tetrahedra it crosses removed and gift-wrapped again on
 //     both sides of it). Facets inserted into a CDT leave a CDT.
-//  3. Where a facet's cavity cannot be filled (rounded Steiner points make a facet slightly
-//     non-planar, and the theorem above is about exact ones), its longest boundary piece is
+//  3. Where a facet's cavity cannot be filled, or its filling is not constrained Delaunay
+//     against its surroundings (the theorem above is about exact planar facets; rounded Steiner
+//     points make them slightly non-planar), its longest boundary piece is
 //     split and the round starts again from step 1. After kRounds such rounds the method hands
 //     over to "recover" and says so (the result is then not constrained Delaunay).
 // Every Steiner point is on an input edge: the facets get none.
@@ -32,7 +33,8 @@ namespace {
 
 constexpr int kRounds = 8;
 
-// Splits every missing edge piece until the Delaunay tetrahedralization holds them all.
+// Splits every missing edge piece until the Delaunay tetrahedralization holds them all; each
+// pass adds a point, so the Steiner limit (the inserter's InputError) bounds the passes.
 void make_segments_delaunay(Constrained3dContext& c, SteinerInserter& inserter) {
   for (;;) {
     const MeshIndex index(c.mesh);
