@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <queue>
 #include <set>
 #include <string>
@@ -208,6 +209,56 @@ bool facet_still_covered(const Constrained3dContext& c, std::uint32_t f, const M
   return true;
 }
 
+namespace {
+
+// The gift-wrapping in (s, t) that cover_facet and facet_delaunay_pieces share: from facet f's
+// boundary pieces, across each open directed piece (u, v), the triangle (u, v, apex(u, v, outer))
+// (outer: the boundary pieces). A piece with no apex (kNone), or whose triangle would overlap
+// one taken before, goes to `missing`. The pieces when none is missing and they triangulate the
+// triangle exactly; else nothing.
+template <class Apex>
+std::optional<std::vector<std::array<std::uint32_t, 3>>> wrap_facet(const Constrained3dContext& c, std::uint32_t f,
+                                                                   const FacetParameters& st, Apex&& apex,
+                                                                   std::vector<std::array<std::uint32_t, 2>>& missing) {
+  const auto boundary = facet_boundary(c, f);
+  std::set<std::array<std::uint32_t, 2>> covered;  // directed pieces with their face
+  const std::set<std::array<std::uint32_t, 2>> outer(boundary.begin(), boundary.end());
+  std::queue<std::array<std::uint32_t, 2>> open;
+  for (const auto& b : boundary) open.push(b);
+  std::vector<std::array<std::uint32_t, 3>> pieces;
+  const std::size_t missing_before = missing.size();
+  std::size_t steps = 0;
+  while (!open.empty()) {
+    const auto [u, v] = open.front();
+    open.pop();
+    if (covered.count({u, v})) continue;
+    if (++steps > 4 * st.size() * st.size() + 16) throw InternalError("constrained3d: facet cover did not end");
+    const std::uint32_t w = apex(u, v, outer);
+    if (w == T3::kNone || covered.count({v, w}) || covered.count({w, u})) {  // none, or overlapping
+      missing.push_back({u, v});
+      continue;
+    }
+    covered.insert({u, v});
+    covered.insert({v, w});
+    covered.insert({w, u});
+    pieces.push_back({u, v, w});
+    if (!outer.count({v, w})) open.push({w, v});
+    if (!outer.count({w, u})) open.push({u, w});
+  }
+  if (missing.size() != missing_before) return std::nullopt;
+  // Every piece positive in (s, t), each directed side used once: the pieces cover the triangle
+  // with degree 1 exactly when their doubled areas add up to the triangle's, 1.
+  Rational area;
+  for (const auto& p : pieces) area += orient_st(st.at(p[0]), st.at(p[1]), st.at(p[2]));
+  if (area != Rational(1)) {
+    missing.push_back(boundary.front());
+    return std::nullopt;
+  }
+  return pieces;
+}
+
+}  // namespace
+
 bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& index,
                  std::vector<std::array<std::uint32_t, 2>>& missing) {
   // A triangle with no Steiner point is covered exactly when it is a mesh face.
@@ -220,20 +271,10 @@ bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& inde
     }
   }
   const FacetParameters st = facet_parameters(c, f);
-  const auto boundary = facet_boundary(c, f);
-  std::set<std::array<std::uint32_t, 2>> covered;                            // directed pieces with their face
-  std::set<std::array<std::uint32_t, 2>> outer(boundary.begin(), boundary.end());
-  std::queue<std::array<std::uint32_t, 2>> open;
-  for (const auto& b : boundary) open.push(b);
-  std::vector<std::array<std::uint32_t, 3>> pieces;
   std::vector<std::uint32_t> ring;
-  const std::size_t missing_before = missing.size();
-  std::size_t steps = 0;
-  while (!open.empty()) {
-    const auto [u, v] = open.front();
-    open.pop();
-    if (covered.count({u, v})) continue;
-    if (++steps > 4 * st.size() * st.size() + 16) throw InternalError("constrained3d: facet cover did not end");
+  // Across (u, v): the mesh face on its left whose third vertex is on f, the one whose (s, t)
+  // circle holds no other such vertex.
+  const auto apex = [&](std::uint32_t u, std::uint32_t v, const std::set<std::array<std::uint32_t, 2>>& outer) {
     const St &pu = st.at(u), &pv = st.at(v);
     std::uint32_t best = T3::kNone;
     index.ring(u, v, ring);
@@ -247,39 +288,17 @@ bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& inde
         continue;
       if (best == T3::kNone || incircle_st(pu, pv, st.at(best), it->second) == Sign::Positive) best = w;
     }
-    if (best == T3::kNone) {
-      missing.push_back({u, v});
-      continue;
-    }
-    const std::uint32_t w = best;
-    if (covered.count({v, w}) || covered.count({w, u})) {  // overlaps a face taken before
-      missing.push_back({u, v});
-      continue;
-    }
-    covered.insert({u, v});
-    covered.insert({v, w});
-    covered.insert({w, u});
-    pieces.push_back({u, v, w});
-    if (!outer.count({v, w})) open.push({w, v});
-    if (!outer.count({w, u})) open.push({u, w});
-  }
-  if (missing.size() != missing_before) return false;
-  // Every piece positive in (s, t), each directed side used once: the pieces cover the triangle
-  // with degree 1 exactly when their doubled areas add up to the triangle's, 1.
-  Rational area;
-  for (const auto& p : pieces) area += orient_st(st.at(p[0]), st.at(p[1]), st.at(p[2]));
-  if (area != Rational(1)) {
-    missing.push_back(boundary.front());
-    return false;
-  }
-  c.facets[f].pieces = std::move(pieces);
+    return best;
+  };
+  auto pieces = wrap_facet(c, f, st, apex, missing);
+  if (!pieces) return false;
+  c.facets[f].pieces = std::move(*pieces);
   c.facets[f].pieces_vertex_count = facet_vertex_count(c, f);
   return true;
 }
 
 std::vector<std::array<std::uint32_t, 3>> facet_delaunay_pieces(const Constrained3dContext& c, std::uint32_t f) {
   const FacetParameters st = facet_parameters(c, f);
-  const auto boundary = facet_boundary(c, f);
   // The metric of the triangle's plane in (s, t): |s e1 + t e2|^2, e1 = B - A, e2 = C - A, exact.
   const auto p = c.mesh.points();
   const auto& k = c.facets[f].corners;
@@ -317,30 +336,17 @@ std::vector<std::array<std::uint32_t, 3>> facet_delaunay_pieces(const Constraine
     }
     throw InternalError("facet_delaunay_pieces: four collinear vertices in an in-circle test");
   };
-  std::set<std::array<std::uint32_t, 2>> covered, outer(boundary.begin(), boundary.end());
-  std::vector<std::array<std::uint32_t, 2>> open(boundary.begin(), boundary.end());
-  std::vector<std::array<std::uint32_t, 3>> pieces;
-  while (!open.empty()) {
-    const auto [u, v] = open.back();
-    open.pop_back();
-    if (covered.count({u, v})) continue;
+  const auto apex = [&](std::uint32_t u, std::uint32_t v, const std::set<std::array<std::uint32_t, 2>>&) {
     std::uint32_t w = T3::kNone;
     for (const auto& [x, px] : st)
       if (orient_st(st.at(u), st.at(v), px).sign() == Sign::Positive && (w == T3::kNone || inside(u, v, w, x))) w = x;
-    if (w == T3::kNone || covered.count({v, w}) || covered.count({w, u}))
-      throw InternalError("facet_delaunay_pieces: the gift-wrapping of triangle " + std::to_string(f + 1) + " failed");
-    covered.insert({u, v});
-    covered.insert({v, w});
-    covered.insert({w, u});
-    pieces.push_back({u, v, w});
-    if (!outer.count({v, w})) open.push_back({w, v});
-    if (!outer.count({w, u})) open.push_back({u, w});
-  }
-  Rational area;
-  for (const auto& t : pieces) area += orient_st(st.at(t[0]), st.at(t[1]), st.at(t[2]));
-  if (area != Rational(1))
-    throw InternalError("facet_delaunay_pieces: the pieces of triangle " + std::to_string(f + 1) + " do not cover it");
-  return pieces;
+    return w;
+  };
+  std::vector<std::array<std::uint32_t, 2>> missing;
+  auto pieces = wrap_facet(c, f, st, apex, missing);
+  if (!pieces)
+    throw InternalError("facet_delaunay_pieces: the gift-wrapping of triangle " + std::to_string(f + 1) + " failed");
+  return std::move(*pieces);
 }
 
 void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const FacetParameters& st,
