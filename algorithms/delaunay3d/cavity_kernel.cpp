@@ -109,7 +109,8 @@ void CavityKernel::grow_chunk(std::size_t k) {
   if (begin + k > T3::kMaxTetrahedra)  // a size limit of the input, not a bug
     throw InputError("the Delaunay tetrahedralization of these points needs more than " +
                      std::to_string(T3::kMaxTetrahedra) + " tetrahedra (32-bit facet handles)");
-  const std::size_t size = std::min<std::size_t>(begin + std::max(k, kChunk), T3::kMaxTetrahedra);
+  const std::size_t chunk = std::clamp(begin / 8, kMinChunk, kChunk);
+  const std::size_t size = std::min<std::size_t>(begin + std::max(k, chunk), T3::kMaxTetrahedra);
   if (size > records_.capacity()) records_.reserve(std::max(size, records_.capacity() + records_.capacity() / 4));
   records_.resize(size);
   refresh_views();

@@ -114,7 +114,9 @@ class CavityKernel {
     std::uint32_t key;  // a vertex id, or kNone
     std::uint32_t local;
   };
-  static constexpr std::size_t kChunk = 4096;    // records added to the array at a time
+  // Records added to the array at a time: an eighth of it, from 64 to 4096, so that a small
+  // mesh does not touch (and page in) a large chunk it never uses.
+  static constexpr std::size_t kMinChunk = 64, kChunk = 4096;
   static constexpr std::size_t kTableSide = 64;  // balls with at most 64 boundary vertices
   static constexpr int kHashBits = 8;            // load at most 1/4
   static constexpr std::size_t kHashSize = std::size_t{1} << kHashBits;

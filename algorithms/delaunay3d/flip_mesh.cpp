@@ -15,7 +15,9 @@ using T3 = Tetrahedralization3;
 constexpr std::uint32_t kInf = T3::kInfinite;
 constexpr std::uint32_t kNone = T3::kNone;
 constexpr auto kFacet = T3::kFacetVertex;
-constexpr std::size_t kChunk = 4096;  // records added to the array at a time
+// Records added to the array at a time: an eighth of it, from 64 to 4096 (a small mesh pages in
+// no large chunk it never uses).
+constexpr std::size_t kMinChunk = 64, kChunk = 4096;
 
 std::array<std::uint32_t, 3> sorted_key(std::uint32_t x, std::uint32_t y, std::uint32_t z) noexcept {
   if (x > y) std::swap(x, y);
@@ -50,7 +52,7 @@ void FlipMesh::grow(std::size_t k) {
     if (need > T3::kMaxTetrahedra)  // a size limit of the input, not a bug
       throw InputError("the Delaunay tetrahedralization of these points needs more than " +
                        std::to_string(T3::kMaxTetrahedra) + " tetrahedra (32-bit facet handles)");
-    const std::size_t size = std::min<std::size_t>(need + kChunk, T3::kMaxTetrahedra);
+    const std::size_t size = std::min<std::size_t>(need + std::clamp(need / 8, kMinChunk, kChunk), T3::kMaxTetrahedra);
     if (size > records_.capacity()) records_.reserve(std::max(size, records_.capacity() + records_.capacity() / 4));
     records_.resize(size);
     r_ = records_.data();
