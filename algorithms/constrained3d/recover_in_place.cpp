@@ -1,11 +1,13 @@
 // Method "recover" in place (recover.cpp): one tetrahedralization, transformed by flips
 // (flip_recovery.hpp) and split at Steiner points without any Delaunay insertion, as TetGen
-// does. Edges: every missing piece recovered by flips along its pipe, else split (concentric
-// shells, as "conforming") into the mesh, and its halves tried again. Triangles: each is given a
-// triangulation of its vertices in its own (s, t) parameters (its boundary polygon clipped ear by
-// ear, then its interior points each splitting the triangle that holds it); every triangle of
-// it is recovered by flips (its new edges first, then the face), and where one is not, its
-// centroid becomes a Steiner point of the input triangle and the triangulation is made again.
+// does. Edges: every missing piece recovered by flips along its pipe (tried again while flips for
+// the others succeed), else split where its walk stopped, into the mesh, and its halves tried
+// again. Triangles: each is given the Delaunay triangulation of its vertices in its own plane
+// (facet_delaunay_pieces: well-shaped pieces, which flips make far more often than the thin
+// ones of an ear-clipping; Chazelle's polyhedron with n = 2 went from 775 Steiner points to 36);
+// every triangle of it is recovered by flips (its new edges first, then the face), and where one
+// is not, a Steiner point of the input triangle goes where a mesh edge crosses it (else its
+// centroid) and the triangulation is made again.
 // Gives up (returning why, or throwing InputError) where a point cannot be placed or a triangle
 // stays missing after its share of points; the caller then takes the rounds of recover.cpp.
 #include <algorithm>
@@ -26,84 +28,12 @@ namespace {
 
 using Tri = std::array<std::uint32_t, 3>;
 
-Sign turn(const FacetParameters& st, std::uint32_t a, std::uint32_t b, std::uint32_t d) {
-  const auto &pa = st.at(a), &pb = st.at(b), &pd = st.at(d);
-  return ((pb[0] - pa[0]) * (pd[1] - pa[1]) - (pb[1] - pa[1]) * (pd[0] - pa[0])).sign();
-}
-
-// A triangulation of facet f's vertices in (s, t), counter-clockwise (the input triangle's turn);
-// empty if an interior point is not strictly inside it (cannot happen for points made inside).
-std::vector<Tri> facet_triangulation(const Constrained3dContext& c, std::uint32_t f, const FacetParameters& st) {
-  std::vector<std::uint32_t> polygon;
-  for (const auto& piece : facet_boundary(c, f)) polygon.push_back(piece[0]);
-  std::vector<Tri> out;
-  while (polygon.size() > 3) {
-    const std::size_t n = polygon.size();
-    // An ear: a strictly convex corner (no flat triangle) whose clipping leaves a polygon with a
-    // strictly convex corner still (clipping a corner of the triangle first could leave only the
-    // points on its opposite side, all in a line).
-    const auto convex_at = [&](const std::vector<std::uint32_t>& q, std::size_t i) {
-      const std::size_t m = q.size();
-      return turn(st, q[(i + m - 1) % m], q[i], q[(i + 1) % m]) == Sign::Positive;
-    };
-    std::size_t ear = n;
-    std::vector<std::uint32_t> rest;
-    for (std::size_t i = 0; i < n && ear == n; ++i) {
-      if (!convex_at(polygon, i)) continue;
-      rest = polygon;
-      rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(i));
-      for (std::size_t j = 0; j < rest.size() && ear == n; ++j)
-        if (convex_at(rest, j)) ear = i;
-    }
-    if (ear == n) return {};
-    out.push_back({polygon[(ear + n - 1) % n], polygon[ear], polygon[(ear + 1) % n]});
-    polygon.erase(polygon.begin() + static_cast<std::ptrdiff_t>(ear));
-  }
-  out.push_back({polygon[0], polygon[1], polygon[2]});
-  for (const std::uint32_t x : c.facets[f].interior) {
-    bool placed = false;
-    for (std::size_t k = 0; k < out.size() && !placed; ++k) {
-      const Tri t = out[k];
-      const Sign s0 = turn(st, t[0], t[1], x), s1 = turn(st, t[1], t[2], x), s2 = turn(st, t[2], t[0], x);
-      if (s0 == Sign::Negative || s1 == Sign::Negative || s2 == Sign::Negative) continue;
-      const int zeros = (s0 == Sign::Zero) + (s1 == Sign::Zero) + (s2 == Sign::Zero);
-      if (zeros > 1) return {};
-      if (zeros == 0) {
-        out[k] = {t[0], t[1], x};
-        out.push_back({t[1], t[2], x});
-        out.push_back({t[2], t[0], x});
-      } else {
-        // On side (u, v) of t: t and the triangle across split in two each.
-        const std::uint32_t u = s0 == Sign::Zero ? t[0] : s1 == Sign::Zero ? t[1] : t[2];
-        const std::uint32_t v = s0 == Sign::Zero ? t[1] : s1 == Sign::Zero ? t[2] : t[0];
-        const std::uint32_t w = s0 == Sign::Zero ? t[2] : s1 == Sign::Zero ? t[0] : t[1];
-        std::size_t other = out.size();
-        for (std::size_t j = 0; j < out.size() && other == out.size(); ++j)
-          for (int r = 0; r < 3; ++r)
-            if (out[j][r] == v && out[j][(r + 1) % 3] == u) other = j;
-        if (other == out.size()) return {};  // on the triangle's boundary: not an interior point
-        const Tri o = out[other];
-        std::uint32_t z = o[0];
-        for (const std::uint32_t y : o)
-          if (y != u && y != v) z = y;
-        out[k] = {u, x, w};
-        out.push_back({x, v, w});
-        out[other] = {v, x, z};
-        out.push_back({x, u, z});
-      }
-      placed = true;
-    }
-    if (!placed) return {};
-  }
-  return out;
-}
-
 // Where to split piece i of edge e that flips could not make: where it meets the face its walk
 // stopped at (TetGen's choice: the pipe is cut there), kept in the middle three quarters of the
 // piece; the usual split (concentric shells, midpoint) if there is no such face. A placement in
 // doubles: any parameter inside the piece gives an exact point of the edge.
-double split_at_block(const Constrained3dContext& c, const FlipRecovery& recovery, std::uint32_t e, std::size_t i) {
-  const auto [x, y, z] = recovery.blocking_face();
+double split_at_block(const Constrained3dContext& c, std::uint32_t e, std::size_t i, const std::array<std::uint32_t, 3>& block) {
+  const auto [x, y, z] = block;
   if (x == Tetrahedralization3::kNone || x == Tetrahedralization3::kInfinite || y == Tetrahedralization3::kInfinite ||
       z == Tetrahedralization3::kInfinite)
     return edge_split_parameter(c, e, i);
@@ -168,20 +98,17 @@ std::string recover_in_place(Constrained3dContext& c) {
   FlipRecovery recovery(c.mesh, std::move(protected_edges), std::move(protected_faces));
   SteinerInserter inserter(c);
   inserter.set_placement([&](const Vec3& p, std::uint32_t near) { return recovery.insert_point(p, near); });
+  constexpr int kEdgePasses = 3;  // passes over the failed pieces before any is split
 
-  // Edges. Each round splits the pieces that flips could not make; the Steiner limit (in the
-  // inserter) bounds the rounds.
+  // Edges. Each round splits the pieces that flips could not make (tried again while flips for
+  // others succeed); the Steiner limit (in the inserter) bounds the rounds.
   std::vector<EdgeSplit> splits;
   const std::vector<FacetPoint> none;
   for (;;) {
     ++c.rounds;
     splits.clear();
-    for (std::uint32_t e = 0; e < c.edges.size(); ++e) {
-      const auto& chain = c.edges[e].chain;
-      for (std::size_t i = 0; i + 1 < chain.size(); ++i)
-        if (!recovery.has_edge(chain[i], chain[i + 1]) && !recovery.recover_edge(chain[i], chain[i + 1]))
-          splits.push_back({e, split_at_block(c, recovery, e, i)});
-    }
+    for (const MissingPiece& m : edge_pieces_flips_cannot_make(c, recovery, kEdgePasses))
+      splits.push_back({m.edge, split_at_block(c, m.edge, m.index, m.block)});  // where its walk stopped
     if (splits.empty()) break;
     // One at a time: a split point that lands on another constraint (two edges a hair apart, as
     // in Chazelle's polyhedron) is moved along its piece, towards either end, before giving up.
@@ -191,10 +118,10 @@ std::string recover_in_place(Constrained3dContext& c) {
       const auto at = std::lower_bound(t.begin(), t.end(), split.t);
       if (at == t.begin() || at == t.end()) return "an edge split outside its piece";
       const double lo = *(at - 1), hi = *at;
-      // Flips for a later piece may have made this one since it was found missing.
+      // Flips for the pieces split before may let this one be made now.
       const auto& chain = c.edges[split.edge].chain;
       const auto piece = static_cast<std::size_t>(at - t.begin());
-      if (recovery.has_edge(chain[piece - 1], chain[piece])) continue;
+      if (recovery.has_edge(chain[piece - 1], chain[piece]) || recovery.recover_edge(chain[piece - 1], chain[piece])) continue;
       bool placed = false;
       for (int k = 0; k < 7 && !placed; ++k) {
         const double w = k == 0 ? 0.0 : std::ldexp(k % 2 ? 1.0 : -1.0, -(k + 3) / 2);  // 0, +-1/4, +-1/8, +-1/16
@@ -236,7 +163,7 @@ std::string recover_in_place(Constrained3dContext& c) {
         if (!parameters) parameters = facet_parameters(c, f);
         return *parameters;
       };
-      const std::vector<Tri> tris = vertex_count == 3 ? std::vector<Tri>{c.facets[f].corners} : facet_triangulation(c, f, st_of());
+      const std::vector<Tri> tris = vertex_count == 3 ? std::vector<Tri>{c.facets[f].corners} : facet_delaunay_pieces(c, f);
       if (tris.empty()) return "triangle " + std::to_string(f + 1) + " has a point off its interior";
       bool all_made = true;
       for (const Tri& t : tris) {

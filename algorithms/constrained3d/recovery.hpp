@@ -17,6 +17,18 @@
 
 namespace dtlab {
 
+class FlipRecovery;
+
+// The edge pieces that flips cannot make (recover.cpp): every missing piece is tried, then the
+// ones that failed again, up to `passes` more times while flips for the others make some (each
+// recovery changes the pipes of the rest). Each with where its last walk stopped
+// (FlipRecovery::blocking_face).
+struct MissingPiece {
+  std::uint32_t edge = 0, index = 0;  // piece `index` of the edge's chain
+  std::array<std::uint32_t, 3> block{};
+};
+std::vector<MissingPiece> edge_pieces_flips_cannot_make(const Constrained3dContext& c, FlipRecovery& recovery, int passes);
+
 // Edge queries on the mesh (ghost tetrahedra included, kInfinite a vertex like any): one
 // tetrahedron per vertex, and each query searches the star of its first vertex. Building it is
 // a pass over the records, so that it can be rebuilt after every round of insertions; each
