@@ -22,6 +22,7 @@ constexpr int kLargestShell = 10;
 // Steps of one walk or one triangle's recovery (each removes a tetrahedron from a pipe or an
 // edge crossing a triangle; the bound only guards against a broken invariant).
 constexpr int kSteps = 512;
+constexpr int kLinkRemovals = 16;  // per edge recovery (remove_edge_after_link)
 
 std::uint64_t edge_key(std::uint32_t u, std::uint32_t v) noexcept {
   return u < v ? std::uint64_t{u} << 32 | v : std::uint64_t{v} << 32 | u;
@@ -232,6 +233,28 @@ bool FlipRecovery::remove_edge(std::uint32_t t, std::uint32_t e0, std::uint32_t 
   return true;
 }
 
+template <class Accept>
+bool FlipRecovery::remove_edge_after_link(std::uint32_t t, std::uint32_t e0, std::uint32_t e1, Accept&& accept) {
+  if (is_protected_edge(e0, e1)) return false;
+  std::vector<std::uint32_t> link;
+  for (const std::uint32_t s : shell(mesh_, t, e0, e1))
+    for (const std::uint32_t w : records_[s].vertex)
+      if (w != e0 && w != e1 && w != kInf && std::find(link.begin(), link.end(), w) == link.end()) link.push_back(w);
+  const auto any = [](const std::vector<std::uint32_t>&, const std::vector<PolygonTriangle>&) { return true; };
+  for (const std::uint32_t w : link)
+    for (const std::uint32_t x : {e0, e1}) {
+      if (link_budget_ <= 0) return false;
+      if (is_protected_edge(x, w)) continue;
+      const std::uint32_t tx = tetrahedron_with(x, w);
+      if (tx == kNone || !remove_edge(tx, x, w, any)) continue;
+      --link_budget_;
+      const std::uint32_t te = tetrahedron_with(e0, e1);
+      if (te != kNone) remove_edge(te, e0, e1, accept);
+      return true;
+    }
+  return false;
+}
+
 bool FlipRecovery::advance(std::uint32_t u, std::uint32_t v) {
   ball_of(u, ball_);
   const std::vector<std::uint32_t> ball = ball_;
@@ -280,11 +303,14 @@ bool FlipRecovery::advance(std::uint32_t u, std::uint32_t v) {
     if (zeros == 0) {
       // Not convex across abc: one of its edges is reflex; remove one of them instead.
       moved = flip23(t, i) || remove_edge(t, a, b, toward_v) || remove_edge(t, b, c, toward_v) ||
-              remove_edge(t, c, a, toward_v);
+              remove_edge(t, c, a, toward_v) ||
+              (deep_ && (remove_edge_after_link(t, a, b, toward_v) || remove_edge_after_link(t, b, c, toward_v) ||
+                         remove_edge_after_link(t, c, a, toward_v)));
+      // (remove_edge_after_link is true whenever it changed the mesh, so t is intact for the next)
     } else {
       const std::uint32_t e0 = s[0] == Sign::Zero ? a : s[1] == Sign::Zero ? b : c;
       const std::uint32_t e1 = s[0] == Sign::Zero ? b : s[1] == Sign::Zero ? c : a;
-      moved = remove_edge(t, e0, e1, toward_v);
+      moved = remove_edge(t, e0, e1, toward_v) || (deep_ && remove_edge_after_link(t, e0, e1, toward_v));
     }
     if (!moved && block_[0] == kNone) block_ = {a, b, c};
     return moved;
@@ -294,6 +320,7 @@ bool FlipRecovery::advance(std::uint32_t u, std::uint32_t v) {
 
 bool FlipRecovery::recover_edge(std::uint32_t u, std::uint32_t v) {
   block_ = {kNone, kNone, kNone};
+  link_budget_ = kLinkRemovals;
   for (int step = 0; step < kSteps; ++step) {
     if (has_edge(u, v)) return true;
     if (!advance(u, v) && !advance(v, u)) return false;

@@ -7,7 +7,9 @@
 //    is left through a face or an edge: a face is flipped 2->3 when u and the apex beyond it see
 //    each other through it; an edge is removed with its shell's polygon fanned from u. Either
 //    way the pipe loses a tetrahedron at u, so the walk ends: with uv an edge, or at a
-//    transformation that is not valid (a reflex pipe, as in Schönhardt's polyhedron).
+//    transformation that is not valid (a reflex pipe, as in Schönhardt's polyhedron). Where
+//    allowed (allow_link_removals), an edge whose shell has no valid retriangulation first loses
+//    an edge of its link (a second level of flips, as in TetGen's flipnm; Si 2015).
 //  - Triangle abc (its edges present): the edges crossing its open interior are removed one at
 //    a time, each by a retriangulation of its shell whose new edges cross it nowhere; a removal
 //    destroys only faces through the edge it removes, so triangles recovered before stay. With
@@ -62,6 +64,10 @@ class FlipRecovery {
   // ball of vertex `near`. Returns its id, or kNone (nothing changed) where p is outside the hull,
   // on a ghost, equal to a vertex, or inside a protected face or edge.
   std::uint32_t insert_point(const Vec3& p, std::uint32_t near);
+  // Lets edge recovery remove link edges first where an edge's shell has no retriangulation
+  // (remove_edge_after_link below): far fewer Steiner points (fandisk 64 -> 37, twisted prisms 1
+  // each), at the cost of changing the mesh where it still fails.
+  void allow_link_removals(bool allow) noexcept { deep_ = allow; }
   // Adds a constraint to the protected ones (after recovering it).
   void protect_edge(std::uint32_t u, std::uint32_t v);
   void protect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
@@ -86,6 +92,13 @@ class FlipRecovery {
   // shell's polygon that `accept` takes (ring vertices, triangles); false if none.
   template <class Accept>
   bool remove_edge(std::uint32_t t, std::uint32_t e0, std::uint32_t e1, Accept&& accept);
+  // Where remove_edge(t, e0, e1, accept) found no retriangulation: a link edge (e0 or e1 to a
+  // vertex of the shell) removed by any valid retriangulation of its own shell, then e0e1 tried
+  // again (a second level of flips, as TetGen's flipnm), for each link edge until one is removed.
+  // True if the mesh changed (t may be gone then); a link removal stays even where e0e1 does not
+  // go, and each costs one of link_budget_, which recover_edge sets.
+  template <class Accept>
+  bool remove_edge_after_link(std::uint32_t t, std::uint32_t e0, std::uint32_t e1, Accept&& accept);
   void replaced(std::span<const std::uint32_t> ids);
   // Edges crossing the open triangle abc, each once with a tetrahedron holding it.
   void crossing_edges(std::uint32_t a, std::uint32_t b, std::uint32_t c,
@@ -102,6 +115,8 @@ class FlipRecovery {
   std::vector<std::uint32_t> vertex_tet_;
   std::vector<std::uint64_t> protected_edges_;
   std::vector<std::array<std::uint32_t, 3>> protected_faces_;
+  bool deep_ = false;
+  int link_budget_ = 0;
   std::unordered_set<std::uint64_t> extra_edges_;
   std::set<std::array<std::uint32_t, 3>> extra_faces_;
   std::vector<std::uint32_t> mark_;
