@@ -68,6 +68,11 @@ void FlipRecovery::protect_face(std::uint32_t a, std::uint32_t b, std::uint32_t 
   if (!std::binary_search(protected_faces_.begin(), protected_faces_.end(), k)) extra_faces_.insert(k);
 }
 
+void FlipRecovery::unprotect_edge(std::uint32_t u, std::uint32_t v) { extra_edges_.erase(edge_key(u, v)); }
+void FlipRecovery::unprotect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  extra_faces_.erase(face_key(a, b, c));
+}
+
 bool FlipRecovery::is_protected_edge(std::uint32_t u, std::uint32_t v) const {
   const std::uint64_t k = edge_key(u, v);
   return std::binary_search(protected_edges_.begin(), protected_edges_.end(), k) ||

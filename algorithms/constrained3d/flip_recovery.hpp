@@ -71,6 +71,10 @@ class FlipRecovery {
   // Adds a constraint to the protected ones (after recovering it).
   void protect_edge(std::uint32_t u, std::uint32_t v);
   void protect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+  // Takes back a protection that protect_edge or protect_face added (one of the constructor's
+  // lists stays protected): a triangulation of a facet that is being made again.
+  void unprotect_edge(std::uint32_t u, std::uint32_t v);
+  void unprotect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
 
   void finish();
   std::uint64_t flips() const noexcept { return flips_; }

@@ -149,6 +149,8 @@ std::string recover_in_place(Constrained3dContext& c) {
   std::vector<FacetPoint> points;
   std::vector<std::uint32_t> tries(c.facets.size(), 0);
   std::vector<std::size_t> done(c.facets.size(), 0);  // the vertex count when last recovered whole
+  std::vector<std::vector<Tri>> made(c.facets.size());  // pieces recovered and protected, of made_count vertices
+  std::vector<std::size_t> made_count(c.facets.size(), 0);
   constexpr std::uint32_t kPointsPerTriangle = 16;
   for (;;) {
     ++c.rounds;
@@ -158,6 +160,19 @@ std::string recover_in_place(Constrained3dContext& c) {
       // Recovered before, with no point on it since: its faces are protected, so still there.
       const std::size_t vertex_count = facet_vertex_count(c, f);
       if (done[f] == vertex_count) continue;
+      // Pieces made for fewer vertices belong to another triangulation of the triangle: their
+      // faces and diagonals are no constraints now (the Delaunay pieces change around a new point).
+      if (!made[f].empty() && made_count[f] != vertex_count) {
+        std::vector<std::uint64_t> boundary;
+        for (const auto& [u, v] : facet_boundary(c, f)) boundary.push_back(MeshIndex::key(u, v));
+        for (const Tri& t : made[f]) {
+          recovery.unprotect_face(t[0], t[1], t[2]);
+          for (int r = 0; r < 3; ++r)
+            if (std::find(boundary.begin(), boundary.end(), MeshIndex::key(t[r], t[(r + 1) % 3])) == boundary.end())
+              recovery.unprotect_edge(t[r], t[(r + 1) % 3]);
+        }
+        made[f].clear();
+      }
       // The exact (s, t) only where the triangle has Steiner points or needs one.
       std::optional<FacetParameters> parameters;
       const auto st_of = [&]() -> const FacetParameters& {
@@ -178,6 +193,7 @@ std::string recover_in_place(Constrained3dContext& c) {
         if (ok) {
           for (int r = 0; r < 3; ++r) recovery.protect_edge(t[r], t[(r + 1) % 3]);
           recovery.protect_face(t[0], t[1], t[2]);
+          if (vertex_count > 3) made[f].push_back(t), made_count[f] = vertex_count;
           continue;
         }
         all_made = false;
