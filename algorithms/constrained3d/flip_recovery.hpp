@@ -65,7 +65,7 @@ class FlipRecovery {
   // on a ghost, equal to a vertex, or inside a protected face or edge.
   std::uint32_t insert_point(const Vec3& p, std::uint32_t near);
   // Lets edge recovery remove link edges first where an edge's shell has no retriangulation
-  // (remove_edge_after_link below): far fewer Steiner points (fandisk 64 -> 37, twisted prisms 1
+  // (remove_edge_after_link below): far fewer Steiner points (fandisk 64 -> 34, twisted prisms 1
   // each), at the cost of changing the mesh where it still fails.
   void allow_link_removals(bool allow) noexcept { deep_ = allow; }
   // Adds a constraint to the protected ones (after recovering it).

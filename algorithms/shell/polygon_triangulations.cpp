@@ -14,7 +14,11 @@ namespace {
 // recursion is depth-first with one shared triangle list, so memory stays O(n).
 class Enumerator {
  public:
-  explicit Enumerator(const std::function<void(const std::vector<PolygonTriangle>&)>& visit) : visit_(visit) {}
+  // visit returns true to stop; triangle_ok (if any) prunes every triangulation holding a
+  // triangle it refuses.
+  Enumerator(const std::function<bool(const std::vector<PolygonTriangle>&)>& visit,
+             const std::function<bool(const PolygonTriangle&)>* triangle_ok)
+      : visit_(visit), triangle_ok_(triangle_ok) {}
 
   void run(int n) {
     pending_.push_back({0, n - 1});
@@ -23,8 +27,9 @@ class Enumerator {
 
  private:
   void step() {
+    if (stop_) return;
     if (pending_.empty()) {
-      visit_(triangles_);
+      stop_ = visit_(triangles_);
       return;
     }
     const auto [i, j] = pending_.back();
@@ -32,8 +37,10 @@ class Enumerator {
     if (j - i < 2) {
       step();
     } else {
-      for (int k = i + 1; k < j; ++k) {
-        triangles_.push_back({static_cast<std::uint8_t>(i), static_cast<std::uint8_t>(k), static_cast<std::uint8_t>(j)});
+      for (int k = i + 1; k < j && !stop_; ++k) {
+        const PolygonTriangle t{static_cast<std::uint8_t>(i), static_cast<std::uint8_t>(k), static_cast<std::uint8_t>(j)};
+        if (triangle_ok_ != nullptr && !(*triangle_ok_)(t)) continue;
+        triangles_.push_back(t);
         pending_.push_back({k, j});
         pending_.push_back({i, k});
         step();
@@ -45,18 +52,41 @@ class Enumerator {
     pending_.push_back({i, j});
   }
 
-  const std::function<void(const std::vector<PolygonTriangle>&)>& visit_;
+  const std::function<bool(const std::vector<PolygonTriangle>&)>& visit_;
+  const std::function<bool(const PolygonTriangle&)>* triangle_ok_;
   std::vector<PolygonTriangle> triangles_;
   std::vector<std::pair<int, int>> pending_;
+  bool stop_ = false;
 };
+
+void check_polygon_size(int n) {
+  if (n < 3 || n > 24) {
+    throw InputError("polygon triangulations: n = " + std::to_string(n) + " is outside [3, 24]");
+  }
+}
 
 }  // namespace
 
 void for_each_polygon_triangulation(int n, const std::function<void(const std::vector<PolygonTriangle>&)>& visit) {
-  if (n < 3 || n > 24) {
-    throw InputError("polygon triangulations: n = " + std::to_string(n) + " is outside [3, 24]");
-  }
-  Enumerator(visit).run(n);
+  check_polygon_size(n);
+  const std::function<bool(const std::vector<PolygonTriangle>&)> all = [&](const std::vector<PolygonTriangle>& t) {
+    visit(t);
+    return false;
+  };
+  Enumerator(all, nullptr).run(n);
+}
+
+std::vector<PolygonTriangle> find_polygon_triangulation(int n, const std::function<bool(const PolygonTriangle&)>& triangle_ok,
+                                                        const std::function<bool(const std::vector<PolygonTriangle>&)>& accept) {
+  check_polygon_size(n);
+  std::vector<PolygonTriangle> found;
+  const std::function<bool(const std::vector<PolygonTriangle>&)> first = [&](const std::vector<PolygonTriangle>& t) {
+    if (!accept(t)) return false;
+    found = t;
+    return true;
+  };
+  Enumerator(first, &triangle_ok).run(n);
+  return found;
 }
 
 PolygonTriangulationCounts count_polygon_triangulations(int n) {

@@ -19,6 +19,13 @@ using PolygonTriangle = std::array<std::uint8_t, 3>;  // polygon vertex indices,
 // useful range far below that); throws InputError otherwise.
 void for_each_polygon_triangulation(int n, const std::function<void(const std::vector<PolygonTriangle>&)>& visit);
 
+// The first triangulation, in for_each_polygon_triangulation's order, whose triangles all pass
+// triangle_ok and that accept takes; empty if none. A triangle that fails triangle_ok is not
+// descended into, so every triangulation holding it is skipped unvisited (the search of a shell's
+// valid retriangulations, where most triangles are invalid, visits few).
+std::vector<PolygonTriangle> find_polygon_triangulation(int n, const std::function<bool(const PolygonTriangle&)>& triangle_ok,
+                                                        const std::function<bool(const std::vector<PolygonTriangle>&)>& accept);
+
 struct PolygonTriangulationCounts {
   std::uint64_t triangulations = 0;     // N_n
   std::uint64_t distinct_triangles = 0; // Tr_n
