@@ -6,6 +6,7 @@
 // reference); --verify runs the exact checks (verify/checks_constrained2d.hpp). Messages number
 // points and segments as the input file does (Medit from 1, .poly from its first vertex number).
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -31,6 +32,9 @@ struct ConstrainArgs {
   std::string method;  // empty: the dimension's default (cdt in 2D, conforming in 3D)
   bool keep_exterior = false;
   bool remove_cavities = false;       // 3D only
+  // 3D only: Steiner points at most this times (points + triangles); kNotGiven: the default.
+  static constexpr std::uint32_t kNotGiven = UINT32_MAX;
+  std::uint32_t steiner_limit = kNotGiven;
   std::string swap_order = "queue";  // 2D only
   bool stats = false;
   bool verify = false;
@@ -76,10 +80,14 @@ int run_constrain(ConstrainArgs args) {
     if (args.swap_order != "queue")
       throw InputError("--swap-order applies to 2D input (planar straight line graphs), not to " + args.input);
     return run_constrain3d({args.input, args.output, args.method.empty() ? "conforming" : args.method,
-                            args.keep_exterior, args.remove_cavities, args.stats, args.verify});
+                            args.keep_exterior, args.remove_cavities, args.stats, args.verify,
+                            args.steiner_limit == ConstrainArgs::kNotGiven ? Constrained3dOptions{}.steiner_limit_factor
+                                                                            : args.steiner_limit});
   }
   if (args.remove_cavities)
     throw InputError("--remove-cavities applies to 3D input (surfaces), not to " + args.input);
+  if (args.steiner_limit != ConstrainArgs::kNotGiven)
+    throw InputError("--steiner-limit applies to 3D input (surfaces), not to " + args.input);
   if (args.method.empty()) args.method = "cdt";
   const GraphInput graph = read_graph(args.input);
   const PolyData2& poly = graph.poly;
@@ -176,6 +184,10 @@ void add_constrain(CLI::App& app) {
       ->check(CLI::IsMember({"queue", "random"}));
   cmd->add_flag("--remove-cavities", args->remove_cavities,
                 "3D: drop the regions bounded only by shells nested inside another shell (cavities)");
+  cmd->add_option("--steiner-limit", args->steiner_limit,
+                  "3D: stop with an error naming the item being recovered once the Steiner points would exceed this "
+                  "times (input points + triangles) (default 200; 0: none allowed)")
+      ->check(CLI::Range(0u, 1000000u));
   cmd->add_flag("--keep-exterior", args->keep_exterior, "Keep the triangles outside the segments (holes are still removed)");
   cmd->add_flag("--stats", args->stats, "Print one JSON object with counts, seconds and predicate stages as the last line");
   cmd->add_flag("--verify", args->verify,

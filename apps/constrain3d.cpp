@@ -48,6 +48,7 @@ int run_constrain3d(const Constrain3dCliArgs& args) {
   options.method = args.method;
   options.keep_exterior = args.keep_exterior;
   options.remove_cavities = args.remove_cavities;
+  options.steiner_limit_factor = args.steiner_limit;
   Constrained3dResult result;
   try {
     result = constrained3d(input, options);

@@ -14,6 +14,7 @@ struct Constrain3dCliArgs {
   bool remove_cavities = false;
   bool stats = false;
   bool verify = false;
+  std::uint32_t steiner_limit = 200;  // Constrained3dOptions::steiner_limit_factor
 };
 
 // Whether `path` is a 3D piecewise linear complex rather than a planar graph.

@@ -7,7 +7,7 @@ if(NOT TARGET dtlab_cli)
 endif()
 
 foreach(_dtlab_case cube_off two_boxes_smesh schonhardt open_surface self_intersecting duplicate_vertices
-                    degenerate_face unknown_method nested_cavity options_of_the_other_dimension)
+                    degenerate_face unknown_method nested_cavity options_of_the_other_dimension steiner_limit)
   add_test(NAME cli_constrain3d_${_dtlab_case}
            COMMAND ${CMAKE_COMMAND} -DDTLAB=$<TARGET_FILE:dtlab_cli>
                    -DWORK=${PROJECT_BINARY_DIR}/cli-constrain3d-test/${_dtlab_case} -DCASE=${_dtlab_case}

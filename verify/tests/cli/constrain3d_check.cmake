@@ -198,6 +198,24 @@ elseif(CASE STREQUAL "options_of_the_other_dimension")
   file(WRITE "${WORK}/square.poly" "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n")
   run(constrain square.poly --remove-cavities)
   expect_failure("--remove-cavities" "3D" "square\\.poly")
+  run(constrain square.poly --steiner-limit 200)
+  expect_failure("--steiner-limit" "3D" "square\\.poly")
+
+elseif(CASE STREQUAL "steiner_limit")
+  # Schönhardt's prism needs a Steiner point: with none allowed, every method stops with an error
+  # naming the edge it was recovering; with the default it succeeds.
+  file(WRITE "${WORK}/schonhardt.off"
+       "OFF\n6 8 0\n1 0 0\n-0.5 0.8660254037844386 0\n-0.5 -0.8660254037844386 0\n"
+       "0.8660254037844387 0.5 1\n-0.8660254037844386 0.5 1\n0 -1 1\n"
+       "3 0 2 1\n3 3 4 5\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 2 0 3\n3 2 3 5\n")
+  foreach(method recover cdt conforming)
+    run(constrain schonhardt.off --method ${method} --steiner-limit 0)
+    expect_failure("limit of 0 Steiner points" "edge between vertices")
+    run(constrain schonhardt.off --method ${method} --steiner-limit 1 --verify)
+    expect_success()
+  endforeach()
+  run(constrain schonhardt.off --steiner-limit -1)
+  expect_failure("steiner-limit")
 
 elseif(CASE STREQUAL "unknown_method")
   file(WRITE "${WORK}/cube.off" "OFF\n8 12 0\n${cube_vertices}${cube_faces}")
