@@ -21,25 +21,6 @@
 
 namespace dtlab {
 
-std::vector<MissingPiece> edge_pieces_flips_cannot_make(const Constrained3dContext& c, FlipRecovery& recovery, int passes) {
-  std::vector<MissingPiece> failed, still;
-  const auto attempt = [&](std::uint32_t e, std::uint32_t i, std::vector<MissingPiece>& out) {
-    const auto& chain = c.edges[e].chain;
-    if (!recovery.has_edge(chain[i], chain[i + 1]) && !recovery.recover_edge(chain[i], chain[i + 1]))
-      out.push_back({e, i, recovery.blocking_face()});
-  };
-  for (std::uint32_t e = 0; e < c.edges.size(); ++e)
-    for (std::uint32_t i = 0; i + 1 < c.edges[e].chain.size(); ++i) attempt(e, i, failed);
-  for (int pass = 0; pass < passes && !failed.empty(); ++pass) {
-    still.clear();
-    for (const MissingPiece& m : failed) attempt(m.edge, m.index, still);
-    const bool progress = still.size() < failed.size();
-    failed.swap(still);
-    if (!progress) break;
-  }
-  return failed;
-}
-
 // The rounds above (Steiner points into the Delaunay tetrahedralization, flips on a copy).
 void recover_by_rounds(Constrained3dContext& c) {
   using Clock = std::chrono::steady_clock;

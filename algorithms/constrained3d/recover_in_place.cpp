@@ -149,8 +149,11 @@ std::string recover_in_place(Constrained3dContext& c) {
   std::vector<FacetPoint> points;
   std::vector<std::uint32_t> tries(c.facets.size(), 0);
   std::vector<std::size_t> done(c.facets.size(), 0);  // the vertex count when last recovered whole
-  std::vector<std::vector<Tri>> made(c.facets.size());  // pieces recovered and protected, of made_count vertices
-  std::vector<std::size_t> made_count(c.facets.size(), 0);
+  struct Made {
+    std::vector<Tri> pieces;  // recovered and protected
+    std::size_t vertex_count = 0;  // of the triangulation they belong to
+  };
+  std::vector<Made> made(c.facets.size());
   constexpr std::uint32_t kPointsPerTriangle = 16;
   for (;;) {
     ++c.rounds;
@@ -162,16 +165,16 @@ std::string recover_in_place(Constrained3dContext& c) {
       if (done[f] == vertex_count) continue;
       // Pieces made for fewer vertices belong to another triangulation of the triangle: their
       // faces and diagonals are no constraints now (the Delaunay pieces change around a new point).
-      if (!made[f].empty() && made_count[f] != vertex_count) {
+      if (!made[f].pieces.empty() && made[f].vertex_count != vertex_count) {
         std::vector<std::uint64_t> boundary;
         for (const auto& [u, v] : facet_boundary(c, f)) boundary.push_back(MeshIndex::key(u, v));
-        for (const Tri& t : made[f]) {
+        for (const Tri& t : made[f].pieces) {
           recovery.unprotect_face(t[0], t[1], t[2]);
           for (int r = 0; r < 3; ++r)
             if (std::find(boundary.begin(), boundary.end(), MeshIndex::key(t[r], t[(r + 1) % 3])) == boundary.end())
               recovery.unprotect_edge(t[r], t[(r + 1) % 3]);
         }
-        made[f].clear();
+        made[f].pieces.clear();
       }
       // The exact (s, t) only where the triangle has Steiner points or needs one.
       std::optional<FacetParameters> parameters;
@@ -179,8 +182,8 @@ std::string recover_in_place(Constrained3dContext& c) {
         if (!parameters) parameters = facet_parameters(c, f);
         return *parameters;
       };
-      const std::vector<Tri> tris = vertex_count == 3 ? std::vector<Tri>{c.facets[f].corners} : facet_delaunay_pieces(c, f);
-      if (tris.empty()) return "triangle " + std::to_string(f + 1) + " has a point off its interior";
+      const std::vector<Tri> tris =
+          vertex_count == 3 ? std::vector<Tri>{c.facets[f].corners} : facet_delaunay_pieces(c, f, st_of());
       bool all_made = true;
       for (const Tri& t : tris) {
         bool ok = recovery.has_face(t[0], t[1], t[2]);
@@ -193,7 +196,7 @@ std::string recover_in_place(Constrained3dContext& c) {
         if (ok) {
           for (int r = 0; r < 3; ++r) recovery.protect_edge(t[r], t[(r + 1) % 3]);
           recovery.protect_face(t[0], t[1], t[2]);
-          if (vertex_count > 3) made[f].push_back(t), made_count[f] = vertex_count;
+          if (vertex_count > 3) made[f].pieces.push_back(t), made[f].vertex_count = vertex_count;
           continue;
         }
         all_made = false;

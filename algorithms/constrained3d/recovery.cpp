@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include "algorithms/constrained3d/flip_recovery.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
 #include "kernel/rounding.hpp"
@@ -165,6 +166,25 @@ double edge_split_parameter(const Constrained3dContext& c, std::uint32_t e, std:
   return t;
 }
 
+std::vector<MissingPiece> edge_pieces_flips_cannot_make(const Constrained3dContext& c, FlipRecovery& recovery, int passes) {
+  std::vector<MissingPiece> failed, still;
+  const auto attempt = [&](std::uint32_t e, std::uint32_t i, std::vector<MissingPiece>& out) {
+    const auto& chain = c.edges[e].chain;
+    if (!recovery.has_edge(chain[i], chain[i + 1]) && !recovery.recover_edge(chain[i], chain[i + 1]))
+      out.push_back({e, i, recovery.blocking_face()});
+  };
+  for (std::uint32_t e = 0; e < c.edges.size(); ++e)
+    for (std::uint32_t i = 0; i + 1 < c.edges[e].chain.size(); ++i) attempt(e, i, failed);
+  for (int pass = 0; pass < passes && !failed.empty(); ++pass) {
+    still.clear();
+    for (const MissingPiece& m : failed) attempt(m.edge, m.index, still);
+    const bool progress = still.size() < failed.size();
+    failed.swap(still);
+    if (!progress) break;
+  }
+  return failed;
+}
+
 FacetParameters facet_parameters(const Constrained3dContext& c, std::uint32_t f) {
   const ConstraintFacet3& facet = c.facets[f];
   static const std::array<std::array<int, 2>, 3> kCorner = {{{0, 0}, {1, 0}, {0, 1}}};
@@ -298,7 +318,11 @@ bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& inde
 }
 
 std::vector<std::array<std::uint32_t, 3>> facet_delaunay_pieces(const Constrained3dContext& c, std::uint32_t f) {
-  const FacetParameters st = facet_parameters(c, f);
+  return facet_delaunay_pieces(c, f, facet_parameters(c, f));
+}
+
+std::vector<std::array<std::uint32_t, 3>> facet_delaunay_pieces(const Constrained3dContext& c, std::uint32_t f,
+                                                                const FacetParameters& st) {
   // The metric of the triangle's plane in (s, t): |s e1 + t e2|^2, e1 = B - A, e2 = C - A, exact.
   const auto p = c.mesh.points();
   const auto& k = c.facets[f].corners;

@@ -19,7 +19,7 @@ namespace dtlab {
 
 class FlipRecovery;
 
-// The edge pieces that flips cannot make (recover.cpp): every missing piece is tried, then the
+// The edge pieces that flips cannot make: every missing piece is tried, then the
 // ones that failed again, up to `passes` more times while flips for the others make some (each
 // recovery changes the pipes of the rest). Each with where its last walk stopped
 // (FlipRecovery::blocking_face).
@@ -108,6 +108,9 @@ bool cover_facet(Constrained3dContext& c, std::uint32_t f, const MeshIndex& inde
 // (Shewchuk 2002). Gift-wrapped in (s, t) from the boundary pieces; checked to cover the
 // triangle exactly (InternalError otherwise).
 std::vector<std::array<std::uint32_t, 3>> facet_delaunay_pieces(const Constrained3dContext& c, std::uint32_t f);
+// The same with f's parameters already made (facet_parameters(c, f)).
+std::vector<std::array<std::uint32_t, 3>> facet_delaunay_pieces(const Constrained3dContext& c, std::uint32_t f,
+                                                                const FacetParameters& st);
 
 // Where facet f gets a point for its missing piece (u, v) (f on its left in (s, t)): the
 // circumcentre of (u, v, w), w the Delaunay apex of (u, v) among the vertices of f on its left
