@@ -535,6 +535,42 @@ CheckReport3 check_constrained_empty_sphere3(const Tetrahedralization3& tet,
   return geometric(tet, "empty sphere", [&](const T3& t, CheckReport3& r) { empty_sphere(t, r, constrained); });
 }
 
+CheckReport3 check_constrained_delaunay3(std::span<const Vec3> points,
+                                         std::span<const std::array<std::uint32_t, 4>> tetrahedra,
+                                         const std::function<bool(std::array<std::uint32_t, 3>)>& constrained) {
+  CheckReport3 r;
+  r.tetrahedra = tetrahedra.size();
+  struct Side {
+    std::array<std::uint32_t, 3> face;  // sorted
+    std::uint32_t tetrahedron, apex;
+  };
+  std::vector<Side> sides;
+  sides.reserve(4 * tetrahedra.size());
+  for (std::uint32_t t = 0; t < tetrahedra.size(); ++t)
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      std::array<std::uint32_t, 3> f;
+      for (std::uint32_t j = 0, k = 0; j < 4; ++j)
+        if (j != i) f[k++] = tetrahedra[t][j];
+      std::sort(f.begin(), f.end());
+      sides.push_back({f, t, tetrahedra[t][i]});
+    }
+  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.face < y.face; });
+  for (std::size_t k = 0; k + 1 < sides.size(); ++k) {
+    if (sides[k].face != sides[k + 1].face) continue;
+    const Side &x = sides[k], &y = sides[k + 1];
+    if (constrained(x.face)) continue;
+    ++r.interior_facets;
+    ++r.insphere_tests;
+    const auto& v = tetrahedra[x.tetrahedron];
+    if (insphere(points[v[0]], points[v[1]], points[v[2]], points[v[3]], points[y.apex]) == Sign::Positive)
+      r.add_problem("constrained Delaunay: facet (" + std::to_string(x.face[0]) + ", " + std::to_string(x.face[1]) + ", " +
+                    std::to_string(x.face[2]) + ") is not locally Delaunay: point " + std::to_string(y.apex) +
+                    " of tetrahedron " + std::to_string(y.tetrahedron) + " is strictly inside the sphere of tetrahedron " +
+                    std::to_string(x.tetrahedron));
+  }
+  return r;
+}
+
 CheckReport3 check_hull3(const Tetrahedralization3& tet) { return geometric(tet, "hull", hull); }
 
 CheckReport3 check_coverage3(const Tetrahedralization3& tet) { return geometric(tet, "coverage", coverage); }

@@ -71,6 +71,15 @@ CheckReport3 check_empty_sphere3(const Tetrahedralization3& tetrahedralization);
 // 2008, "General-dimensional constrained Delaunay and constrained regular triangulations").
 CheckReport3 check_constrained_empty_sphere3(const Tetrahedralization3& tetrahedralization,
                                              const std::function<bool(std::array<std::uint32_t, 3>)>& constrained);
+// Constrained Delaunay over a list of tetrahedra (each positive: the ones a result keeps, so
+// that the domain they cover need not be convex): every facet two of them share that
+// `constrained` does not name is locally Delaunay in the sense that defines a CDT, the vertex
+// across not strictly inside the sphere (exact in-sphere, no perturbation: a CDT may have
+// cospherical vertices where input triangles fix the choice). By the constrained Delaunay lemma
+// that proves the tetrahedra a CDT of what they cover.
+CheckReport3 check_constrained_delaunay3(std::span<const Vec3> points,
+                                         std::span<const std::array<std::uint32_t, 4>> tetrahedra,
+                                         const std::function<bool(std::array<std::uint32_t, 3>)>& constrained);
 
 // The hull: the finite tetrahedron under each ghost lies strictly on the inner side of its
 // hull facet; at each hull edge the apex of the adjacent hull facet is not strictly beyond this

@@ -339,15 +339,16 @@ void Checker::check_edges() {
   }
 }
 
-// Method "cdt", where it reports a CDT: every interior facet that is no piece of an input
-// triangle is locally Delaunay (the constrained Delaunay lemma, checks3d.hpp).
+// Method "cdt", where it reports a CDT: every facet between two kept tetrahedra that is no
+// piece of an input triangle is locally Delaunay (the constrained Delaunay lemma, checks3d.hpp):
+// a CDT of the domain the result meshes.
 void Checker::check_constrained_delaunay() {
   if (o_.method != "cdt" || !r_.constrained_delaunay) return;
   std::set<Ids3> pieces;
   for (const auto& t : r_.triangles) pieces.insert(sorted(t));
-  const CheckReport3 d = check_constrained_empty_sphere3(
-      r_.tetrahedralization, [&](const Ids3& f) { return pieces.count(f) != 0; });
-  for (const std::string& p : d.problems) rep_.add_problem("constrained Delaunay (numbered from 0): " + p);
+  const CheckReport3 d = check_constrained_delaunay3(r_.vertices, r_.tetrahedra,
+                                                     [&](const Ids3& f) { return pieces.count(f) != 0; });
+  for (const std::string& p : d.problems) rep_.add_problem(p + " (numbered from 0)");
 }
 
 void Checker::run() {

@@ -5,7 +5,8 @@
 //  - validity: the input points come first, unchanged; the whole tetrahedralization is a closed
 //    3-manifold (checks3d.hpp check_topology3) with every finite tetrahedron positive by the
 //    exact orient3d in doubles, Delaunay (verify_delaunay3d) for "conforming", constrained
-//    Delaunay (every facet that is no piece locally Delaunay) for "cdt" where it reports one; the kept
+//    Delaunay for "cdt" where it reports one (every facet between two kept tetrahedra that is no
+//    piece locally Delaunay: a CDT of the domain it meshes, checks3d.hpp); the kept
 //    tetrahedra are some of its tetrahedra, each with one region, and two tetrahedra of
 //    different regions (or a kept one and a removed one) meet only across a piece of an input
 //    triangle;

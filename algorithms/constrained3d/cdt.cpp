@@ -1,7 +1,21 @@
-// Method "cdt": a constrained Delaunay tetrahedralization (Shewchuk 2002, "Constrained Delaunay
-// tetrahedralizations and provably good boundary recovery"; book §3.5-§3.7). A CDT of a PLC
-// exists when every segment is strongly Delaunay; with the symbolic perturbation every edge of
-// the (unique) Delaunay tetrahedralization is, so:
+// Method "cdt": a constrained Delaunay tetrahedralization of the domain (every region the output
+// keeps): no tetrahedron's circumsphere holds strictly inside a vertex that the tetrahedron
+// sees (Shewchuk 2008, "General-dimensional constrained Delaunay and constrained regular
+// triangulations"; book §3.5-§3.7). Two constructions, the first preferred:
+//
+// A. Recover, then flip (fewer Steiner points): method "recover" makes every constraint a face
+//    or edge, and Lawson's flips with constraints (FlipRecovery::make_constrained_delaunay) make
+//    every face that is no constraint locally Delaunay where they can; by the constrained
+//    Delaunay lemma the result is then a CDT. Faces of kept regions that stay not locally
+//    Delaunay are blamed on a constraint edge piece: the one their flip would remove, or (only
+//    where no face has such a piece) the longest one of their two tetrahedra. Those pieces are
+//    split (as in "conforming") in the Delaunay tetrahedralization and A starts again, at most
+//    kFlipRounds times, and not once the faces left grow two rounds in a row or recover needed
+//    more Steiner points than there are input edges (cascades, as on Chazelle's polyhedron). Coplanar input triangles whose pair is not Delaunay in their plane make
+//    such blocks: they must stay faces, so no flip can help there.
+// B. Shewchuk 2002 ("Constrained Delaunay tetrahedralizations and provably good boundary
+//    recovery"), where A fails: a CDT exists once every segment is strongly Delaunay, which
+//    with the symbolic perturbation every edge of the (unique) Delaunay tetrahedralization is:
 //  1. Segments: the Delaunay tetrahedralization of the vertices, and every missing edge piece
 //     split (concentric shells, as in "conforming") until each is an edge of it.
 //  2. Facets, on a copy: each input triangle whose pieces the Delaunay tetrahedralization
@@ -14,15 +28,17 @@
 //     points make them slightly non-planar), its longest boundary piece is
 //     split and the round starts again from step 1. After kRounds such rounds the method hands
 //     over to "recover" and says so (the result is then not constrained Delaunay).
-// Every Steiner point is on an input edge: the facets get none.
+//    B puts every Steiner point on an input edge: the facets get none.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "algorithms/constrained3d/flip_recovery.hpp"
 #include "algorithms/constrained3d/recovery.hpp"
+#include "algorithms/constrained3d/regions.hpp"
 #include "kernel/error.hpp"
 
 namespace dtlab {
@@ -32,6 +48,7 @@ void constrained3d_recover(Constrained3dContext& context);  // recover.cpp
 namespace {
 
 constexpr int kRounds = 8;
+constexpr int kFlipRounds = 16;
 
 // Splits every missing edge piece until the Delaunay tetrahedralization holds them all; each
 // pass adds a point, so the Steiner limit (the inserter's InputError) bounds the passes.
@@ -65,13 +82,131 @@ EdgeSplit longest_boundary_split(const Constrained3dContext& c, std::uint32_t f)
   return split;
 }
 
+
+// The faces of `left` that matter: those with a tetrahedron in a region the output keeps (every
+// region but the exterior, unless the exterior is kept too).
+std::vector<FlipRecovery::NotLocallyDelaunay> in_kept_regions(const Constrained3dContext& c,
+                                                              std::vector<FlipRecovery::NotLocallyDelaunay> left) {
+  if (left.empty() || c.keep_exterior) return left;
+  std::vector<std::array<std::uint32_t, 3>> walls;
+  for (const ConstraintFacet3& f : c.facets) walls.insert(walls.end(), f.pieces.begin(), f.pieces.end());
+  const TetrahedronComponents comp = tetrahedron_components(c.mesh, walls);
+  std::vector<std::uint8_t> kept(left.size(), 0);
+  const auto by_face = [](const FlipRecovery::NotLocallyDelaunay& x, const std::array<std::uint32_t, 3>& f) {
+    return x.face < f;
+  };
+  for (std::uint32_t t = 0; t < c.mesh.tetrahedron_count(); ++t) {
+    if (c.mesh.is_ghost(t) || comp.component[t] == comp.exterior) continue;
+    const auto& v = c.mesh.records()[t].vertex;
+    for (const auto& fv : Tetrahedralization3::kFacetVertex) {
+      std::array<std::uint32_t, 3> f{v[fv[0]], v[fv[1]], v[fv[2]]};
+      std::sort(f.begin(), f.end());
+      const auto at = std::lower_bound(left.begin(), left.end(), f, by_face);
+      if (at != left.end() && at->face == f) kept[at - left.begin()] = 1;
+    }
+  }
+  std::vector<FlipRecovery::NotLocallyDelaunay> out;
+  for (std::size_t k = 0; k < left.size(); ++k)
+    if (kept[k]) out.push_back(left[k]);
+  return out;
+}
+
+// Construction A above. True with c the result; false with `why` (c unchanged) where recover
+// fails, a face is stuck with no constraint piece to blame, the stuck faces grow two rounds in a
+// row, recover needs more Steiner points than there are input edges, or kFlipRounds pass.
+bool recover_then_flip(Constrained3dContext& c, std::string& why) {
+  using Clock = std::chrono::steady_clock;
+  Constrained3dContext start = c;  // the Delaunay tetrahedralization, with the splits made so far
+  std::size_t previous = 0;         // faces left by the last round
+  int growing = 0;                  // rounds in a row that left more faces than the one before
+  for (int round = 0; round < kFlipRounds; ++round) {
+    Constrained3dContext work = start;
+    try {
+      constrained3d_recover(work);
+    } catch (const InputError& e) {
+      why = std::string("recover failed: ") + e.what();
+      return false;
+    }
+    const auto begin = Clock::now();
+    std::vector<std::uint64_t> protected_edges;
+    std::unordered_map<std::uint64_t, std::array<std::uint32_t, 2>> piece_of;  // key -> (edge, index)
+    for (std::uint32_t e = 0; e < work.edges.size(); ++e) {
+      const auto& chain = work.edges[e].chain;
+      for (std::uint32_t i = 0; i + 1 < chain.size(); ++i) {
+        protected_edges.push_back(MeshIndex::key(chain[i], chain[i + 1]));
+        piece_of[protected_edges.back()] = {e, i};
+      }
+    }
+    std::sort(protected_edges.begin(), protected_edges.end());
+    std::vector<std::array<std::uint32_t, 3>> pieces;
+    for (const ConstraintFacet3& f : work.facets)
+      for (auto k : f.pieces) {
+        std::sort(k.begin(), k.end());
+        pieces.push_back(k);
+      }
+    std::sort(pieces.begin(), pieces.end());
+    FlipRecovery recovery(work.mesh, std::move(protected_edges), std::move(pieces));
+    auto left = recovery.make_constrained_delaunay(std::uint64_t{64} * work.mesh.tetrahedron_count() + 4096);
+    recovery.finish();
+    left = in_kept_regions(work, std::move(left));
+    work.face_seconds += std::chrono::duration<double>(Clock::now() - begin).count();
+    if (left.empty()) {
+      c = std::move(work);
+      c.constrained_delaunay = true;
+      return true;
+    }
+    // Splits that keep making more blocked faces cascade (Chazelle's polyhedron), and so has
+    // recover where it needed more points than there are input edges: B instead.
+    growing = round > 0 && left.size() > previous ? growing + 1 : 0;
+    previous = left.size();
+    if (growing == 2) {
+      why = "the faces not locally Delaunay grew two rounds in a row, to " + std::to_string(left.size());
+      return false;
+    }
+    if (work.steiner.size() > work.edges.size()) {
+      why = "recover needed " + std::to_string(work.steiner.size()) + " Steiner points for " +
+            std::to_string(work.edges.size()) + " input edges, and " + std::to_string(left.size()) +
+            " face(s) are still not locally Delaunay";
+      return false;
+    }
+    const bool any_direct = std::any_of(left.begin(), left.end(), [](const auto& f) { return f.direct; });
+    std::vector<EdgeSplit> splits;
+    for (const auto& f : left) {
+      if (f.blocking_edge[0] == Tetrahedralization3::kNone || f.direct != any_direct) continue;
+      const auto [e, i] = piece_of.at(MeshIndex::key(f.blocking_edge[0], f.blocking_edge[1]));
+      splits.push_back({e, edge_split_parameter(work, e, i)});
+    }
+    if (splits.empty()) {
+      const auto& f = left.front().face;
+      why = std::to_string(left.size()) + " face(s) not locally Delaunay that no flip can change and no constraint " +
+            "piece is near, the first (" + std::to_string(f[0] + 1) + ", " + std::to_string(f[1] + 1) + ", " +
+            std::to_string(f[2] + 1) + ")";
+      return false;
+    }
+    start.rounds = work.rounds;
+    start.edge_seconds = work.edge_seconds, start.face_seconds = work.face_seconds;
+    try {
+      SteinerInserter(start).insert(splits, {});
+    } catch (const InputError& e) {
+      why = std::string("splitting the blocking pieces failed: ") + e.what();
+      return false;
+    }
+  }
+  why = "faces not locally Delaunay after " + std::to_string(kFlipRounds) + " rounds of splits";
+  return false;
+}
+
 }  // namespace
 
 void constrained3d_cdt(Constrained3dContext& c) {
+  std::string why;
+  if (recover_then_flip(c, why)) return;
+  c.messages.push_back("cdt: recover and flips gave no constrained Delaunay tetrahedralization (" + why +
+                       "); segments split until they are Delaunay (Shewchuk 2002) instead");
+  why.clear();
   using Clock = std::chrono::steady_clock;
   const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
   SteinerInserter inserter(c);
-  std::string why;
   for (int round = 0; round < kRounds; ++round) {
     ++c.rounds;
     auto start = Clock::now();

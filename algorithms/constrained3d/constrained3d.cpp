@@ -95,6 +95,7 @@ Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrai
   const std::uint64_t limit = std::uint64_t{options.steiner_limit_factor} * (input.points.size() + input.triangles.size());
   c.steiner_limit = static_cast<std::uint32_t>(std::min<std::uint64_t>(limit, T3::kMaxPoints - input.points.size()));
   build_constraints(input, c);
+  c.keep_exterior = options.keep_exterior;
 
   method->run(c);
   r.messages = std::move(c.messages);

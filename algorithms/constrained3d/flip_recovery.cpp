@@ -235,6 +235,21 @@ bool FlipRecovery::remove_edge(std::uint32_t t, std::uint32_t e0, std::uint32_t 
   return true;
 }
 
+bool FlipRecovery::flip_about_edge(std::uint32_t t, std::uint32_t e0, std::uint32_t e1, std::uint32_t p,
+                                   std::uint32_t d, std::size_t shell_size) {
+  if (shell(mesh_, t, e0, e1).size() != shell_size) return false;
+  // Three tetrahedra: the one triangle. Four (p, d and e0, e1 coplanar): the diagonal pd.
+  const auto with_pd = [&](const std::vector<std::uint32_t>& ring, const std::vector<PolygonTriangle>& tris) {
+    const auto ip = std::find(ring.begin(), ring.end(), p), id = std::find(ring.begin(), ring.end(), d);
+    if (ip == ring.end() || id == ring.end()) return false;
+    const auto rp = static_cast<std::uint8_t>(ip - ring.begin()), rd = static_cast<std::uint8_t>(id - ring.begin());
+    return std::any_of(tris.begin(), tris.end(), [&](const PolygonTriangle& tr) {
+      return (tr[0] == rp || tr[1] == rp || tr[2] == rp) && (tr[0] == rd || tr[1] == rd || tr[2] == rd);
+    });
+  };
+  return remove_edge(t, e0, e1, with_pd);
+}
+
 template <class Accept>
 bool FlipRecovery::remove_edge_after_link(std::uint32_t t, std::uint32_t e0, std::uint32_t e1, Accept&& accept) {
   if (is_protected_edge(e0, e1)) return false;

@@ -76,6 +76,23 @@ class FlipRecovery {
   void unprotect_edge(std::uint32_t u, std::uint32_t v);
   void unprotect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
 
+  // Lawson's flips with constraints (flip_recovery_lawson.cpp): every face between two finite
+  // tetrahedra that is no protected face and not locally Delaunay (perturbed insphere, as
+  // checks3d.hpp decides it) is flipped 2->3, 3->2 or 4->4 where the flip is valid and removes
+  // no protected edge or face, until none is left or none of those left can be flipped.
+  // Returns the faces left: none means every unprotected face is locally Delaunay, so the
+  // tetrahedralization is constrained Delaunay (the constrained Delaunay lemma, Shewchuk 2008).
+  // Each flip lowers the lifted tetrahedralization, so the pass ends; `max_flips` backs that up
+  // (the faces still queued are then among those left).
+  struct NotLocallyDelaunay {
+    std::array<std::uint32_t, 3> face;           // sorted vertex ids
+    // The protected edge its flip would remove (direct), else the longest protected edge of its
+    // two tetrahedra; kNone if they have none.
+    std::array<std::uint32_t, 2> blocking_edge;
+    bool direct;
+  };
+  std::vector<NotLocallyDelaunay> make_constrained_delaunay(std::uint64_t max_flips);
+
   void finish();
   std::uint64_t flips() const noexcept { return flips_; }
   std::uint64_t edge_removals() const noexcept { return removals_; }
@@ -104,6 +121,16 @@ class FlipRecovery {
   template <class Accept>
   bool remove_edge_after_link(std::uint32_t t, std::uint32_t e0, std::uint32_t e1, Accept&& accept);
   void replaced(std::span<const std::uint32_t> ids);
+  // The 3->2 (shell_size 3) or 4->4 (shell_size 4: p, d, e0, e1 coplanar) flip about edge
+  // (e0, e1) of t that removes the face between apexes p and d (edge pd comes in); false where
+  // the shell has another size, a protection forbids it or a new tetrahedron would not be
+  // positive.
+  bool flip_about_edge(std::uint32_t t, std::uint32_t e0, std::uint32_t e1, std::uint32_t p, std::uint32_t d,
+                       std::size_t shell_size);
+  // Lawson's step on face h (4 t + i) of a live tetrahedron: true if it flipped (the new
+  // tetrahedra in ids_), false with `blocked` set when the face is not locally Delaunay and
+  // cannot be flipped (blocking_edge and direct_blame then as NotLocallyDelaunay says).
+  bool lawson_step(std::uint32_t h, bool& blocked, std::array<std::uint32_t, 2>& blocking_edge, bool& direct_blame);
   // Edges crossing the open triangle abc, each once with a tetrahedron holding it.
   void crossing_edges(std::uint32_t a, std::uint32_t b, std::uint32_t c,
                       std::vector<std::array<std::uint32_t, 3>>& out);

@@ -203,9 +203,8 @@ CheckedRun run_and_check(const ClosedSurface3& s, const std::string& method = ""
     EXPECT_EQ(report.regions, out.result.region_count);
     EXPECT_EQ(report.input_triangles, s.triangles.size());
     out.region_volume6 = report.region_volume6;
-    if (name == "cdt") {  // constrained Delaunay (checked above), with Steiner points on edges only
+    if (name == "cdt") {  // constrained Delaunay (checked above)
       EXPECT_TRUE(out.result.constrained_delaunay) << (out.result.messages.empty() ? "" : out.result.messages.front());
-      EXPECT_EQ(out.result.steiner_points.on_faces + out.result.steiner_points.interior, 0u);
     }
     if (name == methods.front()) {
       first = std::move(out);
@@ -583,9 +582,9 @@ TEST(FacetInsertion, InsertsTheDelaunayPiecesAndRefusesAFillingThatIsNotConstrai
   }
 }
 
-// The CDT check is not a formality: one 2-3 flip across an unconstrained facet of a "cdt"
-// result (the two tetrahedra's union convex) makes the new facets fail it, and the same
-// result unflipped passes.
+// The CDT check is not a formality: one 2-3 flip across an unconstrained facet between two
+// kept tetrahedra of a "cdt" result (the two tetrahedra's union convex) makes the new facets
+// fail it, and the same result unflipped passes.
 TEST(ConstrainedChecks3, CatchAFlippedFacetInAConstrainedDelaunayResult) {
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> coordinate(-100, 100);
@@ -595,43 +594,114 @@ TEST(ConstrainedChecks3, CatchAFlippedFacetInAConstrainedDelaunayResult) {
   const ConstrainedInput3 in{.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {}, .regions = {}};
   Constrained3dResult r = constrained3d(in, {.method = "cdt"});
   ASSERT_TRUE(r.constrained_delaunay);
+  ASSERT_TRUE(check_constrained3d(in, r, {.method = "cdt"}).ok);
   std::set<Ids3> pieces;
   for (auto t : r.triangles) {
     std::sort(t.begin(), t.end());
     pieces.insert(t);
   }
   const auto constrained = [&](const Ids3& f) { return pieces.count(f) != 0; };
-  ASSERT_TRUE(check_constrained_empty_sphere3(r.tetrahedralization, constrained).ok);
-  Tetrahedralization3& t = r.tetrahedralization;
-  const auto P = t.points();
+  ASSERT_TRUE(check_constrained_delaunay3(r.vertices, r.tetrahedra, constrained).ok);
+  const auto& P = r.vertices;
+  auto& T = r.tetrahedra;
   bool flipped = false;
-  for (std::uint32_t a = 0; a < t.tetrahedron_count() && !flipped; ++a) {
-    if (t.is_ghost(a)) continue;
-    for (std::uint32_t i = 0; i < 4 && !flipped; ++i) {
-      const std::uint32_t g = t.twin(Tetrahedralization3::facet(a, i)), b = Tetrahedralization3::tetrahedron_of(g);
-      if (t.is_ghost(b)) continue;
-      const auto& x = t.records()[a].vertex;
-      const auto& k = Tetrahedralization3::kFacetVertex[i];
-      const std::array<std::uint32_t, 3> v{x[k[0]], x[k[1]], x[k[2]]};
-      Ids3 key = v;
+  for (std::size_t a = 0; a < T.size() && !flipped; ++a)
+    for (std::size_t b = a + 1; b < T.size() && !flipped; ++b) {
+      std::vector<std::uint32_t> shared, other;
+      for (const std::uint32_t v : T[a]) (std::find(T[b].begin(), T[b].end(), v) != T[b].end() ? shared : other).push_back(v);
+      if (shared.size() != 3) continue;
+      Ids3 key{shared[0], shared[1], shared[2]};
       std::sort(key.begin(), key.end());
       if (constrained(key)) continue;
-      const std::uint32_t p = x[i], d = t.apex(g);
+      std::uint32_t d = 0;
+      for (const std::uint32_t v : T[b])
+        if (std::find(T[a].begin(), T[a].end(), v) == T[a].end()) d = v;
+      const std::uint32_t p = other[0];
+      const auto& v = shared;
       const Sign s1 = orient3d(P[p], P[d], P[v[0]], P[v[1]]);
       if (s1 == Sign::Zero || orient3d(P[p], P[d], P[v[1]], P[v[2]]) != s1 || orient3d(P[p], P[d], P[v[2]], P[v[0]]) != s1)
         continue;
-      FlipMesh mesh(t.mutable_records(), FlipMesh::Adopt{});
-      std::vector<std::uint32_t> ids;
-      mesh.flip23(a, b, v, p, d, ids);
-      mesh.finish();
+      // (x, y, p, d) for each edge xy of the shared facet, turned positive.
+      std::vector<std::array<std::uint32_t, 4>> fresh;
+      for (int k = 0; k < 3; ++k) {
+        std::array<std::uint32_t, 4> t{v[k], v[(k + 1) % 3], p, d};
+        if (orient3d(P[t[0]], P[t[1]], P[t[2]], P[t[3]]) == Sign::Negative) std::swap(t[0], t[1]);
+        fresh.push_back(t);
+      }
+      T.erase(T.begin() + static_cast<std::ptrdiff_t>(b));
+      T.erase(T.begin() + static_cast<std::ptrdiff_t>(a));
+      T.insert(T.end(), fresh.begin(), fresh.end());
       flipped = true;
     }
-  }
   ASSERT_TRUE(flipped);
-  ASSERT_TRUE(check_topology3(t).ok);
-  const CheckReport3 report = check_constrained_empty_sphere3(t, constrained);
+  const CheckReport3 report = check_constrained_delaunay3(r.vertices, r.tetrahedra, constrained);
   EXPECT_FALSE(report.ok);
   EXPECT_GE(report.problem_count, 1u);
+}
+
+// Lawson's flips with constraints undo flips that left the Delaunay tetrahedralization: with
+// nothing protected they end at the Delaunay tetrahedralization of the points (unique for
+// points in general position); with the flipped-in edges protected they stop, blaming them.
+TEST(ConstrainedDelaunayFlips, ReturnToTheDelaunayTetrahedralizationOrBlameTheProtectedEdge) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  std::vector<Vec3> P(60);
+  for (auto& q : P) q = {coordinate(rng), coordinate(rng), coordinate(rng)};
+  const Tetrahedralization3 delaunay = delaunay3d(P).tetrahedralization;
+  // Flip 2->3 every fifth facet whose two finite tetrahedra have a convex union.
+  Tetrahedralization3 t = delaunay;
+  std::vector<std::uint64_t> new_edges;
+  {
+    FlipMesh mesh(t.mutable_records(), FlipMesh::Adopt{});
+    std::vector<std::uint32_t> ids;
+    int seen = 0;
+    for (std::uint32_t a = 0; a < mesh.slots(); ++a) {
+      if (mesh.is_dead(a) || mesh.records()[a].vertex[0] == Tetrahedralization3::kInfinite) continue;
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        const auto rec = mesh.records()[a];
+        const std::uint32_t g = rec.neighbour[i], b = g >> 2;
+        if (mesh.records()[b].vertex[0] == Tetrahedralization3::kInfinite) continue;
+        const auto& k = Tetrahedralization3::kFacetVertex[i];
+        const std::array<std::uint32_t, 3> v{rec.vertex[k[0]], rec.vertex[k[1]], rec.vertex[k[2]]};
+        const std::uint32_t p = rec.vertex[i], d = mesh.records()[b].vertex[g & 3u];
+        const Sign s1 = orient3d(P[p], P[d], P[v[0]], P[v[1]]);
+        if (s1 == Sign::Zero || orient3d(P[p], P[d], P[v[1]], P[v[2]]) != s1 ||
+            orient3d(P[p], P[d], P[v[2]], P[v[0]]) != s1 || ++seen % 5 != 0)
+          continue;
+        mesh.flip23(a, b, v, p, d, ids);
+        new_edges.push_back(p < d ? std::uint64_t{p} << 32 | d : std::uint64_t{d} << 32 | p);
+        break;  // a's slot now holds a new tetrahedron
+      }
+    }
+    mesh.finish();
+  }
+  ASSERT_GE(new_edges.size(), 5u);
+  ASSERT_TRUE(check_orientation3(t).ok);
+  ASSERT_FALSE(check_empty_sphere3(t).ok);
+  {
+    Tetrahedralization3 u = t;
+    FlipRecovery recovery(u, {}, {});
+    EXPECT_TRUE(recovery.make_constrained_delaunay(100000).empty());
+    recovery.finish();
+    EXPECT_EQ(canonical_tetrahedron_set(u), canonical_tetrahedron_set(delaunay));
+  }
+  {
+    std::sort(new_edges.begin(), new_edges.end());
+    Tetrahedralization3 u = t;
+    FlipRecovery recovery(u, new_edges, {});
+    const auto left = recovery.make_constrained_delaunay(100000);
+    recovery.finish();
+    ASSERT_FALSE(left.empty());
+    bool blamed = false;
+    for (const auto& f : left) {
+      if (!f.direct) continue;
+      const auto [x, y] = f.blocking_edge;
+      blamed |= std::binary_search(new_edges.begin(), new_edges.end(),
+                                   x < y ? std::uint64_t{x} << 32 | y : std::uint64_t{y} << 32 | x);
+    }
+    EXPECT_TRUE(blamed);
+    ASSERT_TRUE(check_orientation3(u).ok);
+  }
 }
 
 // A star-shaped closed surface: the convex hull of random lattice points around the origin
