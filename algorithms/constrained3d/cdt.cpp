@@ -33,7 +33,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
-#include <unordered_map>
+#include <optional>
 #include <vector>
 
 #include "algorithms/constrained3d/flip_recovery.hpp"
@@ -83,32 +83,16 @@ EdgeSplit longest_boundary_split(const Constrained3dContext& c, std::uint32_t f)
 }
 
 
-// The faces of `left` that matter: those with a tetrahedron in a region the output keeps (every
-// region but the exterior, unless the exterior is kept too).
-std::vector<FlipRecovery::NotLocallyDelaunay> in_kept_regions(const Constrained3dContext& c,
-                                                              std::vector<FlipRecovery::NotLocallyDelaunay> left) {
-  if (left.empty() || c.keep_exterior) return left;
+// Per tetrahedron of c.mesh: 1 where the output drops it (the exterior, unless it is kept), so
+// that its faces need not be constrained Delaunay.
+std::vector<std::uint8_t> dropped_tetrahedra(const Constrained3dContext& c) {
+  std::vector<std::uint8_t> dropped(c.mesh.tetrahedron_count(), 0);
+  if (c.keep_exterior) return dropped;
   std::vector<std::array<std::uint32_t, 3>> walls;
   for (const ConstraintFacet3& f : c.facets) walls.insert(walls.end(), f.pieces.begin(), f.pieces.end());
   const TetrahedronComponents comp = tetrahedron_components(c.mesh, walls);
-  std::vector<std::uint8_t> kept(left.size(), 0);
-  const auto by_face = [](const FlipRecovery::NotLocallyDelaunay& x, const std::array<std::uint32_t, 3>& f) {
-    return x.face < f;
-  };
-  for (std::uint32_t t = 0; t < c.mesh.tetrahedron_count(); ++t) {
-    if (c.mesh.is_ghost(t) || comp.component[t] == comp.exterior) continue;
-    const auto& v = c.mesh.records()[t].vertex;
-    for (const auto& fv : Tetrahedralization3::kFacetVertex) {
-      std::array<std::uint32_t, 3> f{v[fv[0]], v[fv[1]], v[fv[2]]};
-      std::sort(f.begin(), f.end());
-      const auto at = std::lower_bound(left.begin(), left.end(), f, by_face);
-      if (at != left.end() && at->face == f) kept[at - left.begin()] = 1;
-    }
-  }
-  std::vector<FlipRecovery::NotLocallyDelaunay> out;
-  for (std::size_t k = 0; k < left.size(); ++k)
-    if (kept[k]) out.push_back(left[k]);
-  return out;
+  for (std::uint32_t t = 0; t < dropped.size(); ++t) dropped[t] = comp.component[t] == comp.exterior;
+  return dropped;
 }
 
 // Construction A above. True with c the result; false with `why` (c unchanged) where recover
@@ -116,11 +100,12 @@ std::vector<FlipRecovery::NotLocallyDelaunay> in_kept_regions(const Constrained3
 // row, recover needs more Steiner points than there are input edges, or kFlipRounds pass.
 bool recover_then_flip(Constrained3dContext& c, std::string& why) {
   using Clock = std::chrono::steady_clock;
-  Constrained3dContext start = c;  // the Delaunay tetrahedralization, with the splits made so far
-  std::size_t previous = 0;         // faces left by the last round
-  int growing = 0;                  // rounds in a row that left more faces than the one before
+  // The Delaunay tetrahedralization with the splits made so far; c itself until the first.
+  std::optional<Constrained3dContext> split;
+  std::size_t previous = 0;  // faces left by the last round
+  int growing = 0;           // rounds in a row that left more faces than the one before
   for (int round = 0; round < kFlipRounds; ++round) {
-    Constrained3dContext work = start;
+    Constrained3dContext work = split ? *split : c;
     try {
       constrained3d_recover(work);
     } catch (const InputError& e) {
@@ -128,27 +113,11 @@ bool recover_then_flip(Constrained3dContext& c, std::string& why) {
       return false;
     }
     const auto begin = Clock::now();
-    std::vector<std::uint64_t> protected_edges;
-    std::unordered_map<std::uint64_t, std::array<std::uint32_t, 2>> piece_of;  // key -> (edge, index)
-    for (std::uint32_t e = 0; e < work.edges.size(); ++e) {
-      const auto& chain = work.edges[e].chain;
-      for (std::uint32_t i = 0; i + 1 < chain.size(); ++i) {
-        protected_edges.push_back(MeshIndex::key(chain[i], chain[i + 1]));
-        piece_of[protected_edges.back()] = {e, i};
-      }
-    }
-    std::sort(protected_edges.begin(), protected_edges.end());
-    std::vector<std::array<std::uint32_t, 3>> pieces;
-    for (const ConstraintFacet3& f : work.facets)
-      for (auto k : f.pieces) {
-        std::sort(k.begin(), k.end());
-        pieces.push_back(k);
-      }
-    std::sort(pieces.begin(), pieces.end());
-    FlipRecovery recovery(work.mesh, std::move(protected_edges), std::move(pieces));
-    auto left = recovery.make_constrained_delaunay(std::uint64_t{64} * work.mesh.tetrahedron_count() + 4096);
+    std::vector<std::uint8_t> dropped = dropped_tetrahedra(work);
+    FlipRecovery recovery(work.mesh, edge_piece_keys(work), facet_piece_keys(work));
+    const auto left = recovery.make_constrained_delaunay(std::uint64_t{64} * work.mesh.tetrahedron_count() + 4096,
+                                                         std::move(dropped));
     recovery.finish();
-    left = in_kept_regions(work, std::move(left));
     work.face_seconds += std::chrono::duration<double>(Clock::now() - begin).count();
     if (left.empty()) {
       c = std::move(work);
@@ -169,24 +138,32 @@ bool recover_then_flip(Constrained3dContext& c, std::string& why) {
             " face(s) are still not locally Delaunay";
       return false;
     }
+    // The blamed pieces: direct blames where there are any.
     const bool any_direct = std::any_of(left.begin(), left.end(), [](const auto& f) { return f.direct; });
-    std::vector<EdgeSplit> splits;
-    for (const auto& f : left) {
-      if (f.blocking_edge[0] == Tetrahedralization3::kNone || f.direct != any_direct) continue;
-      const auto [e, i] = piece_of.at(MeshIndex::key(f.blocking_edge[0], f.blocking_edge[1]));
-      splits.push_back({e, edge_split_parameter(work, e, i)});
-    }
-    if (splits.empty()) {
+    std::vector<std::uint64_t> blamed;
+    for (const auto& f : left)
+      if (f.blocking_edge[0] != Tetrahedralization3::kNone && f.direct == any_direct)
+        blamed.push_back(MeshIndex::key(f.blocking_edge[0], f.blocking_edge[1]));
+    if (blamed.empty()) {
       const auto& f = left.front().face;
       why = std::to_string(left.size()) + " face(s) not locally Delaunay that no flip can change and no constraint " +
             "piece is near, the first (" + std::to_string(f[0] + 1) + ", " + std::to_string(f[1] + 1) + ", " +
             std::to_string(f[2] + 1) + ")";
       return false;
     }
-    start.rounds = work.rounds;
-    start.edge_seconds = work.edge_seconds, start.face_seconds = work.face_seconds;
+    std::sort(blamed.begin(), blamed.end());
+    std::vector<EdgeSplit> splits;
+    for (std::uint32_t e = 0; e < work.edges.size(); ++e) {
+      const auto& chain = work.edges[e].chain;
+      for (std::uint32_t i = 0; i + 1 < chain.size(); ++i)
+        if (std::binary_search(blamed.begin(), blamed.end(), MeshIndex::key(chain[i], chain[i + 1])))
+          splits.push_back({e, edge_split_parameter(work, e, i)});
+    }
+    if (!split) split = c;
+    split->rounds = work.rounds;
+    split->edge_seconds = work.edge_seconds, split->face_seconds = work.face_seconds;
     try {
-      SteinerInserter(start).insert(splits, {});
+      SteinerInserter(*split).insert(splits, {});
     } catch (const InputError& e) {
       why = std::string("splitting the blocking pieces failed: ") + e.what();
       return false;
@@ -214,10 +191,7 @@ void constrained3d_cdt(Constrained3dContext& c) {
     c.edge_seconds += seconds(start);
     start = Clock::now();
     Tetrahedralization3 work = c.mesh;
-    std::vector<std::uint64_t> protected_edges;
-    for (const ConstraintEdge3& e : c.edges)
-      for (std::size_t i = 0; i + 1 < e.chain.size(); ++i) protected_edges.push_back(MeshIndex::key(e.chain[i], e.chain[i + 1]));
-    std::sort(protected_edges.begin(), protected_edges.end());
+    std::vector<std::uint64_t> protected_edges = edge_piece_keys(c);
     // Triangles the Delaunay tetrahedralization already holds keep their pieces, protected.
     const MeshIndex index(c.mesh);
     std::vector<std::array<std::uint32_t, 3>> held;

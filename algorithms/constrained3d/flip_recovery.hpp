@@ -91,7 +91,9 @@ class FlipRecovery {
     std::array<std::uint32_t, 2> blocking_edge;
     bool direct;
   };
-  std::vector<NotLocallyDelaunay> make_constrained_delaunay(std::uint64_t max_flips);
+  // skip[t] = 1 leaves tetrahedron t's faces alone (t a record index of the mesh as given: the
+  // regions that do not matter, bounded by protected faces).
+  std::vector<NotLocallyDelaunay> make_constrained_delaunay(std::uint64_t max_flips, std::vector<std::uint8_t> skip = {});
 
   void finish();
   std::uint64_t flips() const noexcept { return flips_; }
@@ -148,6 +150,7 @@ class FlipRecovery {
   std::vector<std::array<std::uint32_t, 3>> protected_faces_;
   bool deep_ = false;
   int link_budget_ = 0;
+  std::vector<std::uint8_t> lawson_skip_;  // make_constrained_delaunay's skip, by slot
   std::unordered_set<std::uint64_t> extra_edges_;
   std::set<std::array<std::uint32_t, 3>> extra_faces_;
   std::vector<std::uint32_t> mark_;

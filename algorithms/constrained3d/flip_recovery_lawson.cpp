@@ -27,14 +27,15 @@ bool FlipRecovery::lawson_step(std::uint32_t h, bool& blocked, std::array<std::u
   blocked = false;
   const std::uint32_t t = h >> 2, i = h & 3u;
   const auto rec = records_[t];
-  if (rec.vertex[0] == kInf) return false;
+  if (rec.vertex[0] == kInf || (t < lawson_skip_.size() && lawson_skip_[t])) return false;
   const std::uint32_t g = rec.neighbour[i], u = g >> 2;
   const std::uint32_t p = rec.vertex[i], d = records_[u].vertex[g & 3u];
   if (records_[u].vertex[0] == kInf) return false;  // a hull face
+  const auto& v = rec.vertex;
+  // Most faces pass this test: it comes before the search of the protected ones.
+  if (insphere(P(v[0]), P(v[1]), P(v[2]), P(v[3]), P(d)) != Sign::Positive) return false;
   const std::uint32_t a = rec.vertex[kFacet[i][0]], b = rec.vertex[kFacet[i][1]], c = rec.vertex[kFacet[i][2]];
   if (is_protected_face(a, b, c)) return false;
-  const auto& v = rec.vertex;
-  if (insphere(P(v[0]), P(v[1]), P(v[2]), P(v[3]), P(d)) != Sign::Positive) return false;
   if (flip23(t, i)) return true;
   // (a, b, c, p) is positive: pd passes beyond edge xy of abc where (x, y, p, d) is positive
   // (abc listed as t lists it), through it where zero. Only such an edge can go.
@@ -64,7 +65,11 @@ bool FlipRecovery::lawson_step(std::uint32_t h, bool& blocked, std::array<std::u
   return false;
 }
 
-std::vector<FlipRecovery::NotLocallyDelaunay> FlipRecovery::make_constrained_delaunay(std::uint64_t max_flips) {
+std::vector<FlipRecovery::NotLocallyDelaunay> FlipRecovery::make_constrained_delaunay(
+    std::uint64_t max_flips, std::vector<std::uint8_t> skip) {
+  // A flip's tetrahedra meet across faces that are no constraint, so they lie in one region
+  // and so do the new ones, which take over their slots (and new slots, not skipped).
+  lawson_skip_ = std::move(skip);
   // Faces are queued by handle with their vertices: a handle whose slot was reused since is
   // found again by a search of its first vertex's ball.
   struct Entry {
@@ -74,14 +79,16 @@ std::vector<FlipRecovery::NotLocallyDelaunay> FlipRecovery::make_constrained_del
     bool direct = false;
   };
   std::vector<Entry> queue, deferred;
-  const auto push_faces = [&](std::uint32_t t) {
+  // Each face of tetrahedron t (only those whose neighbour's id is larger, when `once`).
+  const auto push_faces = [&](std::uint32_t t, bool once) {
     const auto& x = records_[t].vertex;
-    if (x[0] == kInf) return;
+    if (x[0] == kInf || (t < lawson_skip_.size() && lawson_skip_[t])) return;
     for (std::uint32_t i = 0; i < 4; ++i)
-      queue.push_back({4 * t + i, {x[kFacet[i][0]], x[kFacet[i][1]], x[kFacet[i][2]]}});
+      if (!once || (records_[t].neighbour[i] >> 2) > t)
+        queue.push_back({4 * t + i, {x[kFacet[i][0]], x[kFacet[i][1]], x[kFacet[i][2]]}});
   };
   for (std::uint32_t t = 0; t < flips_mesh_.slots(); ++t)
-    if (!flips_mesh_.is_dead(t)) push_faces(t);
+    if (!flips_mesh_.is_dead(t)) push_faces(t, true);
   // The handle of the face now, or kNone where it is gone.
   const auto locate = [&](const Entry& e) -> std::uint32_t {
     const std::uint32_t t = e.handle >> 2, i = e.handle & 3u;
@@ -111,7 +118,10 @@ std::vector<FlipRecovery::NotLocallyDelaunay> FlipRecovery::make_constrained_del
         progress = true;
         ++flips;
         const std::vector<std::uint32_t> fresh = ids_;
-        for (const std::uint32_t n : fresh) push_faces(n);
+        for (const std::uint32_t n : fresh) {
+          if (n < lawson_skip_.size()) lawson_skip_[n] = 0;
+          push_faces(n, false);
+        }
       } else if (blocked) {
         deferred.push_back(e);
       }
@@ -131,6 +141,7 @@ std::vector<FlipRecovery::NotLocallyDelaunay> FlipRecovery::make_constrained_del
   std::sort(left.begin(), left.end(), [](const auto& x, const auto& y) { return x.face < y.face; });
   left.erase(std::unique(left.begin(), left.end(), [](const auto& x, const auto& y) { return x.face == y.face; }),
              left.end());
+  lawson_skip_.clear();
   return left;
 }
 

@@ -30,10 +30,7 @@ void recover_by_rounds(Constrained3dContext& c) {
     ++c.rounds;
     auto start = Clock::now();
     Tetrahedralization3 flipped = c.mesh;
-    std::vector<std::uint64_t> protected_edges;
-    for (const ConstraintEdge3& e : c.edges)
-      for (std::size_t i = 0; i + 1 < e.chain.size(); ++i) protected_edges.push_back(MeshIndex::key(e.chain[i], e.chain[i + 1]));
-    std::sort(protected_edges.begin(), protected_edges.end());
+    std::vector<std::uint64_t> protected_edges = edge_piece_keys(c);
     std::vector<std::array<std::uint32_t, 3>> protected_faces;
     std::vector<std::uint8_t> single(c.facets.size(), 0);  // triangles with no Steiner point
     for (std::uint32_t f = 0; f < c.facets.size(); ++f) {

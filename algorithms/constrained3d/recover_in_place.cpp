@@ -84,10 +84,7 @@ std::string recover_in_place(Constrained3dContext& c) {
   using Clock = std::chrono::steady_clock;
   const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
   auto start = Clock::now();
-  std::vector<std::uint64_t> protected_edges;
-  for (const ConstraintEdge3& e : c.edges)
-    for (std::size_t i = 0; i + 1 < e.chain.size(); ++i) protected_edges.push_back(MeshIndex::key(e.chain[i], e.chain[i + 1]));
-  std::sort(protected_edges.begin(), protected_edges.end());
+  std::vector<std::uint64_t> protected_edges = edge_piece_keys(c);
   std::vector<Tri> protected_faces;
   for (const ConstraintFacet3& f : c.facets) {
     Tri k = f.corners;

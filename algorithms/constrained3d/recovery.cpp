@@ -214,6 +214,25 @@ std::vector<std::array<std::uint32_t, 2>> facet_boundary(const Constrained3dCont
   return pieces;
 }
 
+std::vector<std::uint64_t> edge_piece_keys(const Constrained3dContext& c) {
+  std::vector<std::uint64_t> keys;
+  for (const ConstraintEdge3& e : c.edges)
+    for (std::size_t i = 0; i + 1 < e.chain.size(); ++i) keys.push_back(MeshIndex::key(e.chain[i], e.chain[i + 1]));
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+std::vector<std::array<std::uint32_t, 3>> facet_piece_keys(const Constrained3dContext& c) {
+  std::vector<std::array<std::uint32_t, 3>> keys;
+  for (const ConstraintFacet3& f : c.facets)
+    for (auto k : f.pieces) {
+      std::sort(k.begin(), k.end());
+      keys.push_back(k);
+    }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
 std::size_t facet_vertex_count(const Constrained3dContext& c, std::uint32_t f) {
   const ConstraintFacet3& facet = c.facets[f];
   std::size_t n = facet.interior.size();

@@ -55,6 +55,12 @@ class MeshIndex {
   mutable std::uint32_t stamp_ = 0;
 };
 
+// MeshIndex::key of every edge piece of every chain, sorted: the protected edges of a
+// FlipRecovery (flip_recovery.hpp).
+std::vector<std::uint64_t> edge_piece_keys(const Constrained3dContext& c);
+// Every recovered triangle piece's sorted vertex triple, sorted (the protected faces).
+std::vector<std::array<std::uint32_t, 3>> facet_piece_keys(const Constrained3dContext& c);
+
 // A request for a Steiner point: on input edge `edge` at parameter t, or inside input triangle
 // `facet` at (s, t).
 struct EdgeSplit {
