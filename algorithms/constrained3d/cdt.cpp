@@ -106,12 +106,16 @@ bool recover_then_flip(Constrained3dContext& c, std::string& why) {
   int growing = 0;           // rounds in a row that left more faces than the one before
   for (int round = 0; round < kFlipRounds; ++round) {
     Constrained3dContext work = split ? *split : c;
+    // Recover may cascade for minutes before it ends (CGAL's anchor.off): held to one Steiner
+    // point more than there are input edges, where A gives up below anyway.
+    work.steiner_limit = static_cast<std::uint32_t>(std::min<std::size_t>(c.steiner_limit, work.edges.size() + 1));
     try {
       constrained3d_recover(work);
     } catch (const InputError& e) {
       why = std::string("recover failed: ") + e.what();
       return false;
     }
+    work.steiner_limit = c.steiner_limit;
     const auto begin = Clock::now();
     std::vector<std::uint8_t> dropped = dropped_tetrahedra(work);
     FlipRecovery recovery(work.mesh, edge_piece_keys(work), facet_piece_keys(work));
