@@ -12,6 +12,8 @@
 // Steiner limit bounds the rounds.
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,10 +24,16 @@
 namespace dtlab {
 
 // The rounds above (Steiner points into the Delaunay tetrahedralization, flips on a copy).
-void recover_by_rounds(Constrained3dContext& c) {
+// `on_many` is called once, when the Steiner points first outnumber the input's edges and
+// triangles together.
+void recover_by_rounds(Constrained3dContext& c, const std::function<void()>& on_many) {
   using Clock = std::chrono::steady_clock;
   const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
   SteinerInserter inserter(c);
+  bool called = false;
+  const auto check = [&] {
+    if (!called && c.steiner.size() > c.edges.size() + c.facets.size()) called = true, on_many();
+  };
   for (;;) {
     ++c.rounds;
     auto start = Clock::now();
@@ -51,6 +59,7 @@ void recover_by_rounds(Constrained3dContext& c) {
     c.edge_seconds += seconds(start);
     if (!splits.empty()) {
       inserter.insert(splits, points);
+      check();
       continue;
     }
     start = Clock::now();
@@ -70,11 +79,13 @@ void recover_by_rounds(Constrained3dContext& c) {
     const std::size_t added = inserter.insert(splits, points);
     c.face_seconds += seconds(start);
     if (added == 0) inserter.throw_stuck();
+    check();
   }
   c.rounding_checks_failed = inserter.rounding_checks_failed();
 }
 
 std::string recover_in_place(Constrained3dContext& c);  // recover_in_place.cpp
+void constrained3d_conforming(Constrained3dContext& c);  // conforming.cpp
 
 void constrained3d_recover(Constrained3dContext& c) {
   // First with every Steiner point placed into the transformed tetrahedralization (TetGen's way,
@@ -110,7 +121,39 @@ void constrained3d_recover(Constrained3dContext& c) {
   }
   c.messages.push_back("recover: in place recovery gave up (" + why +
                        "); Steiner points inserted into the Delaunay tetrahedralization between rounds of flips");
-  recover_by_rounds(c);
+  // The rounds can cascade (points on a flat face of the hull, each rounded a little off it:
+  // CGAL's anchor.off ran for hours). Once they need more points than the input has edges and
+  // triangles, method conforming runs on the input as well, and its point count bounds the
+  // rounds: where they would reach it, or fail, its result is taken.
+  Constrained3dContext input = c;
+  std::optional<Constrained3dContext> conforming;
+  const std::uint32_t limit = c.steiner_limit;
+  const auto run_conforming = [&] {
+    if (conforming) return;
+    Constrained3dContext other = input;
+    constrained3d_conforming(other);
+    conforming = std::move(other);
+  };
+  try {
+    recover_by_rounds(c, [&] {
+      try {
+        run_conforming();
+        c.steiner_limit = static_cast<std::uint32_t>(std::min<std::size_t>(limit, conforming->steiner.size()));
+      } catch (const InputError&) {
+      }
+    });
+  } catch (const InputError& e) {
+    try {
+      run_conforming();
+    } catch (const InputError&) {
+      throw e;
+    }
+    c = std::move(*conforming);
+    c.messages.push_back(std::string("recover: the rounds stopped (") + e.what() + "); the result of method conforming (" +
+                         std::to_string(c.steiner.size()) + " Steiner points) instead");
+    return;
+  }
+  c.steiner_limit = limit;
 }
 
 }  // namespace dtlab

@@ -19,12 +19,14 @@ constexpr std::array<Constrained3dMethod, 3> kMethods{{
     {"recover",
      "Delaunay of the vertices, then missing edges recovered by flips along their pipes and missing "
      "triangles by removing the edges that cross them (2-3 flips, edge removal by shell "
-     "retriangulation); Steiner points, as in conforming, only where these fail; not Delaunay",
+     "retriangulation); Steiner points, as in conforming, only where these fail (where they "
+     "cascade, conforming's result); not Delaunay",
      &constrained3d_recover},
     {"cdt",
-     "constrained Delaunay tetrahedralization (Shewchuk): missing edge pieces split until every one is "
-     "a Delaunay edge, then each missing triangle inserted as the Delaunay triangulation of its "
-     "vertices by cavity retriangulation (gift-wrapping); Steiner points on input edges only",
+     "constrained Delaunay tetrahedralization of the meshed regions: recover's result made "
+     "constrained Delaunay by flips, constraint pieces that block a flip split; where that fails, "
+     "Shewchuk's construction (segments split until Delaunay, missing triangles inserted by "
+     "cavity retriangulation)",
      &constrained3d_cdt},
 }};
 
