@@ -518,6 +518,9 @@ void request_missing_facet_points(Constrained3dContext& c, const MeshIndex& inde
 }
 
 void SteinerInserter::throw_stuck() const {
+  // No triangle was stuck: every point asked for was one placed in an earlier round.
+  if (stuck_facet_ == Tetrahedralization3::kNone)
+    throw InputError("constrained3d: the boundary cannot be recovered: every Steiner point asked for is a vertex already");
   throw InputError("constrained3d: triangle " + std::to_string(stuck_facet_ + 1) +
                        " cannot be recovered: its Steiner points round onto existing vertices",
                    {stuck_facet_});
