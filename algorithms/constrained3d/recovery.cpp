@@ -429,24 +429,32 @@ void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const F
   const double ct = round_to_double((pu[1] + pv[1] + pw[1]) * third);
   if (!inside(cs, ct))
     throw InputError("constrained3d: triangle " + std::to_string(f + 1) + " cannot be recovered in doubles", {f});
-  if (!inside(s, t)) {
-    points.push_back({f, cs, ct, cs, ct, piece});
-    return;
-  }
-  // Ruppert's rule: a point in the closed diametral ball of a boundary piece splits the piece.
-  const ExactPoint3 x = exact_facet_point(p, facet.corners, s, t);
-  bool encroached = false;
-  for (int k = 0; k < 3; ++k) {
-    const ConstraintEdge3& edge = c.edges[facet.edges[k]];
-    for (std::size_t j = 0; j + 1 < edge.chain.size(); ++j) {
-      const ExactPoint3 a = to_exact(p[edge.chain[j]]), b = to_exact(p[edge.chain[j + 1]]);
-      const Rational dot_ab = (x.x - a.x) * (x.x - b.x) + (x.y - a.y) * (x.y - b.y) + (x.z - a.z) * (x.z - b.z);
-      if (dot_ab.sign() != Sign::Positive) {
-        splits.push_back({facet.edges[k], edge_split_parameter(c, facet.edges[k], j)});
-        encroached = true;
+  // Ruppert's rule: the boundary pieces (but those ending at x_vertex) whose closed diametral
+  // ball holds x are split instead; true if there is one.
+  const auto split_encroached = [&](const ExactPoint3& x, std::uint32_t x_vertex) {
+    bool encroached = false;
+    for (int k = 0; k < 3; ++k) {
+      const ConstraintEdge3& edge = c.edges[facet.edges[k]];
+      for (std::size_t j = 0; j + 1 < edge.chain.size(); ++j) {
+        if (edge.chain[j] == x_vertex || edge.chain[j + 1] == x_vertex) continue;
+        const ExactPoint3 a = to_exact(p[edge.chain[j]]), b = to_exact(p[edge.chain[j + 1]]);
+        const Rational dot_ab = (x.x - a.x) * (x.x - b.x) + (x.y - a.y) * (x.y - b.y) + (x.z - a.z) * (x.z - b.z);
+        if (dot_ab.sign() != Sign::Positive) {
+          splits.push_back({facet.edges[k], edge_split_parameter(c, facet.edges[k], j)});
+          encroached = true;
+        }
       }
     }
+    return encroached;
+  };
+  if (!inside(s, t)) {
+    // The circumcentre is beyond the triangle's boundary: where the apex itself encroaches a
+    // boundary piece, that piece is split (else centroids crowd towards it round after round:
+    // boxes with internal walls did that); otherwise the centroid.
+    if (!split_encroached(to_exact(p[w]), w)) points.push_back({f, cs, ct, cs, ct, piece});
+    return;
   }
+  const bool encroached = split_encroached(exact_facet_point(p, facet.corners, s, t), T3::kNone);
   if (!encroached) points.push_back({f, s, t, cs, ct, piece});
 }
 
