@@ -217,8 +217,7 @@ void orientation(const T3& tet, CheckReport3& r) {
   }
 }
 
-// `constrained` (may be empty) names the facets exempt from the test, by sorted vertex triple.
-void empty_sphere(const T3& tet, CheckReport3& r, const std::function<bool(std::array<std::uint32_t, 3>)>& constrained = {}) {
+void empty_sphere(const T3& tet, CheckReport3& r) {
   const auto P = tet.points();
   for (std::uint32_t t = 0; t < size32(tet); ++t) {
     if (tet.is_ghost(t)) continue;
@@ -226,11 +225,6 @@ void empty_sphere(const T3& tet, CheckReport3& r, const std::function<bool(std::
     for (std::uint32_t i = 0; i < 4; ++i) {
       const std::uint32_t h = T3::facet(t, i), g = tet.twin(h);
       if (g < h || tet.is_ghost(T3::tetrahedron_of(g))) continue;
-      if (constrained) {
-        std::array<std::uint32_t, 3> f{v[T3::kFacetVertex[i][0]], v[T3::kFacetVertex[i][1]], v[T3::kFacetVertex[i][2]]};
-        std::sort(f.begin(), f.end());
-        if (constrained(f)) continue;
-      }
       ++r.interior_facets;
       ++r.insphere_tests;
       const std::uint32_t d = tet.apex(g);
@@ -528,11 +522,6 @@ CheckReport3 check_orientation3(const Tetrahedralization3& tet) { return geometr
 
 CheckReport3 check_empty_sphere3(const Tetrahedralization3& tet) {
   return geometric(tet, "empty sphere", [](const T3& t, CheckReport3& r) { empty_sphere(t, r); });
-}
-
-CheckReport3 check_constrained_empty_sphere3(const Tetrahedralization3& tet,
-                                             const std::function<bool(std::array<std::uint32_t, 3>)>& constrained) {
-  return geometric(tet, "empty sphere", [&](const T3& t, CheckReport3& r) { empty_sphere(t, r, constrained); });
 }
 
 CheckReport3 check_constrained_delaunay3(std::span<const Vec3> points,

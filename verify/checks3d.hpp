@@ -65,18 +65,14 @@ CheckReport3 check_orientation3(const Tetrahedralization3& tetrahedralization);
 // For every facet between two finite tetrahedra, the apex of one is outside the sphere of the
 // other by the exact, perturbed in-sphere test (the tie-break all variants share).
 CheckReport3 check_empty_sphere3(const Tetrahedralization3& tetrahedralization);
-// The same test skipping the facets `constrained` names (sorted vertex triples): with the
-// constraint triangles named, it proves a constrained Delaunay tetrahedralization (the
-// constrained Delaunay lemma: every unconstrained interior facet locally Delaunay; Shewchuk
-// 2008, "General-dimensional constrained Delaunay and constrained regular triangulations").
-CheckReport3 check_constrained_empty_sphere3(const Tetrahedralization3& tetrahedralization,
-                                             const std::function<bool(std::array<std::uint32_t, 3>)>& constrained);
 // Constrained Delaunay over a list of tetrahedra (each positive: the ones a result keeps, so
 // that the domain they cover need not be convex): every facet two of them share that
 // `constrained` does not name is locally Delaunay in the sense that defines a CDT, the vertex
 // across not strictly inside the sphere (exact in-sphere, no perturbation: a CDT may have
 // cospherical vertices where input triangles fix the choice). By the constrained Delaunay lemma
-// that proves the tetrahedra a CDT of what they cover.
+// (every unconstrained interior facet locally Delaunay; Shewchuk 2008, "General-dimensional
+// constrained Delaunay and constrained regular triangulations") that proves the tetrahedra a
+// CDT of what they cover.
 CheckReport3 check_constrained_delaunay3(std::span<const Vec3> points,
                                          std::span<const std::array<std::uint32_t, 4>> tetrahedra,
                                          const std::function<bool(std::array<std::uint32_t, 3>)>& constrained);

@@ -11,8 +11,9 @@
 //    where no face has such a piece) the longest one of their two tetrahedra. Those pieces are
 //    split (as in "conforming") in the Delaunay tetrahedralization and A starts again, at most
 //    kFlipRounds times, and not once the faces left grow two rounds in a row or recover needed
-//    more Steiner points than there are input edges (cascades, as on Chazelle's polyhedron). Coplanar input triangles whose pair is not Delaunay in their plane make
-//    such blocks: they must stay faces, so no flip can help there.
+//    more Steiner points than there are input edges (cascades, as on Chazelle's polyhedron).
+//    Coplanar input triangles whose pair is not Delaunay in their plane make such blocks: they
+//    must stay faces, so no flip can help there.
 // B. Shewchuk 2002 ("Constrained Delaunay tetrahedralizations and provably good boundary
 //    recovery"), where A fails: a CDT exists once every segment is strongly Delaunay, which
 //    with the symbolic perturbation every edge of the (unique) Delaunay tetrahedralization is:
@@ -32,8 +33,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <string>
 #include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "algorithms/constrained3d/flip_recovery.hpp"
@@ -82,15 +84,13 @@ EdgeSplit longest_boundary_split(const Constrained3dContext& c, std::uint32_t f)
   return split;
 }
 
-
 // Per tetrahedron of c.mesh: 1 where the output drops it (the exterior, unless it is kept), so
-// that its faces need not be constrained Delaunay.
-std::vector<std::uint8_t> dropped_tetrahedra(const Constrained3dContext& c) {
+// that its faces need not be constrained Delaunay. pieces: facet_piece_keys(c), the walls.
+std::vector<std::uint8_t> dropped_tetrahedra(const Constrained3dContext& c,
+                                             std::span<const std::array<std::uint32_t, 3>> pieces) {
   std::vector<std::uint8_t> dropped(c.mesh.tetrahedron_count(), 0);
   if (c.keep_exterior) return dropped;
-  std::vector<std::array<std::uint32_t, 3>> walls;
-  for (const ConstraintFacet3& f : c.facets) walls.insert(walls.end(), f.pieces.begin(), f.pieces.end());
-  const TetrahedronComponents comp = tetrahedron_components(c.mesh, walls);
+  const TetrahedronComponents comp = tetrahedron_components(c.mesh, pieces);
   for (std::uint32_t t = 0; t < dropped.size(); ++t) dropped[t] = comp.component[t] == comp.exterior;
   return dropped;
 }
@@ -117,8 +117,9 @@ bool recover_then_flip(Constrained3dContext& c, std::string& why) {
     }
     work.steiner_limit = c.steiner_limit;
     const auto begin = Clock::now();
-    std::vector<std::uint8_t> dropped = dropped_tetrahedra(work);
-    FlipRecovery recovery(work.mesh, edge_piece_keys(work), facet_piece_keys(work));
+    std::vector<std::array<std::uint32_t, 3>> pieces = facet_piece_keys(work);
+    std::vector<std::uint8_t> dropped = dropped_tetrahedra(work, pieces);
+    FlipRecovery recovery(work.mesh, edge_piece_keys(work), std::move(pieces));
     const auto left = recovery.make_constrained_delaunay(std::uint64_t{64} * work.mesh.tetrahedron_count() + 4096,
                                                          std::move(dropped));
     recovery.finish();

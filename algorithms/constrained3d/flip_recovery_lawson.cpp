@@ -1,13 +1,14 @@
 // Lawson's flips with constraints (FlipRecovery::make_constrained_delaunay, flip_recovery.hpp):
 // what turns a recovered tetrahedralization into a constrained Delaunay one where flips can.
 // Face abc between t = (a, b, c, p) and u = (a, b, c, d) is not locally Delaunay when d is
-// inside the sphere of t (perturbed insphere: the same decision the checker makes). It is
+// strictly inside the sphere of t (exact insphere, no perturbation: a CDT allows cospherical
+// vertices, and the input triangles may fix their choice; checks3d.hpp decides the same). It is
 // flipped 2->3 when segment pd crosses its open interior, else 3->2 or 4->4 about the edge of
 // abc that pd passes beyond or through (Joe 1991; the flips of flip_insertion.cpp), never
 // removing a protected edge or face. A face that cannot be flipped now is tried again when the
-// queue runs empty; the pass ends when a retry flips nothing. Each flip lowers the lifted
-// tetrahedralization (perturbed), so no tetrahedralization repeats and the pass ends; the flip
-// bound backs that up.
+// queue runs empty; the pass ends when a retry flips nothing. Each flip strictly lowers the
+// lifted tetrahedralization, so no tetrahedralization repeats and the pass ends; the flip bound
+// backs that up.
 #include <algorithm>
 
 #include "algorithms/constrained3d/flip_recovery.hpp"
@@ -117,8 +118,7 @@ std::vector<FlipRecovery::NotLocallyDelaunay> FlipRecovery::make_constrained_del
       if (lawson_step(h, blocked, e.blocking_edge, e.direct)) {
         progress = true;
         ++flips;
-        const std::vector<std::uint32_t> fresh = ids_;
-        for (const std::uint32_t n : fresh) {
+        for (const std::uint32_t n : ids_) {  // push_faces leaves ids_ alone
           if (n < lawson_skip_.size()) lawson_skip_[n] = 0;
           push_faces(n, false);
         }

@@ -125,29 +125,30 @@ void constrained3d_recover(Constrained3dContext& c) {
   // CGAL's anchor.off ran for hours). Once they need more points than the input has edges and
   // triangles, method conforming runs on the input as well, and its point count bounds the
   // rounds: where they would reach it, or fail, its result is taken.
+  // Where conforming fails too, the rounds go on to the Steiner limit as before.
   Constrained3dContext input = c;
   std::optional<Constrained3dContext> conforming;
+  bool conforming_failed = false;
   const std::uint32_t limit = c.steiner_limit;
-  const auto run_conforming = [&] {
-    if (conforming) return;
-    Constrained3dContext other = input;
-    constrained3d_conforming(other);
-    conforming = std::move(other);
+  const auto run_conforming = [&] {  // once; true if conforming has a result
+    if (!conforming && !conforming_failed) {
+      try {
+        Constrained3dContext other = input;
+        constrained3d_conforming(other);
+        conforming = std::move(other);
+      } catch (const InputError&) {
+        conforming_failed = true;
+      }
+    }
+    return conforming.has_value();
   };
   try {
     recover_by_rounds(c, [&] {
-      try {
-        run_conforming();
+      if (run_conforming())
         c.steiner_limit = static_cast<std::uint32_t>(std::min<std::size_t>(limit, conforming->steiner.size()));
-      } catch (const InputError&) {
-      }
     });
   } catch (const InputError& e) {
-    try {
-      run_conforming();
-    } catch (const InputError&) {
-      throw e;
-    }
+    if (!run_conforming()) throw;
     c = std::move(*conforming);
     c.messages.push_back(std::string("recover: the rounds stopped (") + e.what() + "); the result of method conforming (" +
                          std::to_string(c.steiner.size()) + " Steiner points) instead");

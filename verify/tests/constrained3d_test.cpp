@@ -569,7 +569,7 @@ TEST(FacetInsertion, InsertsTheDelaunayPiecesAndRefusesAFillingThatIsNotConstrai
     ASSERT_TRUE(check_topology3(t).ok);
     ASSERT_TRUE(check_orientation3(t).ok);
     const auto constrained = [&](const Ids3& f) { return f == Ids3{0, 1, 2} || f == Ids3{0, 2, 3}; };
-    EXPECT_TRUE(check_constrained_empty_sphere3(t, constrained).ok);
+    EXPECT_TRUE(check_constrained_delaunay3(t.points(), t.finite_tetrahedra(), constrained).ok);
   }
   {
     Tetrahedralization3 t = delaunay;
