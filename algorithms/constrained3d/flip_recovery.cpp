@@ -17,8 +17,12 @@ using T3 = Tetrahedralization3;
 constexpr std::uint32_t kNone = T3::kNone;
 constexpr std::uint32_t kInf = T3::kInfinite;
 constexpr auto kFacet = T3::kFacetVertex;
-// Shells larger than this are not retriangulated: Cat(n - 1) triangulations (4862 at n = 11).
+// Shells larger than this are not searched: Cat(n - 1) triangulations (4862 at n = 11). Up to
+// kLargestFannedShell, only their fans are tried (a vertex of the ring joined to all others: the
+// walk's own transformation, where a Steiner point just beside a hull edge in the plane of a
+// flat face must fan that edge's shell, often more than 10 tetrahedra; Chazelle's polyhedron).
 constexpr int kLargestShell = 10;
+constexpr int kLargestFannedShell = 64;
 // Steps of one walk or one triangle's recovery (each removes a tetrahedron from a pipe or an
 // edge crossing a triangle; the bound only guards against a broken invariant).
 constexpr int kSteps = 512;
@@ -175,7 +179,7 @@ bool FlipRecovery::remove_edge(std::uint32_t t, std::uint32_t e0, std::uint32_t 
   if (is_protected_edge(e0, e1)) return false;
   const std::vector<std::uint32_t> sh = shell(mesh_, t, e0, e1);
   const int n = static_cast<int>(sh.size());
-  if (n < 3 || n > kLargestShell) return false;
+  if (n < 3 || n > kLargestFannedShell) return false;
   // ring[k]: the vertex shared by shell tetrahedra k and k + 1 besides e0, e1.
   std::vector<std::uint32_t> ring(n);
   for (int k = 0; k < n; ++k) {
@@ -220,8 +224,23 @@ bool FlipRecovery::remove_edge(std::uint32_t t, std::uint32_t e0, std::uint32_t 
     }
     return v == 1;
   };
-  const std::vector<PolygonTriangle> chosen = find_polygon_triangulation(
-      n, is_valid, [&](const std::vector<PolygonTriangle>& tris) { return accept(ring, tris); });
+  std::vector<PolygonTriangle> chosen;
+  if (n <= kLargestShell) {
+    chosen = find_polygon_triangulation(n, is_valid,
+                                        [&](const std::vector<PolygonTriangle>& tris) { return accept(ring, tris); });
+  } else {
+    std::vector<PolygonTriangle> fan;
+    for (int r = 0; r < n && chosen.empty(); ++r) {
+      fan.clear();
+      for (int k = 1; k + 1 < n; ++k) {
+        std::array<int, 3> tr{r, (r + k) % n, (r + k + 1) % n};
+        std::sort(tr.begin(), tr.end());
+        fan.push_back({static_cast<std::uint8_t>(tr[0]), static_cast<std::uint8_t>(tr[1]), static_cast<std::uint8_t>(tr[2])});
+        if (!is_valid(fan.back())) break;
+      }
+      if (fan.size() == static_cast<std::size_t>(n - 2) && is_valid(fan.back()) && accept(ring, fan)) chosen = fan;
+    }
+  }
   if (chosen.empty()) return false;
   std::vector<Tuple> fresh;
   fresh.reserve(2 * chosen.size());
