@@ -48,11 +48,12 @@ class FlipRecovery {
   // After recover_edge(u, v) failed: the face of the mesh where the walk from u (or else from v)
   // stopped, which the segment crosses or touches (kNone if it found none).
   std::array<std::uint32_t, 3> blocking_face() const noexcept { return block_; }
-  // Where segment uv runs along a flat part of the hull from u (flip_recovery_hull.cpp): the
-  // edge ab of the hull triangle (u, a, b) in uv's plane that uv leaves through, crossing it at
-  // an interior point; {kNone, kNone} where there is none (uv not on the hull, or through a
-  // vertex). Edges crossing a triangle there are in its plane, which crossing_edge cannot see.
-  std::array<std::uint32_t, 2> hull_edge_crossing(std::uint32_t u, std::uint32_t v);
+  // A mesh edge ab in a plane with uv that uv, leaving u, crosses at an interior point (the edge
+  // opposite u of a face (u, a, b) in that plane: flip_recovery_coplanar.cpp); {kNone, kNone}
+  // if there is none (uv leaves u through the open interior of tetrahedra, or through a vertex).
+  // On a flat part of the hull no flip removes such an edge, and crossing_edge (edges through a
+  // triangle's plane) does not see it.
+  std::array<std::uint32_t, 2> coplanar_edge_crossing(std::uint32_t u, std::uint32_t v);
   // An edge crossing the open triangle abc ({kNone, kNone} if none).
   std::array<std::uint32_t, 2> crossing_edge(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   // Makes abc a face if removing the edges that cross it can; true if it is one afterwards.

@@ -78,11 +78,11 @@ std::optional<std::array<double, 2>> crossing_in_triangle(const Constrained3dCon
   return at;
 }
 
-// Where x + lambda (y - x) meets line ab (hull_edge_crossing: all four in one plane), kept in
-// the middle seven eighths of xy; nothing where xy is not on a flat part of the hull.
-std::optional<double> flat_hull_crossing(const Constrained3dContext& c, FlipRecovery& recovery, std::uint32_t x,
+// Where x + lambda (y - x) meets line ab (coplanar_edge_crossing: all four in one plane), kept in
+// the middle seven eighths of xy; nothing where no mesh edge in its plane crosses xy.
+std::optional<double> coplanar_crossing(const Constrained3dContext& c, FlipRecovery& recovery, std::uint32_t x,
                                          std::uint32_t y) {
-  const auto [a, b] = recovery.hull_edge_crossing(x, y);
+  const auto [a, b] = recovery.coplanar_edge_crossing(x, y);
   if (a == Tetrahedralization3::kNone) return std::nullopt;
   const auto P = c.mesh.points();
   const Vec3 m = cross(P[y] - P[x], P[b] - P[a]);
@@ -92,15 +92,16 @@ std::optional<double> flat_hull_crossing(const Constrained3dContext& c, FlipReco
   return std::clamp(lambda, 0.0625, 0.9375);
 }
 
-// Where sub-triangle t lies on a flat part of the hull with an edge missing: the point where a
-// hull edge in its plane crosses that edge (hull_edge_crossing), in the facet's (s, t), kept in
-// the middle seven eighths of the edge; the point splits that hull edge, one crossing fewer.
-std::optional<std::array<double, 2>> crossing_on_flat_hull(const Constrained3dContext& c, FlipRecovery& recovery,
+// Where sub-triangle t has an edge missing that a mesh edge in its plane crosses (on a flat face
+// of the hull, or a flat part of the surface): the point where they cross, in the facet's (s, t),
+// kept in the middle seven eighths of the edge; the point splits that mesh edge, one crossing
+// fewer.
+std::optional<std::array<double, 2>> crossing_in_plane(const Constrained3dContext& c, FlipRecovery& recovery,
                                                            const FacetParameters& st, const Tri& t) {
   for (int r = 0; r < 3; ++r) {
     const std::uint32_t x = t[r], y = t[(r + 1) % 3];
     if (recovery.has_edge(x, y)) continue;
-    const auto lambda = flat_hull_crossing(c, recovery, x, y);
+    const auto lambda = coplanar_crossing(c, recovery, x, y);
     if (!lambda) continue;
     const auto &sx = st.at(x), &sy = st.at(y);
     const Rational L(*lambda);
@@ -240,7 +241,7 @@ std::string recover_in_place(Constrained3dContext& c) {
         FacetPoint point{.facet = f, .s = s, .t = tt, .fallback_s = s, .fallback_t = tt, .piece = {t[0], t[1]}};
         if (const auto cross = crossing_in_triangle(c, recovery, f, st, t)) {
           point.s = (*cross)[0], point.t = (*cross)[1];
-        } else if (const auto along = crossing_on_flat_hull(c, recovery, st, t)) {
+        } else if (const auto along = crossing_in_plane(c, recovery, st, t)) {
           point.s = (*along)[0], point.t = (*along)[1];
         }
         points.push_back(point);
