@@ -9,9 +9,12 @@
 //    Delaunay lemma the result is then a CDT. Faces of kept regions that stay not locally
 //    Delaunay are blamed on a constraint edge piece: the one their flip would remove, or (only
 //    where no face has such a piece) the longest one of their two tetrahedra. Those pieces are
-//    split (as in "conforming") in the Delaunay tetrahedralization and A starts again, at most
-//    kFlipRounds times, and not once the faces left grow two rounds in a row or recover needed
-//    more Steiner points than there are input edges (cascades, as on Chazelle's polyhedron).
+//    split (as in "conforming") where they are, in the flipped tetrahedralization, and the flips
+//    go on around the splits (flip_with_splits_in_place: one recovery in all); where a split
+//    cannot be made there, they are split in the Delaunay tetrahedralization and A starts again
+//    from recovery (recover_then_flip). Either stops after kFlipRounds rounds, once the faces
+//    left grow two rounds in a row, or once recover needed more Steiner points than there are
+//    input edges (cascades, as on Chazelle's polyhedron).
 //    Coplanar input triangles whose pair is not Delaunay in their plane make such blocks: they
 //    must stay faces, so no flip can help there.
 // B. Shewchuk 2002 ("Constrained Delaunay tetrahedralizations and provably good boundary
@@ -51,6 +54,7 @@ namespace {
 
 constexpr int kRounds = 8;
 constexpr int kFlipRounds = 16;
+constexpr int kGrowingRoundsInPlace = 2;
 
 // Splits every missing edge piece until the Delaunay tetrahedralization holds them all; each
 // pass adds a point, so the Steiner limit (the inserter's InputError) bounds the passes.
@@ -95,6 +99,40 @@ std::vector<std::uint8_t> dropped_tetrahedra(const Constrained3dContext& c,
   return dropped;
 }
 
+// Method recover on `work`; true if it succeeds, false with `why` if it throws. Recover may
+// cascade for minutes before it ends (CGAL's anchor.off): held to one Steiner point more than
+// there are input edges, where construction A gives up anyway. `limit` is restored after.
+bool recover_held(Constrained3dContext& work, std::uint32_t limit, std::string& why) {
+  work.steiner_limit = static_cast<std::uint32_t>(std::min<std::size_t>(limit, work.edges.size() + 1));
+  try {
+    constrained3d_recover(work);
+  } catch (const InputError& e) {
+    why = std::string("recover failed: ") + e.what();
+    return false;
+  }
+  work.steiner_limit = limit;
+  return true;
+}
+
+// The constraint pieces that the faces left by Lawson's flips blame (MeshIndex keys, sorted,
+// distinct): direct blames where there are any. Empty, with `why`, if none names one.
+std::vector<std::uint64_t> blamed_pieces(const std::vector<FlipRecovery::NotLocallyDelaunay>& left, std::string& why) {
+  const bool any_direct = std::any_of(left.begin(), left.end(), [](const auto& f) { return f.direct; });
+  std::vector<std::uint64_t> blamed;
+  for (const auto& f : left)
+    if (f.blocking_edge[0] != Tetrahedralization3::kNone && f.direct == any_direct)
+      blamed.push_back(MeshIndex::key(f.blocking_edge[0], f.blocking_edge[1]));
+  std::sort(blamed.begin(), blamed.end());
+  blamed.erase(std::unique(blamed.begin(), blamed.end()), blamed.end());
+  if (blamed.empty()) {
+    const auto& f = left.front().face;
+    why = std::to_string(left.size()) + " face(s) not locally Delaunay that no flip can change and no constraint " +
+          "piece is near, the first (" + std::to_string(f[0] + 1) + ", " + std::to_string(f[1] + 1) + ", " +
+          std::to_string(f[2] + 1) + ")";
+  }
+  return blamed;
+}
+
 // Construction A above. True with c the result; false with `why` (c unchanged) where recover
 // fails, a face is stuck with no constraint piece to blame, the stuck faces grow two rounds in a
 // row, recover needs more Steiner points than there are input edges, or kFlipRounds pass.
@@ -106,16 +144,7 @@ bool recover_then_flip(Constrained3dContext& c, std::string& why) {
   int growing = 0;           // rounds in a row that left more faces than the one before
   for (int round = 0; round < kFlipRounds; ++round) {
     Constrained3dContext work = split ? *split : c;
-    // Recover may cascade for minutes before it ends (CGAL's anchor.off): held to one Steiner
-    // point more than there are input edges, where A gives up below anyway.
-    work.steiner_limit = static_cast<std::uint32_t>(std::min<std::size_t>(c.steiner_limit, work.edges.size() + 1));
-    try {
-      constrained3d_recover(work);
-    } catch (const InputError& e) {
-      why = std::string("recover failed: ") + e.what();
-      return false;
-    }
-    work.steiner_limit = c.steiner_limit;
+    if (!recover_held(work, c.steiner_limit, why)) return false;
     const auto begin = Clock::now();
     std::vector<std::array<std::uint32_t, 3>> pieces = facet_piece_keys(work);
     std::vector<std::uint8_t> dropped = dropped_tetrahedra(work, pieces);
@@ -143,20 +172,8 @@ bool recover_then_flip(Constrained3dContext& c, std::string& why) {
             " face(s) are still not locally Delaunay";
       return false;
     }
-    // The blamed pieces: direct blames where there are any.
-    const bool any_direct = std::any_of(left.begin(), left.end(), [](const auto& f) { return f.direct; });
-    std::vector<std::uint64_t> blamed;
-    for (const auto& f : left)
-      if (f.blocking_edge[0] != Tetrahedralization3::kNone && f.direct == any_direct)
-        blamed.push_back(MeshIndex::key(f.blocking_edge[0], f.blocking_edge[1]));
-    if (blamed.empty()) {
-      const auto& f = left.front().face;
-      why = std::to_string(left.size()) + " face(s) not locally Delaunay that no flip can change and no constraint " +
-            "piece is near, the first (" + std::to_string(f[0] + 1) + ", " + std::to_string(f[1] + 1) + ", " +
-            std::to_string(f[2] + 1) + ")";
-      return false;
-    }
-    std::sort(blamed.begin(), blamed.end());
+    const std::vector<std::uint64_t> blamed = blamed_pieces(left, why);
+    if (blamed.empty()) return false;
     std::vector<EdgeSplit> splits;
     for (std::uint32_t e = 0; e < work.edges.size(); ++e) {
       const auto& chain = work.edges[e].chain;
@@ -178,12 +195,151 @@ bool recover_then_flip(Constrained3dContext& c, std::string& why) {
   return false;
 }
 
+// Construction A with its splits made in place (preferred: one recovery, not one a round):
+// recover once, then rounds of Lawson's flips, each blamed piece split where it is, in the
+// tetrahedralization the flips left (FlipRecovery::split_edge_at; the pieces of its triangles
+// split with it, so they stay faces), and flips again. One FlipRecovery serves every round, so
+// the regions are found once: a flip's tetrahedra are kept (flips stay in kept regions), a
+// split's take the region of the one they come from. After the first round only tetrahedra with
+// a vertex at a split point or on a face left are flipped: every other face was locally
+// Delaunay after the last round and its two tetrahedra are unchanged. False with `why` (c
+// unchanged) where a split cannot be made so (a tetrahedron made would not be positive) or as
+// recover_then_flip stops; that one, from the Delaunay tetrahedralization, is tried next.
+bool flip_with_splits_in_place(Constrained3dContext& c, std::string& why) {
+  using Clock = std::chrono::steady_clock;
+  Constrained3dContext work = c;
+  if (!recover_held(work, c.steiner_limit, why)) return false;
+  const auto begin = Clock::now();
+  std::vector<std::vector<std::uint32_t>> facets_of(work.edges.size());  // the triangles at each edge
+  for (std::uint32_t f = 0; f < work.facets.size(); ++f)
+    for (const std::uint32_t e : work.facets[f].edges) facets_of[e].push_back(f);
+  std::vector<std::array<std::uint32_t, 3>> walls = facet_piece_keys(work);
+  std::vector<std::uint8_t> exterior = dropped_tetrahedra(work, walls);  // by slot
+  FlipRecovery recovery(work.mesh, edge_piece_keys(work), std::move(walls));
+  const auto stop = [&](std::string reason) {
+    recovery.finish();
+    why = std::move(reason);
+    return false;
+  };
+  std::vector<std::uint8_t> touched;  // vertices whose tetrahedra are flipped again (round > 0)
+  std::vector<std::array<std::uint32_t, 2>> children;
+  std::size_t previous = 0;
+  int growing = 0;
+  for (int round = 0; round < kFlipRounds; ++round) {
+    ++work.rounds;
+    std::vector<std::uint8_t> skip = exterior;
+    skip.resize(recovery.slots(), 0);
+    if (round > 0)
+      for (std::uint32_t t = 0; t < skip.size(); ++t) {
+        if (skip[t] || recovery.is_dead(t)) continue;
+        bool near = false;
+        for (const std::uint32_t v : recovery.record(t).vertex) near = near || (v < touched.size() && touched[v]);
+        skip[t] = !near;
+      }
+    const std::vector<std::uint8_t> skip_in = skip;
+    const auto left = recovery.make_constrained_delaunay(std::uint64_t{64} * recovery.slots() + 4096, std::move(skip));
+    // Slots the flips filled hold kept tetrahedra now.
+    const auto& skip_out = recovery.lawson_skip();
+    exterior.resize(recovery.slots(), 0);
+    for (std::uint32_t t = 0; t < exterior.size(); ++t)
+      if (t >= skip_in.size() || (skip_in[t] && !skip_out[t])) exterior[t] = 0;
+    if (left.empty()) {
+      recovery.finish();
+      work.face_seconds += std::chrono::duration<double>(Clock::now() - begin).count();
+      c = std::move(work);
+      c.constrained_delaunay = true;
+      return true;
+    }
+    growing = round > 0 && left.size() > previous ? growing + 1 : 0;
+    previous = left.size();
+    if (growing == kGrowingRoundsInPlace)
+      return stop("the faces not locally Delaunay grew " + std::to_string(kGrowingRoundsInPlace) +
+                  " rounds in a row, to " + std::to_string(left.size()));
+    if (work.steiner.size() > work.edges.size())
+      return stop(std::to_string(work.steiner.size()) + " Steiner points for " + std::to_string(work.edges.size()) +
+                  " input edges, and " + std::to_string(left.size()) + " face(s) still not locally Delaunay");
+    const std::vector<std::uint64_t> blamed = blamed_pieces(left, why);
+    if (blamed.empty()) return stop(why);
+    touched.assign(work.mesh.point_count(), 0);
+    for (const auto& f : left)
+      for (const std::uint32_t v : f.face) touched[v] = 1;
+    // Each blamed piece split in the tetrahedralization, and in the pieces of its triangles.
+    std::vector<std::uint32_t> edge_of;  // the input edge of each blamed piece
+    for (std::uint32_t e = 0; e < work.edges.size(); ++e) {
+      const auto& chain = work.edges[e].chain;
+      for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+        if (std::binary_search(blamed.begin(), blamed.end(), MeshIndex::key(chain[i], chain[i + 1])))
+          edge_of.push_back(e);
+    }
+    std::array<std::uint32_t, 2> piece{};
+    SteinerInserter inserter(work);
+    inserter.set_placement([&](const Vec3& p, std::uint32_t) {
+      children.clear();
+      return recovery.split_edge_at(piece[0], piece[1], p, &children);
+    });
+    for (const std::uint32_t e : edge_of) {
+      const auto& chain = work.edges[e].chain;
+      std::size_t i = 0;
+      while (i + 1 < chain.size() && !std::binary_search(blamed.begin(), blamed.end(), MeshIndex::key(chain[i], chain[i + 1])))
+        ++i;
+      if (i + 1 == chain.size()) continue;  // (a second blamed piece of e, met already)
+      piece = {chain[i], chain[i + 1]};
+      // Where the point (rounded off the piece) would make a tetrahedron of the piece's shell
+      // flat or negative, others along the piece: 1/4, 1/8 and 1/16 of it either way.
+      const double t = edge_split_parameter(work, e, i), lo = work.edges[e].t[i], hi = work.edges[e].t[i + 1];
+      std::string failure;
+      bool placed = false;
+      for (int k = 0; k < 7 && !placed; ++k) {
+        const double w = k == 0 ? 0.0 : std::ldexp(k % 2 ? 1.0 : -1.0, -(k + 3) / 2);
+        const double tk = t + w * (hi - lo);
+        if (!(lo < tk && tk < hi)) continue;
+        try {
+          placed = inserter.insert({{e, tk}}, {}) == 1;
+        } catch (const InputError& x) {
+          failure = x.what();
+        }
+      }
+      if (!placed) return stop("a split could not be made in place: " + failure);
+      // The new tetrahedra take their parents' region (read first: slots are reused).
+      std::vector<std::uint8_t> region(children.size());
+      for (std::size_t k = 0; k < children.size(); ++k) region[k] = exterior[children[k][1]];
+      exterior.resize(recovery.slots(), 0);
+      for (std::size_t k = 0; k < children.size(); ++k) exterior[children[k][0]] = region[k];
+      const auto p = static_cast<std::uint32_t>(work.mesh.point_count() - 1);
+      touched.resize(p + 1, 0);
+      touched[p] = 1;
+      recovery.protect_edge(piece[0], p);
+      recovery.protect_edge(p, piece[1]);
+      for (const std::uint32_t f : facets_of[e]) {
+        auto& tris = work.facets[f].pieces;
+        const std::size_t count = tris.size();
+        for (std::size_t k = 0; k < count; ++k)
+          for (int r = 0; r < 3; ++r) {
+            const std::uint32_t u = tris[k][r], v = tris[k][(r + 1) % 3];
+            if (MeshIndex::key(u, v) != MeshIndex::key(piece[0], piece[1])) continue;
+            auto second = tris[k];
+            tris[k][(r + 1) % 3] = p;  // (u, p, w) and (p, v, w): the triangle's turn kept
+            second[r] = p;
+            tris.push_back(second);
+            recovery.protect_face(tris[k][0], tris[k][1], tris[k][2]);
+            recovery.protect_face(second[0], second[1], second[2]);
+            break;
+          }
+        work.facets[f].pieces_vertex_count = facet_vertex_count(work, f);
+      }
+    }
+  }
+  return stop("faces not locally Delaunay after " + std::to_string(kFlipRounds) + " rounds of splits");
+}
+
 }  // namespace
 
 void constrained3d_cdt(Constrained3dContext& c) {
-  std::string why;
+  std::string why, why_in_place;
+  if (flip_with_splits_in_place(c, why_in_place)) return;
   if (recover_then_flip(c, why)) return;
-  c.messages.push_back("cdt: recover and flips gave no constrained Delaunay tetrahedralization (" + why +
+  c.messages.push_back("cdt: recover and flips gave no constrained Delaunay tetrahedralization (in place: " +
+                       why_in_place + "; from the Delaunay tetrahedralization: " + why +
                        "); segments split until they are Delaunay (Shewchuk 2002) instead");
   why.clear();
   using Clock = std::chrono::steady_clock;

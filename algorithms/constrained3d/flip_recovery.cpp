@@ -448,13 +448,7 @@ std::uint32_t FlipRecovery::insert_point(const Vec3& p, std::uint32_t near) {
   }
   mesh_.mutable_points().push_back(p);
   vertex_tet_.push_back(kNone);
-  // Every new tetrahedron strictly positive, every new ghost's hull facet a proper triangle (p
-  // on the hull's surface leaves the hull as it was), or the location was wrong.
-  const auto proper = [&](const Tuple& t) {
-    const std::uint32_t m = infinite_index(t);
-    if (m == 4) return orient3d(P(t[0]), P(t[1]), P(t[2]), P(t[3])) == Sign::Positive;
-    return !collinear(P(t[1 ^ m]), P(t[2 ^ m]), P(t[3 ^ m]));
-  };
+  // Every new tetrahedron proper, or the location was wrong.
   for (const Tuple& t : fresh)
     if (!proper(t)) {
       mesh_.mutable_points().pop_back();
@@ -463,6 +457,41 @@ std::uint32_t FlipRecovery::insert_point(const Vec3& p, std::uint32_t near) {
     }
   flips_mesh_.replace(old, fresh, ids_);
   replaced(ids_);
+  return pid;
+}
+
+bool FlipRecovery::proper(const Tuple& t) const {
+  const std::uint32_t m = infinite_index(t);
+  if (m == 4) return orient3d(P(t[0]), P(t[1]), P(t[2]), P(t[3])) == Sign::Positive;
+  return !collinear(P(t[1 ^ m]), P(t[2 ^ m]), P(t[3 ^ m]));
+}
+
+std::uint32_t FlipRecovery::split_edge_at(std::uint32_t a, std::uint32_t b, const Vec3& p,
+                                          std::vector<std::array<std::uint32_t, 2>>* children) {
+  const std::uint32_t t = tetrahedron_with(a, b);
+  if (t == kNone) return kNone;
+  const auto pid = static_cast<std::uint32_t>(mesh_.point_count());
+  const std::vector<std::uint32_t> sh = shell(mesh_, t, a, b);
+  std::vector<Tuple> fresh;
+  for (const std::uint32_t s : sh) {
+    // The facets opposite a and b, each with p.
+    const auto& x = records_[s].vertex;
+    for (std::uint32_t i = 0; i < 4; ++i)
+      if (x[i] == a || x[i] == b) fresh.push_back({x[kFacet[i][0]], x[kFacet[i][1]], x[kFacet[i][2]], pid});
+    // On the hull: p beyond a hull facet at ab would leave the hull non-convex.
+    if (x[0] == kInf && orient3d(p, P(x[1]), P(x[2]), P(x[3])) == Sign::Positive)
+      return kNone;
+  }
+  mesh_.mutable_points().push_back(p);
+  if (!std::all_of(fresh.begin(), fresh.end(), [&](const Tuple& x) { return proper(x); })) {
+    mesh_.mutable_points().pop_back();
+    return kNone;
+  }
+  vertex_tet_.push_back(kNone);
+  flips_mesh_.replace(sh, fresh, ids_);
+  replaced(ids_);
+  if (children)
+    for (std::size_t k = 0; k < ids_.size(); ++k) children->push_back({ids_[k], sh[k / 2]});  // two from each
   return pid;
 }
 

@@ -70,6 +70,14 @@ class FlipRecovery {
   // ball of vertex `near`. Returns its id, or kNone (nothing changed) where p is outside the hull,
   // on a ghost, equal to a vertex, or inside a protected face or edge.
   std::uint32_t insert_point(const Vec3& p, std::uint32_t near);
+  // Splits edge ab at p (appended to the points), a protected one included: every tetrahedron of
+  // its shell in two (method cdt splits a constraint piece of its constrained tetrahedralization
+  // so). Returns p's id, or kNone (nothing changed) where ab is no edge or a tetrahedron made
+  // would not be positive (p off ab by more than rounding). The protections are the caller's to
+  // renew: ab's stay. `children`, if given, gets (new tetrahedron, the one of the shell it came
+  // from) pairs, slot ids.
+  std::uint32_t split_edge_at(std::uint32_t a, std::uint32_t b, const Vec3& p,
+                              std::vector<std::array<std::uint32_t, 2>>* children = nullptr);
   // Lets edge recovery remove link edges first where an edge's shell has no retriangulation
   // (remove_edge_after_link below): far fewer Steiner points (fandisk 64 -> 34, twisted prisms 1
   // each), at the cost of changing the mesh where it still fails.
@@ -97,9 +105,17 @@ class FlipRecovery {
     std::array<std::uint32_t, 2> blocking_edge;
     bool direct;
   };
-  // skip[t] = 1 leaves tetrahedron t's faces alone (t a record index of the mesh as given: the
-  // regions that do not matter, bounded by protected faces).
+  // skip[t] = 1 leaves tetrahedron t's faces alone (t a record index of the mesh as given): the
+  // regions that do not matter, bounded by protected faces, or tetrahedra whose faces are known
+  // to be locally Delaunay (a face between a skipped and a tested one is tested).
   std::vector<NotLocallyDelaunay> make_constrained_delaunay(std::uint64_t max_flips, std::vector<std::uint8_t> skip = {});
+  // After make_constrained_delaunay: its skip, by slot, with 0 for every tetrahedron its flips
+  // made (slots() entries; valid until the next call or change).
+  const std::vector<std::uint8_t>& lawson_skip() const noexcept { return lawson_skip_; }
+  // Slots in use (every tetrahedron id is below it) and whether one is free, before finish().
+  std::size_t slots() const noexcept { return flips_mesh_.slots(); }
+  bool is_dead(std::uint32_t t) const noexcept { return flips_mesh_.is_dead(t); }
+  const Tetrahedralization3::Record& record(std::uint32_t t) const noexcept { return records_[t]; }
 
   void finish();
   std::uint64_t flips() const noexcept { return flips_; }
@@ -113,6 +129,9 @@ class FlipRecovery {
   std::uint32_t tetrahedron_with(std::uint32_t u, std::uint32_t v, std::uint32_t w = Tetrahedralization3::kNone);
   void ball_of(std::uint32_t u, std::vector<std::uint32_t>& out);
   bool is_protected_edge(std::uint32_t u, std::uint32_t v) const;
+  // A tetrahedron insert_point or split_edge_at makes is valid: positive, or a ghost whose hull
+  // facet is a proper triangle (a point on the hull's surface leaves the hull as it was).
+  bool proper(const FlipMesh::Tuple& t) const;
   bool is_protected_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) const;
   // One step of the walk of uv from u: true if the mesh changed.
   bool advance(std::uint32_t u, std::uint32_t v);

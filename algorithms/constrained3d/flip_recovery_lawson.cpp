@@ -80,13 +80,16 @@ std::vector<FlipRecovery::NotLocallyDelaunay> FlipRecovery::make_constrained_del
     bool direct = false;
   };
   std::vector<Entry> queue, deferred;
-  // Each face of tetrahedron t (only those whose neighbour's id is larger, when `once`).
+  const auto skipped = [&](std::uint32_t t) { return t < lawson_skip_.size() && lawson_skip_[t] != 0; };
+  // Each face of tetrahedron t (when `once`, only those whose neighbour is skipped or has a
+  // larger id: each face once).
   const auto push_faces = [&](std::uint32_t t, bool once) {
     const auto& x = records_[t].vertex;
-    if (x[0] == kInf || (t < lawson_skip_.size() && lawson_skip_[t])) return;
-    for (std::uint32_t i = 0; i < 4; ++i)
-      if (!once || (records_[t].neighbour[i] >> 2) > t)
-        queue.push_back({4 * t + i, {x[kFacet[i][0]], x[kFacet[i][1]], x[kFacet[i][2]]}});
+    if (x[0] == kInf || skipped(t)) return;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t n = records_[t].neighbour[i] >> 2;
+      if (!once || n > t || skipped(n)) queue.push_back({4 * t + i, {x[kFacet[i][0]], x[kFacet[i][1]], x[kFacet[i][2]]}});
+    }
   };
   for (std::uint32_t t = 0; t < flips_mesh_.slots(); ++t)
     if (!flips_mesh_.is_dead(t)) push_faces(t, true);
@@ -141,7 +144,7 @@ std::vector<FlipRecovery::NotLocallyDelaunay> FlipRecovery::make_constrained_del
   std::sort(left.begin(), left.end(), [](const auto& x, const auto& y) { return x.face < y.face; });
   left.erase(std::unique(left.begin(), left.end(), [](const auto& x, const auto& y) { return x.face == y.face; }),
              left.end());
-  lawson_skip_.clear();
+  lawson_skip_.resize(flips_mesh_.slots(), 0);
   return left;
 }
 

@@ -15,6 +15,7 @@
 #include <tuple>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
+#include "algorithms/constrained3d/recovery.hpp"
 #include "algorithms/constrained3d/registry.hpp"
 #include "algorithms/constrained3d/exhaustive_tetrahedralization.hpp"
 #include "algorithms/constrained3d/flip_recovery.hpp"
@@ -24,6 +25,7 @@
 #include "algorithms/constrained3d/plc_checks.hpp"
 #include "algorithms/constrained3d/schonhardt.hpp"
 #include "kernel/error.hpp"
+#include "mesh/element_sets3.hpp"
 #include "kernel/exact_rational.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/rounding.hpp"
@@ -704,6 +706,61 @@ TEST(ConstrainedDelaunayFlips, ReturnToTheDelaunayTetrahedralizationOrBlameThePr
     EXPECT_TRUE(blamed);
     ASSERT_TRUE(check_orientation3(u).ok);
   }
+}
+
+// FlipRecovery::split_edge_at (method cdt splits constraint pieces where they are): edges of a
+// Delaunay tetrahedralization, protected ones and hull edges included, split at their midpoints
+// (exact: the points have integer coordinates) give a valid tetrahedralization with the edge in
+// two and two new tetrahedra for each of its shell's, named with their parents; a point well off
+// the edge is refused with nothing changed.
+TEST(ConstrainedDelaunayFlips, SplitEdgeAtAPointOfIt) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> coordinate(-64, 64);
+  std::vector<Vec3> P;
+  std::set<std::array<int, 3>> seen;
+  while (P.size() < 40) {
+    const std::array<int, 3> q{coordinate(rng), coordinate(rng), coordinate(rng)};
+    if (seen.insert(q).second) P.push_back({double(q[0]), double(q[1]), double(q[2])});
+  }
+  const Tetrahedralization3 delaunay = delaunay3d(P).tetrahedralization;
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  for (const auto& tet : delaunay.finite_tetrahedra())
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) edges.push_back({std::min(tet[i], tet[j]), std::max(tet[i], tet[j])});
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  int hull_edges = 0;
+  for (std::size_t k = 0; k < edges.size(); k += 7) {
+    const auto [a, b] = edges[k];
+    Tetrahedralization3 u = delaunay;
+    const std::size_t shell_size = shell(u, [&] {
+      for (std::uint32_t t = 0; t < u.tetrahedron_count(); ++t) {
+        const auto& x = u.records()[t].vertex;
+        if (std::count(x.begin(), x.end(), a) && std::count(x.begin(), x.end(), b)) return t;
+      }
+      return Tetrahedralization3::kNone;
+    }(), a, b).size();
+    FlipRecovery recovery(u, {MeshIndex::key(a, b)}, {});
+    const Vec3 far = P[a] + 0.5 * (P[b] - P[a]) + Vec3{300, 300, 300};  // beyond every tetrahedron of the shell
+    EXPECT_EQ(recovery.split_edge_at(a, b, far), Tetrahedralization3::kNone);
+    std::vector<std::array<std::uint32_t, 2>> children;
+    const Vec3 mid{(P[a].x + P[b].x) / 2, (P[a].y + P[b].y) / 2, (P[a].z + P[b].z) / 2};
+    const std::uint32_t p = recovery.split_edge_at(a, b, mid, &children);
+    ASSERT_EQ(p, P.size());
+    EXPECT_EQ(children.size(), 2 * shell_size);
+    EXPECT_FALSE(recovery.has_edge(a, b));
+    EXPECT_TRUE(recovery.has_edge(a, p) && recovery.has_edge(p, b));
+    recovery.finish();
+    ASSERT_TRUE(check_orientation3(u).ok) << a << " " << b;
+    EXPECT_NO_THROW(u.check_topology());
+    EXPECT_EQ(u.point_count(), P.size() + 1);
+    for (const auto& [child, parent] : children) EXPECT_LT(parent, delaunay.tetrahedron_count());
+    hull_edges += std::any_of(delaunay.records().begin(), delaunay.records().end(), [&](const auto& r) {
+      return r.vertex[0] == Tetrahedralization3::kInfinite && std::count(r.vertex.begin(), r.vertex.end(), a) &&
+             std::count(r.vertex.begin(), r.vertex.end(), b);
+    });
+  }
+  EXPECT_GT(hull_edges, 0);  // the hull's ghosts split too
 }
 
 // A star-shaped closed surface: the convex hull of random lattice points around the origin
