@@ -200,9 +200,10 @@ bool recover_then_flip(Constrained3dContext& c, std::string& why) {
 // tetrahedralization the flips left (FlipRecovery::split_edge_at; the pieces of its triangles
 // split with it, so they stay faces), and flips again. One FlipRecovery serves every round, so
 // the regions are found once: a flip's tetrahedra are kept (flips stay in kept regions), a
-// split's take the region of the one they come from. After the first round only tetrahedra with
-// a vertex at a split point or on a face left are flipped: every other face was locally
-// Delaunay after the last round and its two tetrahedra are unchanged. False with `why` (c
+// split's take the region of the one they come from. Only tetrahedra with a vertex that changed
+// are flipped: in the first round a vertex of a tetrahedron recovery made (elsewhere the mesh is
+// the Delaunay tetrahedralization), then a split point or a vertex of a face left; every other
+// face is locally Delaunay already, its two tetrahedra unchanged since it was. False with `why` (c
 // unchanged) where a split cannot be made so (a tetrahedron made would not be positive) or as
 // recover_then_flip stops; that one, from the Delaunay tetrahedralization, is tried next.
 bool flip_with_splits_in_place(Constrained3dContext& c, std::string& why) {
@@ -221,7 +222,9 @@ bool flip_with_splits_in_place(Constrained3dContext& c, std::string& why) {
     why = std::move(reason);
     return false;
   };
-  std::vector<std::uint8_t> touched;  // vertices whose tetrahedra are flipped again (round > 0)
+  // Only tetrahedra with a vertex here are flipped: first those recovery changed (the rest is
+  // still the Delaunay tetrahedralization), then the split points and the faces left.
+  std::vector<std::uint8_t> touched = work.changed;
   std::vector<std::array<std::uint32_t, 2>> children;
   std::size_t previous = 0;
   int growing = 0;
@@ -229,13 +232,12 @@ bool flip_with_splits_in_place(Constrained3dContext& c, std::string& why) {
     ++work.rounds;
     std::vector<std::uint8_t> skip = exterior;
     skip.resize(recovery.slots(), 0);
-    if (round > 0)
-      for (std::uint32_t t = 0; t < skip.size(); ++t) {
-        if (skip[t] || recovery.is_dead(t)) continue;
-        bool near = false;
-        for (const std::uint32_t v : recovery.record(t).vertex) near = near || (v < touched.size() && touched[v]);
-        skip[t] = !near;
-      }
+    for (std::uint32_t t = 0; t < skip.size(); ++t) {
+      if (skip[t] || recovery.is_dead(t)) continue;
+      bool near = false;
+      for (const std::uint32_t v : recovery.record(t).vertex) near = near || (v < touched.size() && touched[v]);
+      skip[t] = !near;
+    }
     const std::vector<std::uint8_t> skip_in = skip;
     const auto left = recovery.make_constrained_delaunay(std::uint64_t{64} * recovery.slots() + 4096, std::move(skip));
     // Slots the flips filled hold kept tetrahedra now.

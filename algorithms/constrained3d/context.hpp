@@ -49,6 +49,9 @@ struct Constrained3dContext {
   std::uint32_t rounds = 0;
   std::uint32_t rounding_checks_failed = 0;  // Steiner points off their rounding bound (must stay 0)
   double edge_seconds = 0, face_seconds = 0;
+  // Vertices of tetrahedra that recovery's transformations made; elsewhere the mesh is the
+  // Delaunay tetrahedralization, locally Delaunay (method cdt's flips start at these).
+  std::vector<std::uint8_t> changed;
   bool keep_exterior = false;         // the output keeps the exterior region (Constrained3dOptions)
   bool constrained_delaunay = false;  // the method made a CDT (Constrained3dResult)
   std::vector<std::string> messages;  // what the method did that the user should know (Constrained3dResult)

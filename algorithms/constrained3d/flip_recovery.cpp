@@ -146,8 +146,14 @@ bool FlipRecovery::has_face(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
 
 void FlipRecovery::replaced(std::span<const std::uint32_t> ids) {
   for (const std::uint32_t t : ids)
-    for (const std::uint32_t v : records_[t].vertex)
-      if (v != kInf) vertex_tet_[v] = t;
+    for (const std::uint32_t v : records_[t].vertex) {
+      if (v == kInf) continue;
+      vertex_tet_[v] = t;
+      if (marks_) {
+        if (v >= marks_->size()) marks_->resize(v + 1, 0);
+        (*marks_)[v] = 1;
+      }
+    }
 }
 
 bool FlipRecovery::flip23(std::uint32_t t, std::uint32_t i) {

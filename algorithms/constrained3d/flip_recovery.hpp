@@ -82,6 +82,9 @@ class FlipRecovery {
   // (remove_edge_after_link below): far fewer Steiner points (fandisk 64 -> 34, twisted prisms 1
   // each), at the cost of changing the mesh where it still fails.
   void allow_link_removals(bool allow) noexcept { deep_ = allow; }
+  // From now on every vertex of a tetrahedron the transformations make gets marks[v] = 1 (the
+  // vector grows as needed): elsewhere the mesh is as given (method cdt's flips start there).
+  void record_changes(std::vector<std::uint8_t>* marks) noexcept { marks_ = marks; }
   // Adds a constraint to the protected ones (after recovering it).
   void protect_edge(std::uint32_t u, std::uint32_t v);
   void protect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
@@ -176,6 +179,7 @@ class FlipRecovery {
   bool deep_ = false;
   int link_budget_ = 0;
   std::vector<std::uint8_t> lawson_skip_;  // make_constrained_delaunay's skip, by slot
+  std::vector<std::uint8_t>* marks_ = nullptr;  // record_changes
   std::unordered_set<std::uint64_t> extra_edges_;
   std::set<std::array<std::uint32_t, 3>> extra_faces_;
   std::vector<std::uint32_t> mark_;

@@ -50,6 +50,8 @@ void recover_by_rounds(Constrained3dContext& c, const std::function<void()>& on_
     }
     std::sort(protected_faces.begin(), protected_faces.end());
     FlipRecovery recovery(flipped, std::move(protected_edges), std::move(protected_faces));
+    std::vector<std::uint8_t> changed;
+    recovery.record_changes(&changed);
 
     std::vector<EdgeSplit> splits;
     std::vector<FacetPoint> points;
@@ -73,6 +75,7 @@ void recover_by_rounds(Constrained3dContext& c, const std::function<void()>& on_
     request_missing_facet_points(c, index, splits, points);
     if (splits.empty() && points.empty()) {
       c.mesh = std::move(flipped);
+      c.changed = std::move(changed);
       c.face_seconds += seconds(start);
       break;
     }
@@ -110,6 +113,7 @@ void constrained3d_recover(Constrained3dContext& c) {
   }
   if (fresh) {
     c.mesh = std::move(saved_mesh);
+    c.changed.clear();
     c.steiner.clear();
     for (ConstraintEdge3& e : c.edges) e.chain = {e.a, e.b}, e.t = {0.0, 1.0};
     for (ConstraintFacet3& f : c.facets) {

@@ -126,6 +126,7 @@ std::string recover_in_place(Constrained3dContext& c) {
   std::sort(protected_faces.begin(), protected_faces.end());
   FlipRecovery recovery(c.mesh, std::move(protected_edges), std::move(protected_faces));
   recovery.allow_link_removals(true);
+  recovery.record_changes(&c.changed);
   SteinerInserter inserter(c);
   inserter.set_placement([&](const Vec3& p, std::uint32_t near) { return recovery.insert_point(p, near); });
   constexpr int kEdgePasses = 3;  // passes over the failed pieces before any is split
