@@ -524,13 +524,13 @@ ConstrainedCheckReport2 check_constrained_chains2(const ConstrainedInput2& input
       if (record != result.bent_crossings.end()) {
         const auto& q = record->pieces;
         bool on_chains = true;
-        for (int end = 0; end < 4 && on_chains; ++end) {
-          const std::uint32_t seg = record->segments[end / 2];
-          on_chains = q[end] < P.size() && seg < input.segments.size();
+        for (int k = 0; k < 4 && on_chains; ++k) {  // the pieces' four ends
+          const std::uint32_t seg = record->segments[k / 2];
+          on_chains = q[k] < P.size() && seg < input.segments.size();
           if (!on_chains) break;
           const auto& [sa, sb] = input.segments[seg];
-          on_chains = std::binary_search(on_chain.begin(), on_chain.end(), std::pair{q[end], seg}) ||
-                      (sa < n && sb < n && within_rounding_bound_of_segment(P[q[end]], P[carrier[sa]], P[carrier[sb]]));
+          on_chains = std::binary_search(on_chain.begin(), on_chain.end(), std::pair{q[k], seg}) ||
+                      (sa < n && sb < n && within_rounding_bound_of_segment(P[q[k]], P[carrier[sa]], P[carrier[sb]]));
         }
         if (on_chains) {
           const std::optional<ExactPoint2> exact = line_intersection_exact(P[q[0]], P[q[1]], P[q[2]], P[q[3]]);

@@ -44,6 +44,14 @@ class SurfaceBuilder {
     triangle(a, b, c, outward);
     triangle(a, c, d, outward);
   }
+  // The same by corner points, numbered in a fixed order: d, c, b, a (function arguments are
+  // evaluated in an unspecified order, so quad(id(a), id(b), ...) numbered the vertices
+  // differently with gcc and clang, and the methods, whose symbolic perturbation follows the
+  // numbering, gave other counts on the same polyhedron; this is the order gcc used).
+  void quad(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& outward) {
+    const std::uint32_t id = this->id(d), ic = this->id(c), ib = this->id(b), ia = this->id(a);
+    quad(ia, ib, ic, id, outward);
+  }
   // A convex polygon in cyclic order, fanned from its first vertex (whose two edges must
   // carry no vertex other than their ends, so that no fan triangle is flat).
   void fan(const std::vector<std::uint32_t>& polygon, const Vec3& outward) {
@@ -118,7 +126,7 @@ ClosedSurface3 chazelle_polyhedron(int n, double gap) {
     for (std::size_t k = 0; k + 1 < bottom_chain.size(); ++k) {
       const auto [x0, z0] = bottom_chain[k];
       const auto [x1, z1] = bottom_chain[k + 1];
-      b.quad(b.id({x0, y, z0}), b.id({x1, y, z1}), b.id({x1, y, H}), b.id({x0, y, H}), out);
+      b.quad({x0, y, z0}, {x1, y, z1}, {x1, y, H}, {x0, y, H}, out);
     }
   }
   // Left (x = 0) and right (x = L): strips between the bottom edge and the top outline.
@@ -127,7 +135,7 @@ ClosedSurface3 chazelle_polyhedron(int n, double gap) {
     for (std::size_t k = 0; k + 1 < top_chain.size(); ++k) {
       const auto [y0, z0] = top_chain[k];
       const auto [y1, z1] = top_chain[k + 1];
-      b.quad(b.id({x, y0, 0}), b.id({x, y1, 0}), b.id({x, y1, z1}), b.id({x, y0, z0}), out);
+      b.quad({x, y0, 0}, {x, y1, 0}, {x, y1, z1}, {x, y0, z0}, out);
     }
   }
   // Bottom (z = 0): strips x in [lo, hi] between the bottom notches; the outer two carry the
@@ -163,10 +171,10 @@ ClosedSurface3 chazelle_polyhedron(int n, double gap) {
   }
   // The wedges' slopes.
   for (int i = 1; i <= n; ++i) {
-    b.quad(b.id({i - w, 0, 0}), b.id({double(i), 0, zb}), b.id({double(i), L, zb}), b.id({i - w, L, 0}), {zb, 0, -w});
-    b.quad(b.id({i + w, 0, 0}), b.id({double(i), 0, zb}), b.id({double(i), L, zb}), b.id({i + w, L, 0}), {-zb, 0, -w});
-    b.quad(b.id({0, i - w, H}), b.id({0, double(i), zt}), b.id({L, double(i), zt}), b.id({L, i - w, H}), {0, H - zt, w});
-    b.quad(b.id({0, i + w, H}), b.id({0, double(i), zt}), b.id({L, double(i), zt}), b.id({L, i + w, H}), {0, zt - H, w});
+    b.quad({i - w, 0, 0}, {double(i), 0, zb}, {double(i), L, zb}, {i - w, L, 0}, {zb, 0, -w});
+    b.quad({i + w, 0, 0}, {double(i), 0, zb}, {double(i), L, zb}, {i + w, L, 0}, {-zb, 0, -w});
+    b.quad({0, i - w, H}, {0, double(i), zt}, {L, double(i), zt}, {L, i - w, H}, {0, H - zt, w});
+    b.quad({0, i + w, H}, {0, double(i), zt}, {L, double(i), zt}, {L, i + w, H}, {0, zt - H, w});
   }
   return b.take();
 }
