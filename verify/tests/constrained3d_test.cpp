@@ -972,5 +972,84 @@ RC_GTEST_PROP(Constrained3dProperty, RandomStarShapedSurfaces, ()) {
   RC_TAG(run.result.steiner_points.total() == 0 ? "no Steiner point" : "Steiner points");
 }
 
+// The bad-input catalogue (plc_checks.hpp) at random: a random star-shaped surface with one
+// defect made in it, which every method refuses before building anything, with an InputError
+// that names the defect's category and holds its items (0-based).
+RC_GTEST_PROP(Constrained3dProperty, BadInputIsRefusedByName, ()) {
+  const auto lattice = *rc::gen::container<std::vector<std::array<int, 3>>>(
+      *rc::gen::inRange<std::size_t>(4, 40), rc::gen::container<std::array<int, 3>>(rc::gen::inRange(-100, 101)));
+  const auto factors = *rc::gen::container<std::vector<int>>(7, rc::gen::inRange(3, 17));
+  ClosedSurface3 s = random_star(lattice, factors);
+  // (elementOf draws uniformly, whatever RapidCheck's size.)
+  std::vector<std::uint32_t> faces(s.triangles.size());
+  for (std::uint32_t i = 0; i < faces.size(); ++i) faces[i] = i;
+  const std::uint32_t f = *rc::gen::elementOf(faces);
+  const int k = *rc::gen::elementOf(std::vector<int>{0, 1, 2});
+  const std::uint32_t v = s.triangles[f][k];
+  const auto added_point = static_cast<std::uint64_t>(s.points.size());
+  const auto added_face = static_cast<std::uint64_t>(s.triangles.size());
+  std::string category;
+  std::vector<std::uint64_t> named;  // items the error must hold
+  switch (*rc::gen::elementOf(std::vector<int>{0, 1, 2, 3, 4})) {
+    case 0:  // a corner of face f moved to a copy of its vertex
+      s.points.push_back(s.points[v]);
+      s.triangles[f][k] = static_cast<std::uint32_t>(added_point);
+      category = "duplicate vertex", named = {v, added_point};
+      RC_TAG("duplicate vertex");
+      break;
+    case 1:  // face f with a repeated vertex
+      s.triangles[f][(k + 1) % 3] = v;
+      category = "degenerate face", named = {f};
+      RC_TAG("degenerate face");
+      break;
+    case 2:  // face f twice, the second turned the other way
+      s.triangles.push_back({s.triangles[f][0], s.triangles[f][2], s.triangles[f][1]});
+      category = "duplicate face", named = {f, added_face};
+      RC_TAG("duplicate face");
+      break;
+    case 3:  // face f removed: its three edges are free
+      named = {s.triangles[f][0], s.triangles[f][1], s.triangles[f][2]};
+      s.triangles.erase(s.triangles.begin() + f);
+      category = "open";
+      RC_TAG("open surface");
+      break;
+    default: {  // vertex v moved onto the midpoint of an edge of a face g without it (exact:
+                // integer corners), where its faces meet g improperly
+      std::vector<std::uint32_t> others;
+      for (std::uint32_t i = 0; i < s.triangles.size(); ++i)
+        if (s.triangles[i][0] != v && s.triangles[i][1] != v && s.triangles[i][2] != v) others.push_back(i);
+      const auto& g = s.triangles[*rc::gen::elementOf(others)];
+      const Vec3 a = s.points[g[0]], b = s.points[g[1]];
+      s.points[v] = {(a.x + b.x) / 2, (a.y + b.y) / 2, (a.z + b.z) / 2};
+      // Where that makes a duplicate vertex or a flat face, those come first: not this case.
+      const PlcReport report = inspect_plc(s.points, s.triangles);
+      RC_PRE(report.duplicate_vertices.empty() && report.degenerate_faces.empty());
+      category = "intersects itself";
+      RC_TAG("self-intersection");
+      break;
+    }
+  }
+  for (const auto& method : constrained3d_methods()) {
+    try {
+      constrained3d({.points = s.points, .triangles = s.triangles, .triangle_refs = {}, .holes = {}, .regions = {}},
+                    {.method = std::string(method.name)});
+      RC_FAIL(std::string(method.name) + " accepted a surface with a " + category);
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      RC_ASSERT(what.find(category) != std::string::npos);
+      for (const std::uint64_t item : named)
+        RC_ASSERT(std::find(e.items().begin(), e.items().end(), item) != e.items().end());
+      if (category == "intersects itself") {  // some named pair holds a face of the moved vertex
+        bool found = false;
+        for (const std::uint64_t face : e.items()) {
+          const auto& t = s.triangles[face];
+          found = found || t[0] == v || t[1] == v || t[2] == v;
+        }
+        RC_ASSERT(found);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace dtlab
