@@ -19,11 +19,15 @@ foreach(f "0 2 1" "1 2 3" "4 5 6" "5 7 6" "0 1 4" "1 5 4" "2 6 3" "3 6 7" "0 4 2
   string(APPEND cube_faces_8 "${line}\n")
 endforeach()
 
-# Schönhardt's twisted prism (data/schonhardt.off, twist 30 degrees): its corners and its 8
-# faces, outward, as OFF lines; no tetrahedralization without Steiner points.
-string(CONCAT schonhardt_vertices "1 0 0\n-0.5 0.8660254037844386 0\n-0.5 -0.8660254037844386 0\n"
-                                  "0.8660254037844387 0.5 1\n-0.8660254037844386 0.5 1\n0 -1 1\n")
-set(schonhardt_faces "3 0 2 1\n3 3 4 5\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 2 0 3\n3 2 3 5\n")
+# Schönhardt's twisted prism (twist 30 degrees; no tetrahedralization without Steiner points),
+# read from the bundled data/schonhardt.off: its 6 corners and its 8 faces, outward, as OFF lines.
+file(STRINGS "${CMAKE_CURRENT_LIST_DIR}/../../../data/schonhardt.off" schonhardt_rows ENCODING UTF-8 REGEX "^[^#]")
+list(SUBLIST schonhardt_rows 2 6 schonhardt_corner_rows)
+list(SUBLIST schonhardt_rows 8 8 schonhardt_face_rows)
+list(JOIN schonhardt_corner_rows "\n" schonhardt_vertices)
+list(JOIN schonhardt_face_rows "\n" schonhardt_faces)
+string(APPEND schonhardt_vertices "\n")
+string(APPEND schonhardt_faces "\n")
 
 # Last stdout line as JSON; sets the named fields.
 macro(read_json)
