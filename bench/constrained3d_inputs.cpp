@@ -1,6 +1,7 @@
 // constrained3d_inputs OUTDIR: writes the Schönhardt family as OFF surfaces (outward triangles),
 // the inputs of scripts/bench_constrained3d.py that no file ships: Schönhardt's polyhedron at
-// three twists, twisted n-gonal prisms, a stack of twisted prisms and Chazelle's polyhedron
+// three twists, twisted n-gonal prisms, a stack of twisted prisms, Bagemihl polyhedra and
+// Chazelle's polyhedron
 // (algorithms/constrained3d/schonhardt.hpp). Prints one file name per line.
 #include <cstdio>
 #include <exception>
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
       write(dir, "twisted_prism_" + std::to_string(sides),
             dtlab::twisted_prism({.sides = sides, .twist_degrees = 90.0 / sides}));
     write(dir, "prism_stack_3x3", dtlab::twisted_prism({.sides = 3, .twist_degrees = 30, .layers = 3}));
+    for (const int n : {7, 16, 40}) write(dir, "bagemihl_" + std::to_string(n), dtlab::bagemihl_polyhedron(n));
     for (const int n : {2, 4, 8}) write(dir, "chazelle_" + std::to_string(n), dtlab::chazelle_polyhedron(n));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "constrained3d_inputs: %s\n", e.what());

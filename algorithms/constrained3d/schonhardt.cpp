@@ -1,11 +1,12 @@
 // Generators of the Schönhardt family (schonhardt.hpp): twisted prisms and their stacks
-// (Schönhardt 1928; Rambau 2005) and Chazelle's notched box (Chazelle 1984; book §3.5).
+// (Schönhardt 1928; Rambau 2005), Bagemihl polyhedra and Chazelle's notched box (Chazelle 1984; book §3.5).
 #include "algorithms/constrained3d/schonhardt.hpp"
 
 #include <cmath>
 #include <algorithm>
 #include <map>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 
@@ -101,6 +102,52 @@ ClosedSurface3 twisted_prism(const TwistedPrismOptions& o) {
 
 ClosedSurface3 schonhardt_polyhedron(double twist_degrees) {
   return twisted_prism({.sides = 3, .twist_degrees = twist_degrees});
+}
+
+ClosedSurface3 bagemihl_polyhedron(int vertices, double twist_degrees, double bend) {
+  if (vertices < 6) throw InputError("Bagemihl polyhedron: needs at least 6 vertices, got " + std::to_string(vertices));
+  if (!(twist_degrees > 0 && twist_degrees < 60))
+    throw InputError("Bagemihl polyhedron: the twist must be in (0, 60) degrees, got " + std::to_string(twist_degrees));
+  if (!(bend > 0 && bend <= 0.5))
+    throw InputError("Bagemihl polyhedron: the bend must be in (0, 1/2], got " + std::to_string(bend));
+  ClosedSurface3 s = schonhardt_polyhedron(twist_degrees);
+  // twisted_prism's ids: b_k = k, t_k = 3 + k. The two triangles at the side edge b_2 t_2 are
+  // (b_1, b_2, t_2) and (b_2, t_0, t_2) (sides 1 and 2, reflex diagonals).
+  constexpr std::uint32_t b1 = 1, b2 = 2, t0 = 3, t2 = 5;
+  const auto find = [&s](std::uint32_t p, std::uint32_t q, std::uint32_t r) {  // any rotation of (p, q, r)
+    for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+      const auto& t = s.triangles[i];
+      for (int k = 0; k < 3; ++k)
+        if (t[k] == p && t[(k + 1) % 3] == q && t[(k + 2) % 3] == r) return i;
+    }
+    throw std::logic_error("bagemihl_polyhedron: a triangle of Schönhardt's polyhedron is not where expected");
+  };
+  const std::size_t i1 = find(b1, b2, t2), i2 = find(t0, t2, b2);
+  const Vec3 a = s.points[b2], c = s.points[t2];
+  const Vec3 e{c.x - a.x, c.y - a.y, c.z - a.z};
+  const Vec3 mid{(a.x + c.x) / 2, (a.y + c.y) / 2, (a.z + c.z) / 2};
+  const auto unit = [](Vec3 v) {
+    const double l = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    return Vec3{v.x / l, v.y / l, v.z / l};
+  };
+  const Vec3 u = unit({-mid.x, -mid.y, 0.5 - mid.z});
+  const Vec3 w = unit({e.y * u.z - e.z * u.y, e.z * u.x - e.x * u.z, e.x * u.y - e.y * u.x});
+  const int m = vertices - 6;
+  std::vector<std::uint32_t> chain{b2};  // b_2, c_1, .., c_m, t_2
+  for (int j = 1; j <= m; ++j) {
+    const double t = double(j) / (m + 1), p = bend * 4 * t * (1 - t), q = bend * t * (1 - t) * (2 * t - 1);
+    chain.push_back(static_cast<std::uint32_t>(s.points.size()));
+    s.points.push_back({a.x + t * e.x + p * u.x + q * w.x, a.y + t * e.y + p * u.y + q * w.y,
+                        a.z + t * e.z + p * u.z + q * w.z});
+  }
+  chain.push_back(t2);
+  // (b_1, b_2, t_2) becomes the fan from b_1 over the chain, (b_2, t_0, t_2) = (t_0, t_2, b_2)
+  // the fan from t_0 over it backwards: the orientation of each is kept.
+  s.triangles.erase(s.triangles.begin() + static_cast<std::ptrdiff_t>(std::max(i1, i2)));
+  s.triangles.erase(s.triangles.begin() + static_cast<std::ptrdiff_t>(std::min(i1, i2)));
+  for (std::size_t k = 0; k + 1 < chain.size(); ++k) s.triangles.push_back({b1, chain[k], chain[k + 1]});
+  for (std::size_t k = chain.size() - 1; k > 0; --k) s.triangles.push_back({t0, chain[k], chain[k - 1]});
+  return s;
 }
 
 ClosedSurface3 chazelle_polyhedron(int n, double gap) {

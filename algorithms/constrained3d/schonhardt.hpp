@@ -1,7 +1,8 @@
 // The Schönhardt family of polyhedra that cannot be tetrahedralized without Steiner points
-// (book §3.5; Schönhardt 1928, Rambau 2005 for twisted prisms, Chazelle 1984 for the Θ(n²)
-// lower bound), each as a closed triangulated surface: points and triangles, counter-clockwise
-// seen from outside (outward normals), every coordinate a double.
+// (book §3.5; Schönhardt 1928, Rambau 2005 for twisted prisms, Bagemihl 1948 for every number
+// of vertices, Chazelle 1984 for the Θ(n²) lower bound), each as a closed triangulated
+// surface: points and triangles, counter-clockwise seen from outside (outward normals), every
+// coordinate a double.
 //
 // Twisted n-gonal prism (n >= 3), drawn once:
 //
@@ -54,6 +55,28 @@ ClosedSurface3 twisted_prism(const TwistedPrismOptions& options);
 
 // Schönhardt's polyhedron: twisted_prism with 3 sides, one layer, ReflexDiagonal.
 ClosedSurface3 schonhardt_polyhedron(double twist_degrees);
+
+// A Bagemihl polyhedron: for every n >= 6, a polyhedron with n vertices on which no
+// tetrahedron lies inside it, so it has no tetrahedralization without Steiner points
+// (Bagemihl 1948 showed such polyhedra exist for every n; his own coordinates were not at hand,
+// so the construction is ours). Schönhardt's polyhedron (twist θ) with its convex side edge
+// b_2 t_2 replaced by a chain of m = n - 6 points bent into the solid:
+//
+//   c_j = b_2 + s (t_2 - b_2) + bend 4 s (1 - s) u + bend s (1 - s) (2 s - 1) w,  s = j / (m + 1)
+//
+// u: the unit vector from the edge's midpoint to the axis point (0, 0, 1/2); w: the unit normal
+// of the plane of the edge and u. The curve is an affine image of (s, s², s³), so no four of
+// b_2, c_1..c_m, t_2 are coplanar (the exhaustive search needs that). The surface's graph is a
+// bipyramid over the (n-2)-gon b_0 b_2 c_1..c_m t_2 t_1 with apexes b_1 and t_0 (the two
+// triangles at b_2 t_2 become fans from them): it has no K4, so a tetrahedron inside would need
+// a segment between two non-adjacent vertices inside, and every such segment leaves the solid:
+// the chain's dents push the chords between its points out, and the twist keeps the segments
+// from a chain point to b_0 and t_1 out as it keeps b_0 t_2 and b_2 t_1 out. Checked exactly
+// for n = 6..16 (verify/tests/constrained3d_test.cpp: no tetrahedron on the vertices inside);
+// the margins shrink like 1/n, and the bend must shrink with a small twist (at 5 degrees 0.05
+// keeps the property up to n = 16 and 0.1 does not). Vertex ids: Schönhardt's 0..5 (twisted_prism's), then c_1..c_m.
+// Throws InputError for n < 6, a twist outside (0, 60) degrees or a bend outside (0, 1/2].
+ClosedSurface3 bagemihl_polyhedron(int vertices, double twist_degrees = 30, double bend = 0.1);
 
 // Chazelle's polyhedron with n notches on each side: the box [0, n+1] x [0, n+1] x [0, 4]
 // with n wedges cut from the bottom (edges parallel to y at x = 1..n, tips at height

@@ -60,6 +60,12 @@ TEST(Schonhardt, GeneratorsGiveValidOutwardSurfaces) {
       expect_valid_surface(twisted_prism({.sides = n, .twist_degrees = 100.0 / n, .layers = layers}));
   expect_valid_surface(twisted_prism({.sides = 3, .twist_degrees = 20, .offset = {1e6, -1e6, 1e6}}));
   for (const int n : {1, 2, 3, 5}) expect_valid_surface(chazelle_polyhedron(n));
+  for (const int n : {6, 7, 8, 12, 16, 40}) {
+    const auto b = bagemihl_polyhedron(n);
+    expect_valid_surface(b);
+    EXPECT_EQ(b.points.size(), std::size_t(n));
+    EXPECT_EQ(b.triangles.size(), std::size_t(2 * n - 4));
+  }
   const auto s = schonhardt_polyhedron(30);
   EXPECT_EQ(s.points.size(), 6u);
   EXPECT_EQ(s.triangles.size(), 8u);
@@ -84,6 +90,11 @@ TEST(Schonhardt, GeneratorsRefuseBadParameters) {
   EXPECT_THROW(twisted_prism({.radius = 0}), InputError);
   EXPECT_THROW(chazelle_polyhedron(0), InputError);
   EXPECT_THROW(chazelle_polyhedron(2, 0.3), InputError);
+  EXPECT_THROW(bagemihl_polyhedron(5), InputError);
+  EXPECT_THROW(bagemihl_polyhedron(8, 60), InputError);
+  EXPECT_THROW(bagemihl_polyhedron(8, 0), InputError);
+  EXPECT_THROW(bagemihl_polyhedron(8, 30, 0), InputError);
+  EXPECT_THROW(bagemihl_polyhedron(8, 30, 0.75), InputError);
 }
 
 TEST(Schonhardt, NoTetrahedralizationWithoutSteinerPoints) {
@@ -144,6 +155,41 @@ TEST(Schonhardt, TwistedSquarePrismAndStacksHaveNoTetrahedralization) {
     const auto s = twisted_prism({.sides = 3, .twist_degrees = twist, .layers = 2});
     EXPECT_FALSE(find_tetrahedralization_without_steiner(s.points, s.triangles).exists) << twist;
   }
+}
+
+// Bagemihl's property, stronger than having no tetrahedralization: not one tetrahedron on the
+// vertices lies inside (candidates: every four vertices, exactly). Its own witness first: with
+// six vertices it is Schönhardt's polyhedron.
+TEST(Schonhardt, BagemihlPolyhedraHaveNoTetrahedronInside) {
+  for (const int n : {6, 7, 8, 9, 10, 12, 16}) {
+    const auto s = bagemihl_polyhedron(n);
+    const auto r = find_tetrahedralization_without_steiner(s.points, s.triangles);
+    EXPECT_EQ(r.candidates, 0u) << n << " vertices";
+    EXPECT_FALSE(r.exists) << n << " vertices";
+  }
+  for (const double twist : {15.0, 45.0, 55.0}) {
+    const auto s = bagemihl_polyhedron(9, twist);
+    EXPECT_EQ(find_tetrahedralization_without_steiner(s.points, s.triangles).candidates, 0u) << twist;
+  }
+  {
+    const auto s = bagemihl_polyhedron(10, 5, 0.05);
+    EXPECT_EQ(find_tetrahedralization_without_steiner(s.points, s.triangles).candidates, 0u);
+  }
+  // The witness that the dents matter: the same chain bent out of the solid (each point
+  // mirrored through its place on the straight edge b_2 t_2) lets tetrahedra in.
+  auto bulged = bagemihl_polyhedron(9);
+  const Vec3 a = bulged.points[2], c = bulged.points[5];
+  for (std::size_t i = 6; i < bulged.points.size(); ++i) {
+    const double t = double(i - 5) / 4;  // c_1..c_3 at s = 1/4, 1/2, 3/4
+    const Vec3 p = bulged.points[i];
+    bulged.points[i] = {2 * (a.x + t * (c.x - a.x)) - p.x, 2 * (a.y + t * (c.y - a.y)) - p.y,
+                        2 * (a.z + t * (c.z - a.z)) - p.z};
+  }
+  ASSERT_NO_THROW(check_plc(bulged.points, bulged.triangles));
+  const auto r = find_tetrahedralization_without_steiner(bulged.points, bulged.triangles);
+  std::printf("Bagemihl's 9 vertices with the chain bulged out: %zu tetrahedra inside, tetrahedralization %s\n",
+              r.candidates, r.exists ? "found" : "none");
+  EXPECT_GT(r.candidates, 0u);
 }
 
 TEST(Schonhardt, SearchRefusesWhenItWouldBeIncomplete) {
@@ -308,6 +354,21 @@ TEST(Constrained3d, Chazelle) {
     // a hull edge on the top was split again and again).
     EXPECT_TRUE(recovered.result.messages.empty()) << recovered.result.messages.front();
     EXPECT_LE(recovered.result.steiner_points.total(), 15u * n * n);
+  }
+}
+
+TEST(Constrained3d, Bagemihl) {
+  for (const int n : {7, 10, 16, 40}) {
+    const auto s = bagemihl_polyhedron(n);
+    const auto run = run_and_check(s);
+    const auto recovered = run_and_check(s, "recover");
+    const auto cdt = run_and_check(s, "cdt");
+    std::printf("Bagemihl %d vertices: Steiner points conforming %u, recover %u, cdt %u\n", n,
+                run.result.steiner_points.total(), recovered.result.steiner_points.total(),
+                cdt.result.steiner_points.total());
+    EXPECT_GT(recovered.result.steiner_points.total(), 0u);  // none is possible without (above)
+    EXPECT_GT(cdt.result.steiner_points.total(), 0u);
+    EXPECT_EQ(run.result.region_count, 1u);
   }
 }
 
