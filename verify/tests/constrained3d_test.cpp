@@ -932,6 +932,31 @@ RC_GTEST_PROP(Constrained3dProperty, SchonhardtFamilyAtRandomTwistsScalesAndOffs
   RC_TAG(layers == 1 ? "one prism" : "stack");
 }
 
+// Bagemihl polyhedra at random: 6 to 24 vertices, twists in [15, 55] degrees, bends in
+// [0.05, 0.15], scaled by a power of two and moved off the origin (each coordinate rounded
+// once: the surface stays valid, which is asserted); every method, every exact check.
+RC_GTEST_PROP(Constrained3dProperty, BagemihlPolyhedraAtRandom, ()) {
+  const int n = *rc::gen::inRange(6, 25);
+  const double twist = *rc::gen::inRange(15, 56);
+  const double bend = *rc::gen::inRange(5, 16) / 100.0;
+  const double scale = std::ldexp(1.0, *rc::gen::inRange(-8, 9));
+  const double shift = *rc::gen::elementOf(std::vector<double>{0.0, 1024.0, -65536.0});
+  ClosedSurface3 s = bagemihl_polyhedron(n, twist, bend);
+  for (Vec3& p : s.points) p = {p.x * scale + shift, p.y * scale - shift / 2, p.z * scale + shift / 4};
+  RC_ASSERT(exact_volume6(s.points, s.triangles).sign() == Sign::Positive);
+  for (const auto& m : constrained3d_methods()) {
+    try {
+      const CheckedRun run = run_and_check(s, std::string(m.name), {}, {}, 20);
+      RC_ASSERT(!::testing::Test::HasFailure());
+      RC_ASSERT(run.result.region_count == 1u);
+    } catch (const InputError& e) {
+      RC_ASSERT(std::string(e.what()).find("limit") != std::string::npos);
+      RC_ASSERT(e.items().size() == 1u);
+      RC_TAG("Steiner limit reached");
+    }
+  }
+}
+
 // Boxes with internal faces at random: [0, W] x [0, D] x [0, H] cut into slabs by k internal
 // walls x = x_1 < ... < x_k, every side quadrilateral split by a random diagonal, the whole
 // scaled by a power of two and moved off the origin (dyadic coordinates, so all exact). Every
