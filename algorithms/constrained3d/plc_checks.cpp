@@ -131,6 +131,29 @@ std::string list_items(const std::vector<T>& items, Show show) {
   return s.str();
 }
 
+// Coplanar faces a and b (projected: A, B), sharing at most one vertex: true when the line of an
+// edge of a holds every shared vertex and has b's other vertices strictly on its outer side, so
+// that a and b meet at most at the shared vertex (most coplanar neighbours on a flat face are
+// told apart so, with three orient2d per edge, before the segment tests).
+bool separated_by_an_edge2(const std::array<Vec2, 3>& A, const std::array<Vec2, 3>& B, const Face3& a,
+                           const Face3& b) noexcept {
+  const Sign inner = orient2d(A[0], A[1], A[2]);
+  for (int k = 0; k < 3; ++k) {
+    bool separates = true;
+    for (int j = 0; j < 3 && separates; ++j) {
+      if (b[j] == a[k] || b[j] == a[(k + 1) % 3]) continue;  // shared, on this edge's line
+      if (b[j] == a[(k + 2) % 3]) {
+        separates = false;  // shared, off this edge's line
+        continue;
+      }
+      const Sign s = orient2d(A[k], A[(k + 1) % 3], B[j]);
+      separates = s != Sign::Zero && s != inner;
+    }
+    if (separates) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 bool faces_intersect_improperly(std::span<const Vec3> P, const Face3& f, const Face3& g) noexcept {
@@ -172,6 +195,7 @@ bool faces_intersect_improperly(std::span<const Vec3> P, const Face3& f, const F
     const int axis = projection_axis(P[f[0]], P[f[1]], P[f[2]]);
     std::array<Vec2, 3> F, G;
     for (int k = 0; k < 3; ++k) F[k] = project(P[f[k]], axis), G[k] = project(P[g[k]], axis);
+    if (separated_by_an_edge2(F, G, f, g) || separated_by_an_edge2(G, F, g, f)) return false;
     // An edge of one (the one opposite the shared vertex, if any) meets the other.
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t p = f[k], q = f[(k + 1) % 3];

@@ -307,6 +307,9 @@ FilteredSign decide(const Differences<N>& diff, const double (&r)[N], double (*p
 }  // namespace
 
 FilteredSign orient2d_adaptive(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
+  // Three points on a line x or y = const: a column of differences is zero, D = 0 exactly (as
+  // orient3d below; the projections of axis-aligned faces are full of them).
+  if ((a.x == b.x && a.x == c.x) || (a.y == b.y && a.y == c.y)) return Sign::Zero;
   Differences<4> diff;
   const double r[4] = {diff(b.x, a.x), diff(b.y, a.y), diff(c.x, a.x), diff(c.y, a.y)};
   return decide(
@@ -317,6 +320,11 @@ FilteredSign orient2d_adaptive(const Vec2& a, const Vec2& b, const Vec2& c) noex
 }
 
 FilteredSign orient3d_adaptive(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  // One coordinate equal in all four points (a plane x, y or z = const: every flat face of an
+  // axis-aligned part) makes a column of differences zero exactly: D = 0 with no arithmetic.
+  if ((a.x == b.x && a.x == c.x && a.x == d.x) || (a.y == b.y && a.y == c.y && a.y == d.y) ||
+      (a.z == b.z && a.z == c.z && a.z == d.z))
+    return Sign::Zero;
   Differences<9> diff;
   const double r[9] = {diff(b.x, a.x), diff(b.y, a.y), diff(b.z, a.z),  // rows b - a,
                        diff(c.x, a.x), diff(c.y, a.y), diff(c.z, a.z),  // c - a,

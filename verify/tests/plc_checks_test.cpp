@@ -136,6 +136,26 @@ TEST(PlcChecks, TouchingCases) {
   EXPECT_TRUE(bad({0, 1, 2}, {1, 8, 2}) == false);  // shares edge 1-2, on the other side
 }
 
+// Coplanar neighbours on a flat face, where an edge line of one separates most pairs before any
+// segment test: the cases where it must not (a vertex on an edge, overlaps) and where a shared
+// vertex or a collinear vertex beyond an edge leaves the line unable to separate strictly.
+TEST(PlcChecks, CoplanarNeighboursOnAFlatFace) {
+  Surface s;
+  s.points = {{0, 0, 5}, {4, 0, 5}, {0, 4, 5}, {2, 0, 5}, {3, -2, 5}, {1, -2, 5}, {6, 0, 5},
+              {8, 0, 5}, {7, 3, 5}, {-1, -1, 5}, {-2, 1, 5}, {1, 1, 5}, {5, 1, 5}, {1, -1, 5}};
+  const auto bad = [&](Face3 f, Face3 g) {
+    const bool r = faces_intersect_improperly(s.points, f, g);
+    EXPECT_EQ(faces_intersect_improperly(s.points, g, f), r);
+    return r;
+  };
+  EXPECT_TRUE(bad({0, 1, 2}, {3, 4, 5}));    // a vertex on the other's edge (a T-junction)
+  EXPECT_FALSE(bad({0, 1, 2}, {6, 7, 8}));   // disjoint, on the extension of an edge
+  EXPECT_FALSE(bad({0, 1, 2}, {0, 9, 10}));  // a shared vertex only
+  EXPECT_FALSE(bad({0, 1, 2}, {1, 6, 4}));   // a shared vertex, the other's edge along the line
+  EXPECT_TRUE(bad({0, 1, 2}, {0, 13, 11}));  // a shared vertex and an overlap
+  EXPECT_TRUE(bad({0, 1, 2}, {12, 11, 8}));  // an edge crossing the other's interior
+}
+
 TEST(PlcChecks, DuplicatesAndDegenerateFaces) {
   Surface s = cube();
   s.points.push_back(s.points[7]);  // vertex 9 = vertex 8

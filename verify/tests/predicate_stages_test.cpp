@@ -153,6 +153,31 @@ TEST(Stage2, DecidesExactZeroWithLongMantissas) {
   EXPECT_TRUE(stage::insphere_adaptive(o, x, y, z, off));
 }
 
+// Four points in a plane x, y or z = const (the flat faces of axis-aligned parts), three on a
+// line x or y = const, with long mantissas whose differences round: stage 2 decides the zero from
+// the equal coordinate; one ulp off the plane it returns the exact sign (or defers).
+TEST(Stage2, DecidesZeroInACoordinatePlane) {
+  const double z = 0.1, u = 1e10 + 0.3, v = 3.7e-5, w = -2.2e7 + 0.77;
+  const Vec3 a{u, v, z}, b{w, 0.123456789, z}, c{v, w, z}, d{u + 0.5, -w, z};
+  ASSERT_EQ(reference::orient3d(a, b, c, d), Sign::Zero);
+  EXPECT_FALSE(stage::orient3d_semistatic(a, b, c, d));
+  EXPECT_EQ(stage::orient3d_adaptive(a, b, c, d), Sign::Zero);
+  const Vec3 ax{z, u, v}, bx{z, w, 0.123456789}, cx{z, v, w}, dx{z, u + 0.5, -w};  // x = const
+  EXPECT_EQ(stage::orient3d_adaptive(ax, bx, cx, dx), Sign::Zero);
+  EXPECT_EQ(orient3d(ax, bx, cx, dx), Sign::Zero);
+  const Vec2 p{v, z}, q{w, z}, r{u, z}, px{z, v}, qx{z, w}, rx{z, u};  // a line y or x = const
+  ASSERT_EQ(reference::orient2d(p, q, r), Sign::Zero);
+  EXPECT_EQ(stage::orient2d_adaptive(p, q, r), Sign::Zero);
+  EXPECT_EQ(stage::orient2d_adaptive(px, qx, rx), Sign::Zero);
+  const Vec3 off{d.x, d.y, std::nextafter(z, 1.0)};
+  const Sign want = reference::orient3d(a, b, c, off);
+  ASSERT_NE(want, Sign::Zero);
+  if (const auto got = stage::orient3d_adaptive(a, b, c, off)) {
+    EXPECT_EQ(*got, want);
+  }
+  EXPECT_EQ(orient3d(a, b, c, off), want);
+}
+
 // Nonzero but tiny determinants with exact differences: stage 2 returns the exact sign.
 TEST(Stage2, DecidesNearlyDegenerateWithExactDifferences) {
   const double big = 0x1p30;
