@@ -5,6 +5,7 @@
 #include <map>
 
 #include "kernel/predicates.hpp"
+#include "mesh/facet_table.hpp"
 
 namespace dtlab {
 
@@ -12,10 +13,10 @@ using T3 = Tetrahedralization3;
 
 TetrahedronComponents tetrahedron_components(const Tetrahedralization3& mesh,
                                              std::span<const std::array<std::uint32_t, 3>> walls) {
-  std::vector<std::array<std::uint32_t, 3>> wall(walls.begin(), walls.end());  // sorted triples, sorted
-  for (auto& w : wall) std::sort(w.begin(), w.end());
-  std::sort(wall.begin(), wall.end());
-  const auto is_wall = [&](const std::array<std::uint32_t, 3>& f) { return std::binary_search(wall.begin(), wall.end(), f); };
+  FacetTable wall;  // a hash table: a binary search of sorted triples was most of the time
+  for (std::uint32_t k = 0; k < walls.size(); ++k)
+    if (wall.find(FacetTable::key(walls[k][0], walls[k][1], walls[k][2])) == FacetTable::kAbsent)
+      wall.take_or_insert(FacetTable::key(walls[k][0], walls[k][1], walls[k][2]), k);
   TetrahedronComponents c;
   const std::size_t n = mesh.tetrahedron_count();
   c.component.assign(n, T3::kNone);
@@ -33,9 +34,8 @@ TetrahedronComponents tetrahedron_components(const Tetrahedralization3& mesh,
       for (std::uint32_t i = 0; i < 4; ++i) {
         const std::uint32_t u = mesh.adjacent(t, i);
         if (c.component[u] != T3::kNone) continue;
-        auto f = mesh.facet_vertices(T3::facet(t, i));
-        std::sort(f.begin(), f.end());
-        if (is_wall(f)) continue;
+        const auto f = mesh.facet_vertices(T3::facet(t, i));
+        if (wall.find(FacetTable::key(f[0], f[1], f[2])) != FacetTable::kAbsent) continue;
         c.component[u] = id;
         queue.push_back(u);
       }

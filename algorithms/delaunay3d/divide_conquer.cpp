@@ -26,13 +26,13 @@
 #include <utility>
 #include <vector>
 
-#include "algorithms/delaunay3d/divide_conquer_facets.hpp"
 #include "algorithms/delaunay3d/divide_conquer_search.hpp"
 #include "algorithms/delaunay3d/divide_conquer_start.hpp"
 #include "algorithms/delaunay3d/prepare.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/facet_table.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
 namespace dtlab {
@@ -42,7 +42,7 @@ namespace {
 using T3 = Tetrahedralization3;
 using dewall::KdNode;
 using dewall::KdTree;
-using dewall::OpenFacets;
+using OpenFacets = FacetTable;
 constexpr std::uint32_t kInf = T3::kInfinite;
 constexpr std::uint32_t kNone = T3::kNone;
 constexpr auto kFacet = T3::kFacetVertex;

@@ -1,6 +1,7 @@
-// The open facets of variant "divide-conquer" (DeWall's active face list, as a hash table): every
-// facet of a built tetrahedron whose other side is not built yet, keyed by its three vertices.
-// Open addressing with linear probing and backward-shift deletion: no allocation per facet.
+// A hash table from facets (three vertex ids, in any order) to a 32-bit value: DeWall's active
+// face list in variant "divide-conquer" (the open facets of the built tetrahedra, each with its
+// handle), the walls between regions of a constrained tetrahedralization. Open addressing with
+// linear probing and backward-shift deletion: no allocation per facet.
 #pragma once
 
 #include <array>
@@ -9,9 +10,9 @@
 
 #include "kernel/error.hpp"
 
-namespace dtlab::dewall {
+namespace dtlab {
 
-class OpenFacets {
+class FacetTable {
  public:
   static constexpr std::uint32_t kAbsent = 0xFFFFFFFFu;
   using Key = std::array<std::uint32_t, 3>;  // sorted vertex ids
@@ -23,11 +24,11 @@ class OpenFacets {
     return {a, b, c};
   }
 
-  OpenFacets() { rehash(1024); }
+  FacetTable() { rehash(1024); }
 
   std::size_t size() const noexcept { return size_; }
 
-  // If `k` is open, removes it and returns its facet handle; else records it with `handle` and
+  // If `k` is in the table, removes it and returns its value; else records it with `handle` and
   // returns kAbsent.
   std::uint32_t take_or_insert(const Key& k, std::uint32_t handle) {
     std::size_t i = home(k);
@@ -44,10 +45,20 @@ class OpenFacets {
         return found;
       }
     }
-    throw InternalError("divide-conquer 3D Delaunay: open facet table full");
+    throw InternalError("facet table full");
   }
 
-  // Removes `k`, which must be open.
+  // The value of `k`, kAbsent if it is not in the table.
+  std::uint32_t find(const Key& k) const noexcept {
+    std::size_t i = home(k);
+    for (std::size_t probes = 0; probes <= mask_; ++probes, i = (i + 1) & mask_) {
+      if (slots_[i].handle == kAbsent) break;
+      if (same(slots_[i].key, k)) return slots_[i].handle;
+    }
+    return kAbsent;
+  }
+
+  // Removes `k`, which must be in the table.
   void erase(const Key& k) {
     std::size_t i = home(k);
     for (std::size_t probes = 0; probes <= mask_; ++probes, i = (i + 1) & mask_) {
@@ -57,7 +68,7 @@ class OpenFacets {
         return;
       }
     }
-    throw InternalError("divide-conquer 3D Delaunay: closing a facet that is not open");
+    throw InternalError("facet table: erasing a facet that is not there");
   }
 
  private:
@@ -107,4 +118,4 @@ class OpenFacets {
   std::size_t size_ = 0;
 };
 
-}  // namespace dtlab::dewall
+}  // namespace dtlab
