@@ -169,8 +169,9 @@ std::string recover_in_place(Constrained3dContext& c) {
                std::to_string(c.edges[split.edge].b + 1) + " lands on another constraint or the hull";
     }
     if (added == 0 && !splits.empty()) continue;  // every piece was made meanwhile: look again
-    for (const ConstraintEdge3& e : c.edges)
-      for (std::size_t i = 0; i + 1 < e.chain.size(); ++i) recovery.protect_edge(e.chain[i], e.chain[i + 1]);
+    for (const ConstraintEdge3& e : c.edges)  // the new pieces (an edge never split is protected already)
+      if (e.chain.size() > 2)
+        for (std::size_t i = 0; i + 1 < e.chain.size(); ++i) recovery.protect_edge(e.chain[i], e.chain[i + 1]);
   }
   c.edge_seconds += seconds(start);
   start = Clock::now();
