@@ -903,6 +903,24 @@ TEST(Constrained3dTiming, DISABLED_LargerInputs) {
   time("star-shaped, 5000 points", random_star(lattice, {31, 32, 33, 32, 31, 33, 32}));
 }
 
+// A positively oriented surface with one region, run and checked by every method with a
+// Steiner limit of 20 (run_and_check): each passes every exact check, or ends with the limit's
+// InputError naming one triangle (counted by a tag).
+void every_method_passes_or_hits_the_limit(const ClosedSurface3& s) {
+  RC_ASSERT(exact_volume6(s.points, s.triangles).sign() == Sign::Positive);
+  for (const auto& m : constrained3d_methods()) {
+    try {
+      const CheckedRun run = run_and_check(s, std::string(m.name), {}, {}, 20);
+      RC_ASSERT(!::testing::Test::HasFailure());
+      RC_ASSERT(run.result.region_count == 1u);
+    } catch (const InputError& e) {
+      RC_ASSERT(std::string(e.what()).find("limit") != std::string::npos);
+      RC_ASSERT(e.items().size() == 1u);
+      RC_TAG("Steiner limit reached");
+    }
+  }
+}
+
 // The Schönhardt family at random: twisted n-gonal prisms (3 to 8 sides) and stacks of up to
 // three, at any twist in (0, 180/n) degrees (the side diagonals reflex), scaled by powers of two
 // and moved off the origin; every method, every exact check (run_and_check). Thin or flat
@@ -917,18 +935,7 @@ RC_GTEST_PROP(Constrained3dProperty, SchonhardtFamilyAtRandomTwistsScalesAndOffs
   const double shift = *rc::gen::elementOf(std::vector<double>{0.0, 1024.0, -65536.0}) * std::max(radius, 1.0);
   const ClosedSurface3 s = twisted_prism({.sides = sides, .twist_degrees = twist, .layers = layers, .radius = radius,
                                           .layer_height = height, .offset = {shift, -shift / 2, shift / 4}});
-  RC_ASSERT(exact_volume6(s.points, s.triangles).sign() == Sign::Positive);
-  for (const auto& m : constrained3d_methods()) {
-    try {
-      const CheckedRun run = run_and_check(s, std::string(m.name), {}, {}, 20);
-      RC_ASSERT(!::testing::Test::HasFailure());
-      RC_ASSERT(run.result.region_count == 1u);
-    } catch (const InputError& e) {
-      RC_ASSERT(std::string(e.what()).find("limit") != std::string::npos);
-      RC_ASSERT(e.items().size() == 1u);
-      RC_TAG("Steiner limit reached");
-    }
-  }
+  every_method_passes_or_hits_the_limit(s);
   RC_TAG(layers == 1 ? "one prism" : "stack");
 }
 
@@ -943,18 +950,7 @@ RC_GTEST_PROP(Constrained3dProperty, BagemihlPolyhedraAtRandom, ()) {
   const double shift = *rc::gen::elementOf(std::vector<double>{0.0, 1024.0, -65536.0});
   ClosedSurface3 s = bagemihl_polyhedron(n, twist, bend);
   for (Vec3& p : s.points) p = {p.x * scale + shift, p.y * scale - shift / 2, p.z * scale + shift / 4};
-  RC_ASSERT(exact_volume6(s.points, s.triangles).sign() == Sign::Positive);
-  for (const auto& m : constrained3d_methods()) {
-    try {
-      const CheckedRun run = run_and_check(s, std::string(m.name), {}, {}, 20);
-      RC_ASSERT(!::testing::Test::HasFailure());
-      RC_ASSERT(run.result.region_count == 1u);
-    } catch (const InputError& e) {
-      RC_ASSERT(std::string(e.what()).find("limit") != std::string::npos);
-      RC_ASSERT(e.items().size() == 1u);
-      RC_TAG("Steiner limit reached");
-    }
-  }
+  every_method_passes_or_hits_the_limit(s);
 }
 
 // Boxes with internal faces at random: [0, W] x [0, D] x [0, H] cut into slabs by k internal
