@@ -260,6 +260,18 @@ class SegmentResolver {
     return true;
   }
 
+  // Whether vertex w lies strictly between vertices a and b along input segment s (their
+  // projections on its direction, exactly).
+  bool between_along(std::uint32_t s, std::uint32_t a, std::uint32_t b, std::uint32_t w) const {
+    if (w == a || w == b) return false;
+    const auto& seg = context_.input_segment(s);
+    const Vec2 &A = mesh_.point(seg[0]), &B = mesh_.point(seg[1]);
+    const Rational dx = Rational(B.x) - Rational(A.x), dy = Rational(B.y) - Rational(A.y);
+    const auto along = [&](std::uint32_t q) { return Rational(mesh_.point(q).x) * dx + Rational(mesh_.point(q).y) * dy; };
+    const Rational ta = along(a), tb = along(b), tw = along(w);
+    return ta < tb ? ta < tw && tw < tb : tb < tw && tw < ta;
+  }
+
   // Piece p crosses the constrained edge h (segment j): both split at their crossing.
   bool split_crossing(const Piece& p, std::uint32_t h, bool rounding, std::vector<Piece>& stack) {
     Triangulation2& tri = mesh_.tri();
@@ -282,24 +294,51 @@ class SegmentResolver {
       bent = true;
     }
     DTLAB_ASSERT(exact.has_value());  // the walk saw u and v strictly on either side of ab
-    const RoundedPoint2 rounded = round_point_checked(*exact);
+    RoundedPoint2 rounded = round_point_checked(*exact);
     if (!rounded.exact && !rounding) return false;
-    const Vec2 x = rounded.point;
+    Vec2 x = rounded.point;
     if (!coordinate_in_range(x.x) || !coordinate_in_range(x.y))
       throw InputError("segments " + context_.number(j) + " and " + context_.number(p.segment) +
                            " cross at a point outside the supported coordinate range " + point_text(x),
                        {j, p.segment});
+    // An existing vertex at the crossing: the one made for the same exact point (the same two
+    // input segments), or one the rounded point falls on.
+    auto known = steiner_at_.end();
+    std::optional<std::uint32_t> found;
+    const auto look_up = [&] {
+      known = steiner_at_.find({exact->x, exact->y});
+      found.reset();
+      if (known != steiner_at_.end()) {
+        found = known->second;
+      } else if (const ConstrainedMesh2::Location where = mesh_.locate(x, Triangulation2::triangle_of(h));
+                 where.where == ConstrainedMesh2::Where::Vertex) {
+        found = where.handle;
+      }
+    };
+    look_up();
+    // The vertex of the two input segments' crossing may be an end of the crossed edge that
+    // lies outside the piece along p's segment: the chains, bent by an ulp near it, cross again
+    // a few ulps away, and p's chain, routed back through that vertex, which it passed already,
+    // would loop and step back along its segment. The pieces' own crossing is taken instead.
+    // (A vertex of the input crossing that is no end of the crossed edge is kept even where it
+    // lies outside the piece: replacing it makes the two chains cross again and again.)
+    if (found && !bent && (*found == u || *found == v) && !between_along(p.segment, p.a, p.b, *found)) {
+      exact = line_intersection_exact(mesh_.point(p.a), mesh_.point(p.b), mesh_.point(u), mesh_.point(v));
+      DTLAB_ASSERT(exact.has_value());
+      bent = true;
+      rounded = round_point_checked(*exact);
+      x = rounded.point;
+      look_up();
+    }
     if (!within_rounding_bound(*exact, x)) ++result_.rounding_checks_failed;
-    const auto known = steiner_at_.find({exact->x, exact->y});
     std::uint32_t w;
-    if (known != steiner_at_.end()) {
-      w = known->second;
-    } else if (const ConstrainedMesh2::Location where = mesh_.locate(x, Triangulation2::triangle_of(h));
-               where.where == ConstrainedMesh2::Where::Vertex) {
-      w = where.handle;
-      context_.note("segments " + context_.number(j) + " and " + context_.number(p.segment) + " cross at vertex " +
-                    context_.number(w) + (rounded.exact ? "" : " (their intersection rounds to it)"));
+    if (found) {
+      w = *found;
+      if (known == steiner_at_.end())
+        context_.note("segments " + context_.number(j) + " and " + context_.number(p.segment) + " cross at vertex " +
+                      context_.number(w) + (rounded.exact ? "" : " (their intersection rounds to it)"));
     } else {
+      const ConstrainedMesh2::Location where = mesh_.locate(x, Triangulation2::triangle_of(h));
       w = mesh_.insert(x, where);
       steiner_at_.emplace(std::pair{exact->x, exact->y}, w);
       ++result_.crossing_steiner_points;

@@ -525,6 +525,26 @@ TEST(Constrained2dRegression, BentChainsCrossAtRecordedPieces) {
   }
 }
 
+// fuzz/constrained2d_fuzz input (corpus: regression-crossing-vertex-behind), cut down to the four
+// segments that fail. Segments 0 and 2 end a few ulps apart, at (1, -2.5 + ulp) and (1 + 2 ulps,
+// -2.5), across x = 1 where the rounding boxes change size; segment 1 runs into the second
+// end and segment 3 crosses all three. Their chains, bent by snap rounding, cross again a few
+// ulps from the rounded crossing of segments 0 and 1, and enforcement routed a piece of segment 1
+// back through that vertex, which its chain had passed already: the chain looped, stepping back
+// along the segment, and two crossing points were left on no chain. A crossing vertex must now
+// lie between the ends of both pieces along their segments, else the pieces' own crossing is
+// taken.
+TEST(Constrained2dRegression, CrossingVertexBehindAChainIsNotReused) {
+  const std::vector<Vec2> pts = {{0x1.8p+3, -0x1.fffffffffffffp+1},        {0x1.0000000000002p+0, -0x1.4p+1},
+                                 {-0x1.ffffffffffffep-2, 0x1.4000000000002p+1}, {-0x1.bfffffffffffep+1, 0x1.8p+3},
+                                 {0x1p+0, -0x1.3fffffffffffep+1},            {-0x1.ffffffffffffep-2, 0}};
+  const std::vector<Segment> segs = {{2, 4}, {3, 1}, {2, 1}, {0, 5}};
+  for (const std::string& method : method_names()) {
+    const auto r = run(pts, segs, method);
+    expect_valid(pts, segs, method, r, false);
+  }
+}
+
 // fuzz/constrained2d_fuzz input (corpus: regression-duplicate-chains; its hole left out). Segment 3,
 // (1, 2.5)-(1 + 2 ulps, -2.5), has five duplicates (15, 19, 31, 51, 63), dropped with a message.
 // "conforming" bends its chain through input vertex 22, a little more than its rounding bound
