@@ -48,6 +48,13 @@ class FacetTable {
     throw InternalError("facet table full");
   }
 
+  // Records `k` with `handle` unless it is in the table already; whether it was recorded.
+  bool insert(const Key& k, std::uint32_t handle) {
+    if (find(k) != kAbsent) return false;
+    take_or_insert(k, handle);
+    return true;
+  }
+
   // The value of `k`, kAbsent if it is not in the table.
   std::uint32_t find(const Key& k) const noexcept {
     std::size_t i = home(k);

@@ -260,18 +260,6 @@ class SegmentResolver {
     return true;
   }
 
-  // Whether vertex w lies strictly between vertices a and b along input segment s (their
-  // projections on its direction, exactly).
-  bool between_along(std::uint32_t s, std::uint32_t a, std::uint32_t b, std::uint32_t w) const {
-    if (w == a || w == b) return false;
-    const auto& seg = context_.input_segment(s);
-    const Vec2 &A = mesh_.point(seg[0]), &B = mesh_.point(seg[1]);
-    const Rational dx = Rational(B.x) - Rational(A.x), dy = Rational(B.y) - Rational(A.y);
-    const auto along = [&](std::uint32_t q) { return Rational(mesh_.point(q).x) * dx + Rational(mesh_.point(q).y) * dy; };
-    const Rational ta = along(a), tb = along(b), tw = along(w);
-    return ta < tb ? ta < tw && tw < tb : tb < tw && tw < ta;
-  }
-
   // Piece p crosses the constrained edge h (segment j): both split at their crossing.
   bool split_crossing(const Piece& p, std::uint32_t h, bool rounding, std::vector<Piece>& stack) {
     Triangulation2& tri = mesh_.tri();
@@ -317,12 +305,13 @@ class SegmentResolver {
     };
     look_up();
     // The vertex of the two input segments' crossing may be an end of the crossed edge that
-    // lies outside the piece along p's segment: the chains, bent by an ulp near it, cross again
+    // lies outside the piece (not strictly between its ends along it, order_along_segment): the chains, bent by an ulp near it, cross again
     // a few ulps away, and p's chain, routed back through that vertex, which it passed already,
     // would loop and step back along its segment. The pieces' own crossing is taken instead.
     // (A vertex of the input crossing that is no end of the crossed edge is kept even where it
     // lies outside the piece: replacing it makes the two chains cross again and again.)
-    if (found && !bent && (*found == u || *found == v) && !between_along(p.segment, p.a, p.b, *found)) {
+    if (found && !bent && (*found == u || *found == v) &&
+        order_along_segment(mesh_.point(p.a), mesh_.point(p.b), {{mesh_.point(*found), *found}}).empty()) {
       exact = line_intersection_exact(mesh_.point(p.a), mesh_.point(p.b), mesh_.point(u), mesh_.point(v));
       DTLAB_ASSERT(exact.has_value());
       bent = true;

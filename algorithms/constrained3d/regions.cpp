@@ -14,9 +14,7 @@ using T3 = Tetrahedralization3;
 TetrahedronComponents tetrahedron_components(const Tetrahedralization3& mesh,
                                              std::span<const std::array<std::uint32_t, 3>> walls) {
   FacetTable wall;  // a hash table: a binary search of sorted triples was most of the time
-  for (std::uint32_t k = 0; k < walls.size(); ++k)
-    if (wall.find(FacetTable::key(walls[k][0], walls[k][1], walls[k][2])) == FacetTable::kAbsent)
-      wall.take_or_insert(FacetTable::key(walls[k][0], walls[k][1], walls[k][2]), k);
+  for (std::uint32_t k = 0; k < walls.size(); ++k) wall.insert(FacetTable::key(walls[k][0], walls[k][1], walls[k][2]), k);
   TetrahedronComponents c;
   const std::size_t n = mesh.tetrahedron_count();
   c.component.assign(n, T3::kNone);

@@ -1,5 +1,6 @@
 // Generators of the Schönhardt family (schonhardt.hpp): twisted prisms and their stacks
-// (Schönhardt 1928; Rambau 2005), Bagemihl polyhedra and Chazelle's notched box (Chazelle 1984; book §3.5).
+// (Schönhardt 1928; Rambau 2005), Bagemihl polyhedra and Chazelle's notched box (Chazelle
+// 1984; book §3.5).
 #include "algorithms/constrained3d/schonhardt.hpp"
 
 #include <cmath>
@@ -123,22 +124,19 @@ ClosedSurface3 bagemihl_polyhedron(int vertices, double twist_degrees, double be
     throw std::logic_error("bagemihl_polyhedron: a triangle of Schönhardt's polyhedron is not where expected");
   };
   const std::size_t i1 = find(b1, b2, t2), i2 = find(t0, t2, b2);
-  const Vec3 a = s.points[b2], c = s.points[t2];
-  const Vec3 e{c.x - a.x, c.y - a.y, c.z - a.z};
-  const Vec3 mid{(a.x + c.x) / 2, (a.y + c.y) / 2, (a.z + c.z) / 2};
-  const auto unit = [](Vec3 v) {
-    const double l = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+  const Vec3 a = s.points[b2], c = s.points[t2], e = c - a;
+  const auto unit = [](const Vec3& v) {
+    const double l = std::sqrt(dot(v, v));
     return Vec3{v.x / l, v.y / l, v.z / l};
   };
-  const Vec3 u = unit({-mid.x, -mid.y, 0.5 - mid.z});
-  const Vec3 w = unit({e.y * u.z - e.z * u.y, e.z * u.x - e.x * u.z, e.x * u.y - e.y * u.x});
+  const Vec3 u = unit(Vec3{0, 0, 0.5} - 0.5 * (a + c));  // towards the axis, from the edge's midpoint
+  const Vec3 w = unit(cross(e, u));
   const int m = vertices - 6;
   std::vector<std::uint32_t> chain{b2};  // b_2, c_1, .., c_m, t_2
   for (int j = 1; j <= m; ++j) {
     const double t = double(j) / (m + 1), p = bend * 4 * t * (1 - t), q = bend * t * (1 - t) * (2 * t - 1);
     chain.push_back(static_cast<std::uint32_t>(s.points.size()));
-    s.points.push_back({a.x + t * e.x + p * u.x + q * w.x, a.y + t * e.y + p * u.y + q * w.y,
-                        a.z + t * e.z + p * u.z + q * w.z});
+    s.points.push_back(a + t * e + p * u + q * w);
   }
   chain.push_back(t2);
   // (b_1, b_2, t_2) becomes the fan from b_1 over the chain, (b_2, t_0, t_2) = (t_0, t_2, b_2)

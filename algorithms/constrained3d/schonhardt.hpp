@@ -74,7 +74,8 @@ ClosedSurface3 schonhardt_polyhedron(double twist_degrees);
 // from a chain point to b_0 and t_1 out as it keeps b_0 t_2 and b_2 t_1 out. Checked exactly
 // for n = 6..16 (verify/tests/constrained3d_test.cpp: no tetrahedron on the vertices inside);
 // the margins shrink like 1/n, and the bend must shrink with a small twist (at 5 degrees 0.05
-// keeps the property up to n = 16 and 0.1 does not). Vertex ids: Schönhardt's 0..5 (twisted_prism's), then c_1..c_m.
+// keeps the property up to n = 16 and 0.1 does not). Vertex ids: Schönhardt's 0..5
+// (twisted_prism's), then c_1..c_m.
 // Throws InputError for n < 6, a twist outside (0, 60) degrees or a bend outside (0, 1/2].
 ClosedSurface3 bagemihl_polyhedron(int vertices, double twist_degrees = 30, double bend = 0.1);
 
