@@ -16,6 +16,7 @@
 #include "algorithms/constrained3d/constrained3d.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/constrain3d.hpp"
+#include "apps/graph_input.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit.hpp"
@@ -32,6 +33,7 @@ struct ConstrainArgs {
   std::string method;  // empty: the dimension's default (cdt in 2D, conforming in 3D)
   bool keep_exterior = false;
   bool remove_cavities = false;       // 3D only
+  bool merge_coplanar = false;        // 3D only
   // 3D only: Steiner points at most this times (points + triangles); kNotGiven: the default.
   static constexpr std::uint32_t kNotGiven = UINT32_MAX;
   std::uint32_t steiner_limit = kNotGiven;
@@ -41,33 +43,6 @@ struct ConstrainArgs {
   bool list = false;
 };
 
-// The input graph, whichever the file format: a .poly as it is, a Medit .mesh as vertices and
-// edges (references as markers; triangles in it are ignored).
-struct GraphInput {
-  PolyData2 poly;
-  std::uint32_t first_number = 1;
-};
-
-GraphInput read_graph(const std::string& path) {
-  const std::string ext = extension_of(path);
-  if (ext == "poly") {
-    GraphInput in{read_triangle_poly(path), 0};
-    in.first_number = static_cast<std::uint32_t>(in.poly.first_index);
-    return in;
-  }
-  if (ext != "mesh") throw InputError(path + ": give a Triangle .poly or a Medit .mesh (with Edges) file");
-  const MeshData2 mesh = read_medit2(path);
-  if (!mesh.triangles.empty())
-    std::cerr << "dtlab: " << path << ": its " << mesh.triangles.size()
-              << " Triangles are ignored; the graph is its Vertices and Edges\n";
-  GraphInput in;
-  in.poly.points = mesh.vertices;
-  in.poly.segments = mesh.edges;
-  in.poly.has_segment_markers = true;
-  in.poly.segment_markers = mesh.edge_refs;
-  return in;
-}
-
 int run_constrain(ConstrainArgs args) {
   if (args.list) {
     std::cout << "2D (planar straight line graphs):\n";
@@ -75,29 +50,26 @@ int run_constrain(ConstrainArgs args) {
     std::cout << "3D (piecewise linear complexes):\n";
     return list_constrained3d_methods();
   }
-  if (args.input.empty()) throw InputError("give an INPUT file (.poly, .mesh; in 3D also .smesh, .off, .stl)");
+  if (args.input.empty()) throw InputError("give an INPUT file (.poly, .mesh; in 3D also .smesh, .off, .obj, .stl)");
   if (is_surface_input(args.input)) {
     if (args.swap_order != "queue")
       throw InputError("--swap-order applies to 2D input (planar straight line graphs), not to " + args.input);
     return run_constrain3d({args.input, args.output, args.method.empty() ? "conforming" : args.method,
                             args.keep_exterior, args.remove_cavities, args.stats, args.verify,
                             args.steiner_limit == ConstrainArgs::kNotGiven ? Constrained3dOptions{}.steiner_limit_factor
-                                                                            : args.steiner_limit});
+                                                                            : args.steiner_limit,
+                            args.merge_coplanar});
   }
   if (args.remove_cavities)
     throw InputError("--remove-cavities applies to 3D input (surfaces), not to " + args.input);
+  if (args.merge_coplanar)
+    throw InputError("--merge-coplanar applies to 3D input (surfaces), not to " + args.input);
   if (args.steiner_limit != ConstrainArgs::kNotGiven)
     throw InputError("--steiner-limit applies to 3D input (surfaces), not to " + args.input);
   if (args.method.empty()) args.method = "cdt";
-  const GraphInput graph = read_graph(args.input);
+  const GraphInput graph = read_graph(args.input, true);
   const PolyData2& poly = graph.poly;
-  std::vector<RegionSeed2> regions;
-  for (const PolyRegion& r : poly.regions) {
-    const double rounded = std::nearbyint(r.attribute);
-    if (rounded != r.attribute || std::fabs(rounded) > 2e9)
-      std::cerr << "dtlab: region attribute " << r.attribute << " written as the integer reference " << rounded << "\n";
-    regions.push_back({r.point, static_cast<int>(std::fabs(rounded) > 2e9 ? 0 : rounded)});
-  }
+  const std::vector<RegionSeed2>& regions = graph.regions;
   ConstrainedInput2 input{.points = poly.points,
                           .segments = poly.segments,
                           .segment_markers = poly.segment_markers,
@@ -166,11 +138,12 @@ void add_constrain(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "constrain",
       "Constrained triangulation of a planar straight line graph (.poly, .mesh) or tetrahedralization of a "
-      "piecewise linear complex (TetGen .poly/.smesh, Medit .mesh, OFF, STL)");
+      "piecewise linear complex of planar polygonal facets (TetGen .poly/.smesh, Medit .mesh, OFF, OBJ, STL)");
   cmd->add_option("input", args->input,
                   "2D: Triangle .poly file (vertices, segments with markers, holes, regions) or Medit .mesh (Vertices, "
-                  "Edges with references as markers); 3D: TetGen .poly/.smesh, Medit .mesh (Dimension 3, Triangles), "
-                  ".off, .stl (a closed triangulated surface, internal faces allowed)");
+                  "Edges with references as markers); 3D: TetGen .poly/.smesh (facets of polygons with holes), Medit .mesh "
+                  "(Dimension 3, Triangles, Quadrilaterals), .off and .obj (polygons), .stl: a closed surface of planar "
+                  "facets, internal faces allowed");
   cmd->add_option("-o,--output", args->output, "Write OUT.mesh (Medit): Vertices, Edges with markers, Triangles with regions");
   std::string names;
   for (const Constrained2dMethod& m : constrained2d_methods()) names += (names.empty() ? "" : "|") + std::string(m.name);
@@ -184,10 +157,13 @@ void add_constrain(CLI::App& app) {
       ->check(CLI::IsMember({"queue", "random"}));
   cmd->add_flag("--remove-cavities", args->remove_cavities,
                 "3D: drop the regions bounded only by shells nested inside another shell (cavities)");
+  cmd->add_flag("--merge-coplanar", args->merge_coplanar,
+                "3D: merge neighbouring coplanar facets with the same reference into one facet, triangulated "
+                "again in its plane (TetGen's default), and say which were merged");
   cmd->add_option("--steiner-limit", args->steiner_limit,
                   "3D: stop with an error naming the item being recovered once the Steiner points would exceed this "
                   "times (input points + triangles) (default 200; 0: none allowed)")
-      ->check(CLI::Range(0u, 1000000u));
+      ->check(integer_in(0, 1000000));
   cmd->add_flag("--keep-exterior", args->keep_exterior, "Keep the triangles outside the segments (holes are still removed)");
   cmd->add_flag("--stats", args->stats, "Print one JSON object with counts, seconds and predicate stages as the last line");
   cmd->add_flag("--verify", args->verify,

@@ -1,5 +1,7 @@
-// `dtlab constrain` in 3D: read a closed triangulated surface (plus internal faces, holes and
-// region points where the format has them), refuse bad input by name (plc_checks.hpp), build the
+// `dtlab constrain` in 3D: read a closed surface of planar polygonal facets (plus internal faces,
+// holes and region points where the format has them), triangulate each facet in its plane
+// (facet_triangulation.hpp; coplanar neighbours merged with --merge-coplanar), refuse bad input
+// by name (facet_triangulation.hpp, plc_checks.hpp), build the
 // constrained tetrahedralization with any registered method (algorithms/constrained3d), write
 // Medit, check the result exactly (verify/checks_constrained3d.hpp) and report statistics.
 #include "apps/constrain3d.hpp"
@@ -8,6 +10,7 @@
 #include <sstream>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
+#include "algorithms/constrained3d/facet_triangulation.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/input_files.hpp"
 #include "kernel/error.hpp"
@@ -19,7 +22,7 @@ namespace dtlab::cli {
 
 bool is_surface_input(const std::string& path) {
   const std::string ext = extension_of(path);
-  if (ext == "off" || ext == "stl" || ext == "smesh") return true;
+  if (ext == "off" || ext == "obj" || ext == "stl" || ext == "smesh") return true;
   if (ext == "poly" || ext == "mesh") return input_dimension(path) == 3;
   return false;
 }
@@ -29,21 +32,71 @@ int list_constrained3d_methods() {
   return 0;
 }
 
+namespace {
+
+// What the facet triangulation did that the user should know: merged groups (the first few
+// named), facets without area, and segments that are no constraint of a tetrahedralization.
+void report_facets(const SurfaceInput& in, const FacetTriangulation& facets, bool merge) {
+  for (const std::string& m : facets.messages) std::cerr << "dtlab: " << m << "\n";
+  if (facets.segments_alone > 0)
+    std::cerr << "dtlab: " << facets.segments_alone
+              << " facet(s) of segments or isolated vertices only (no area): not constraints of the "
+                 "tetrahedralization, ignored\n";
+  if (!merge) return;
+  std::cerr << "dtlab: --merge-coplanar: " << facets.merged_facets << " facets merged into " << facets.merged.size()
+            << " group(s) of coplanar neighbours" << (facets.merged.empty() ? "" : ":") << "\n";
+  constexpr std::size_t kShown = 10, kShownPerGroup = 12;
+  for (std::size_t g = 0; g < facets.merged.size() && g < kShown; ++g) {
+    const auto& group = facets.merged[g];
+    std::cerr << "dtlab:   ";
+    for (std::size_t k = 0; k < group.size() && k < kShownPerGroup; ++k)
+      std::cerr << (k ? ", " : "") << in.facet_name(group[k]);
+    if (group.size() > kShownPerGroup) std::cerr << ", ... (" << group.size() << " in all)";
+    std::cerr << " (reference " << in.plc.facets[group.front()].marker << ")\n";
+  }
+  if (facets.merged.size() > kShown) std::cerr << "dtlab:   ... and " << facets.merged.size() - kShown << " more groups\n";
+}
+
+// Input triangle t as the input check names it: its facet, and which of the facet's triangles it
+// is where the facet has several (a facet's triangles are consecutive).
+std::string triangle_name(const SurfaceInput& in, const FacetTriangulation& facets, std::uint32_t t) {
+  const auto& of = facets.triangle_facet;
+  std::uint32_t first = t, last = t;
+  while (first > 0 && of[first - 1] == of[t]) --first;
+  while (last + 1 < of.size() && of[last + 1] == of[t]) ++last;
+  std::string name = in.facet_name(of[t]);
+  if (last > first)
+    name += " (triangle " + std::to_string(t - first + 1) + " of " + std::to_string(last - first + 1) + ")";
+  return name;
+}
+
+}  // namespace
+
 int run_constrain3d(const Constrain3dCliArgs& args) {
   const SurfaceInput in = read_surface(args.input);
+  FacetTriangulation facets;
+  try {
+    facets = triangulate_facets(in.plc, {.merge_coplanar = args.merge_coplanar,
+                                         .facet_name = [&in](std::size_t f) { return in.facet_name(f); },
+                                         .first_vertex_number = in.first_vertex_number});
+  } catch (const InputError& e) {
+    throw InputError(args.input + ": " + e.what(), e.items());
+  }
+  report_facets(in, facets, args.merge_coplanar);
   std::vector<RegionSeed3> seeds;
-  for (const PlcRegion3& r : in.regions) {
+  for (const PlcRegion3& r : in.plc.regions) {
     const int attribute = static_cast<int>(r.attribute);
     if (static_cast<double>(attribute) != r.attribute)
       std::cerr << "dtlab: region attribute " << r.attribute << " is not an integer; the reference is " << attribute
                 << "\n";
     seeds.push_back({r.point, attribute});
   }
-  ConstrainedInput3 input{.points = in.surface.vertices,
-                          .triangles = in.surface.triangles,
-                          .triangle_refs = in.surface.triangle_refs,
-                          .holes = in.holes,
-                          .regions = seeds};
+  ConstrainedInput3 input{.points = in.plc.vertices,
+                          .triangles = facets.triangles,
+                          .triangle_refs = facets.triangle_refs,
+                          .holes = in.plc.holes,
+                          .regions = seeds,
+                          .triangle_name = [&](std::uint32_t t) { return triangle_name(in, facets, t); }};
   Constrained3dOptions options;
   options.method = args.method;
   options.keep_exterior = args.keep_exterior;
@@ -84,7 +137,9 @@ int run_constrain3d(const Constrain3dCliArgs& args) {
     const auto& s = result.seconds;
     std::ostringstream json;
     json << "{\"input\":" << json_string(args.input) << ",\"dim\":3,\"method\":" << json_string(args.method)
-         << ",\"points\":" << result.input_point_count << ",\"input_triangles\":" << in.surface.triangles.size()
+         << ",\"points\":" << result.input_point_count << ",\"input_facets\":" << in.plc.facets.size()
+         << ",\"polygon_facets\":" << facets.polygon_facets << ",\"merged_facets\":" << facets.merged_facets
+         << ",\"merged_groups\":" << facets.merged.size() << ",\"input_triangles\":" << facets.triangles.size()
          << ",\"elements\":" << result.tetrahedra.size() << ",\"regions\":" << result.region_count
          << ",\"steiner_points\":{\"on_edges\":" << result.steiner_points.on_edges
          << ",\"on_faces\":" << result.steiner_points.on_faces << ",\"interior\":" << result.steiner_points.interior

@@ -1,7 +1,8 @@
-// The 3D path of `dtlab constrain` (apps/constrain.cpp hands over surface inputs: OFF, STL,
+// The 3D path of `dtlab constrain` (apps/constrain.cpp hands over surface inputs: OFF, OBJ, STL,
 // TetGen .poly/.smesh with dimension 3, Medit .mesh with Dimension 3).
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 namespace dtlab::cli {
@@ -15,6 +16,7 @@ struct Constrain3dCliArgs {
   bool stats = false;
   bool verify = false;
   std::uint32_t steiner_limit = 200;  // Constrained3dOptions::steiner_limit_factor
+  bool merge_coplanar = false;        // FacetTriangulationOptions::merge_coplanar
 };
 
 // Whether `path` is a 3D piecewise linear complex rather than a planar graph.

@@ -12,6 +12,7 @@
 #include "apps/input_files.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
+#include "mesh/triangulation2.hpp"
 #include "verify/checks2d.hpp"
 #include "verify/generators/points2d.hpp"
 #include "verify/generators/points3d.hpp"
@@ -19,6 +20,11 @@
 namespace dtlab::cli {
 
 namespace {
+
+// Bounds of the numeric options: the 2D structure's point limit (mesh/triangulation2.hpp; the 3D
+// one is lower and delaunay3d names it), and a thread count no machine here reaches.
+constexpr std::uint64_t kMaxRandomPoints = Triangulation2::kMaxPoints;
+constexpr std::uint64_t kMaxThreads = 1024;
 
 struct DelaunayArgs {
   std::string input;
@@ -139,10 +145,12 @@ void add_delaunay(CLI::App& app) {
   cmd->add_flag("--list-algos", args->list,
                 "List the registered variants (name, tab, description) and exit; with --dim 3 the 3D ones");
   cmd->add_option("--threads", args->threads, "Threads for the 3D variant 'parallel' (others are sequential)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(integer_in(1, kMaxThreads));
   cmd->add_flag("--verify", args->verify, "Check the result with exact predicates and print the report");
-  cmd->add_option("--random", args->random, "Triangulate N generated points instead of a file");
-  cmd->add_option("--dim", args->dim, "Dimension of the generated points")->capture_default_str();
+  cmd->add_option("--random", args->random, "Triangulate N generated points instead of a file")
+      ->check(integer_in(1, kMaxRandomPoints));
+  cmd->add_option("--dim", args->dim, "Dimension of the generated points")->capture_default_str()->check(integer_in(2, 3));
   std::string dists;
   for (const std::string& d : distribution_names2d()) dists += (dists.empty() ? "" : "|") + d;
   std::string dists3;
@@ -150,7 +158,9 @@ void add_delaunay(CLI::App& app) {
   cmd->add_option("--distribution", args->distribution,
                   "Generated distribution; 2D: " + dists + "; 3D: " + dists3)
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the generated points")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the generated points")
+      ->capture_default_str()
+      ->check(integer_in(0, UINT64_MAX));
   cmd->callback([args] {
     exit_code() = run_delaunay(*args);
   });

@@ -12,6 +12,7 @@
 #include "apps/cli_util.hpp"
 #include "apps/input_files.hpp"
 #include "kernel/error.hpp"
+#include "mesh/tetrahedralization3.hpp"
 #include "verify/checks3d.hpp"
 #include "verify/generators/points3d.hpp"
 
@@ -24,6 +25,9 @@ int list_delaunay3d_variants() {
 
 int run_delaunay3d(const Delaunay3dCliArgs& args) {
   if (args.input.empty() == (args.random == 0)) throw InputError("give either an INPUT file or --random N");
+  if (args.random > Tetrahedralization3::kMaxPoints)
+    throw InputError("--random: " + std::to_string(args.random) + " points exceed the 3D limit of " +
+                     std::to_string(Tetrahedralization3::kMaxPoints));
   const std::string source = args.input.empty() ? "random " + args.distribution + " n=" + std::to_string(args.random) +
                                                       " seed=" + std::to_string(args.seed)
                                                 : args.input;

@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
   dtlab::cli::add_delaunay(app);
   dtlab::cli::add_verify(app);
   dtlab::cli::add_constrain(app);
+  dtlab::cli::add_optimize(app);
+  dtlab::cli::add_mesh(app);
+  dtlab::cli::add_quality(app);
   dtlab::cli::add_selfcheck(app);
   try {
     app.parse(argc, argv);

@@ -15,5 +15,8 @@ void add_selfcheck(CLI::App& app);
 void add_delaunay(CLI::App& app);
 void add_verify(CLI::App& app);
 void add_constrain(CLI::App& app);
+void add_optimize(CLI::App& app);
+void add_quality(CLI::App& app);
+void add_mesh(CLI::App& app);
 
 }  // namespace dtlab::cli

@@ -2,6 +2,9 @@
 // equilateral triangle / regular tetrahedron, growing without bound as the element flattens.
 // Written as alpha * h_max * (sum of facet measures) / |2D area or 3D volume determinant| so that
 // one division carries the degeneracy; flatness itself is decided by the exact orientation test.
+// In a metric M (book (8.7)) the same measures are taken of the image under S = M^1/2, without
+// computing S: |S v| = sqrt(v^T M v), area and volume scale by sqrt(det M), and a face with normal
+// n = u x w has |S u x S w| = sqrt(n^T adj(M) n) (adj(M) = det(M) M^-1, the adjugate).
 #include "kernel/quality.hpp"
 
 #include <algorithm>
@@ -38,6 +41,86 @@ double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
   const double six_volume = std::fabs(dot(ba, cross(ca, da)));
   if (six_volume == 0.0) return kInfinity;
   return kQualityAlpha3d * h_max * twice_area / six_volume;
+}
+
+namespace {
+
+// sqrt(n^T adj(M) n): the measure in M of the parallelogram whose normal is n (header above).
+double face_measure(const Metric3& m, const Vec3& n) noexcept {
+  const double a = m.m[0], b = m.m[1], c = m.m[2], d = m.m[3], e = m.m[4], f = m.m[5];
+  const Metric3 adjugate{{c * f - e * e, d * e - b * f, a * f - d * d, b * e - c * d, b * d - a * e, a * c - b * b}};
+  return adjugate.length(n);
+}
+
+double squared_length(const Metric2& m, const Vec2& v) noexcept {
+  const double l = m.length(v);
+  return l * l;
+}
+
+double squared_length(const Metric3& m, const Vec3& v) noexcept {
+  const double l = m.length(v);
+  return l * l;
+}
+
+double sign_factor(Sign s) noexcept { return s == Sign::Positive ? 1.0 : -1.0; }
+
+}  // namespace
+
+double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2& m) noexcept {
+  if (orient2d(a, b, c) == Sign::Zero) return kInfinity;
+  const Vec2 ba = b - a, ca = c - a;
+  const std::array<double, 3> e = {m.length(ba), m.length(ca), m.length(c - b)};
+  const double h_max = std::max({e[0], e[1], e[2]});
+  const double twice_area = std::sqrt(m.determinant()) * std::fabs(cross(ba, ca));
+  if (!(twice_area > 0.0)) return kInfinity;
+  return kQualityAlpha2d * h_max * (e[0] + e[1] + e[2]) / twice_area;
+}
+
+double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& m) noexcept {
+  if (orient3d(a, b, c, d) == Sign::Zero) return kInfinity;
+  const Vec3 ba = b - a, ca = c - a, da = d - a, cb = c - b, db = d - b;
+  const std::array<double, 6> e = {m.length(ba), m.length(ca), m.length(da),
+                                   m.length(cb), m.length(db), m.length(d - c)};
+  const double h_max = *std::max_element(e.begin(), e.end());
+  const double twice_area = face_measure(m, cross(ba, ca)) + face_measure(m, cross(ba, da)) +
+                            face_measure(m, cross(ca, da)) + face_measure(m, cross(cb, db));
+  const double six_volume = std::sqrt(m.determinant()) * std::fabs(dot(ba, cross(ca, da)));
+  if (!(six_volume > 0.0)) return kInfinity;
+  return kQualityAlpha3d * h_max * twice_area / six_volume;
+}
+
+double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2& ma, const Metric2& mb,
+                     const Metric2& mc) noexcept {
+  return std::max({shape_quality(a, b, c, ma), shape_quality(a, b, c, mb), shape_quality(a, b, c, mc)});
+}
+
+double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
+                     const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept {
+  return std::max({shape_quality(a, b, c, d, ma), shape_quality(a, b, c, d, mb), shape_quality(a, b, c, d, mc),
+                   shape_quality(a, b, c, d, md)});
+}
+
+// The sign comes from the exact orientation, the magnitude from the rounded measures.
+double mean_ratio(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2& m) noexcept {
+  const Sign s = orient2d(a, b, c);
+  if (s == Sign::Zero) return 0.0;
+  const Vec2 ba = b - a, ca = c - a;
+  const double sum = squared_length(m, ba) + squared_length(m, ca) + squared_length(m, c - b);
+  if (!(sum > 0.0)) return 0.0;
+  const double area = 0.5 * std::sqrt(m.determinant()) * std::fabs(cross(ba, ca));
+  return sign_factor(s) * 4.0 * std::sqrt(3.0) * area / sum;
+}
+
+double mean_ratio(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& m) noexcept {
+  const Sign s = orient3d(a, b, c, d);
+  if (s == Sign::Zero) return 0.0;
+  const Vec3 ba = b - a, ca = c - a, da = d - a;
+  const double sum = squared_length(m, ba) + squared_length(m, ca) + squared_length(m, da) +
+                     squared_length(m, c - b) + squared_length(m, d - b) + squared_length(m, d - c);
+  if (!(sum > 0.0)) return 0.0;
+  const double volume = std::sqrt(m.determinant()) * std::fabs(dot(ba, cross(ca, da))) / 6.0;
+  const double r = std::cbrt(3.0 * volume);
+  return sign_factor(s) * 12.0 * r * r / sum;
 }
 
 }  // namespace dtlab

@@ -5,6 +5,7 @@
 // Q = +infinity, and so has a non-flat one whose area or volume computes to zero.
 #pragma once
 
+#include "kernel/metric.hpp"
 #include "kernel/vec.hpp"
 
 namespace dtlab {
@@ -14,5 +15,20 @@ inline constexpr double kQualityAlpha3d = 0.20412414523193150818;  // sqrt(6) / 
 
 double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c) noexcept;
 double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
+
+// Q_K in a metric (book §8.2, (8.7)): Q_K of the element's image under M^1/2 (the space where M
+// is the identity). With the vertex metrics, the worst (largest) of the values in each of them.
+double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2& m) noexcept;
+double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& m) noexcept;
+double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2& ma, const Metric2& mb,
+                     const Metric2& mc) noexcept;
+double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
+                     const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept;
+
+// Mean-ratio quality in a metric, as the UGAWG benchmarks measure it (1 = equilateral in M, 0 =
+// flat): 2D 4 sqrt(3) area_M / sum of squared edge lengths in M; 3D 12 (3 vol_M)^(2/3) / sum of
+// squared edge lengths in M; area_M = sqrt(det M) area. Signed: negative for an inverted element.
+double mean_ratio(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2& m) noexcept;
+double mean_ratio(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& m) noexcept;
 
 }  // namespace dtlab

@@ -4,11 +4,15 @@
 Inputs: the Schönhardt family written by bench/constrained3d_inputs (Schönhardt's polyhedron at
 5, 30 and 55 degrees, twisted 4-, 6- and 8-gonal prisms, a stack of three twisted prisms,
 Chazelle's polyhedron with 2, 4 and 8 notches a side), the closed surfaces of Debian's CGAL
-data (libcgal-demo: /usr/share/doc/libcgal-dev/data.tar.gz) named by --cgal-meshes, and, where
+data (libcgal-demo: /usr/share/doc/libcgal-dev/data.tar.gz) named by --cgal-meshes (cube_quad.off:
+quadrilateral facets), dtlab's own polygon-facet inputs (data/quad_cube.off, data/box_with_window.poly:
+a TetGen facet with a hole), and, where
 Debian's gmsh is installed, the CAD part data/cad_part.geo meshed by `gmsh -2 -clmax H` for each
 H in --gmsh-sizes (10^3 to 10^6 triangles; Medit .mesh, which both programs read). For each:
     build/dtlab constrain IN.off --method M --stats          (every 3D method dtlab lists)
+    build/dtlab constrain IN.off --method M --stats --merge-coplanar   (--merge both or on)
     tetgen -p IN.off                                         (TetGen 1.5, Debian's binary)
+    tetgen -pM IN.off                                        (TetGen without merging coplanar facets)
 RUNS times each; prints a Markdown table row per (input, program): input vertices and triangles,
 Steiner points (dtlab: its --stats on edges / faces / interior; TetGen: "Mesh points" less
 "Input points", split as its report splits them), tetrahedra, seconds (each program's own timing:
@@ -16,10 +20,14 @@ dtlab's "total", wall clock; TetGen's "Total running seconds" less its "Output s
 CPU time; minimum over the runs) and time / TetGen. An input a program refuses gets its first
 line of error instead (dtlab names open or self-intersecting surfaces; TetGen may return zero
 tetrahedra with exit status 0, which is reported as such). A machine and commit line comes first.
+With --merge-coplanar dtlab joins neighbouring coplanar facets with equal references and
+triangulates them again (TetGen's default; -M turns it off); its row gives how many facets merged.
+--no-times leaves the seconds out (on a loaded machine they mean nothing; Steiner counts do).
 
   scripts/bench_constrained3d.py --build build
   scripts/bench_constrained3d.py --build build --runs 5 --cgal-meshes elephant.off,eight.off
   scripts/bench_constrained3d.py --build build --update-readme
+  scripts/bench_constrained3d.py --build build-x --inputs build/bench/constrained3d_inputs --runs 1 --no-times
 """
 import argparse
 import json
@@ -37,7 +45,9 @@ from bench_delaunay2d import fmt, machine, progress
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
 DEFAULT_GMSH_SIZES = "0.05,0.015,0.005"
-DEFAULT_MESHES = "tetrahedron.off,icosahedron.off,sphere.stl,elephant.off,eight.off,cow.off,fandisk.off,knot1.off"
+DEFAULT_MESHES = ("tetrahedron.off,icosahedron.off,sphere.stl,elephant.off,eight.off,cow.off,fandisk.off,knot1.off,"
+                  "cube_quad.off")
+BUNDLED = ["quad_cube.off", "box_with_window.poly"]  # in data/
 PRODUCER = ("Produced by `scripts/bench_constrained3d.py --update-readme` (dtlab's 3D constrained methods "
             "through `dtlab constrain --stats`, TetGen 1.5 through `tetgen -p`, same files).")
 
@@ -51,24 +61,26 @@ def run(cmd, cwd, timeout):
     return p, None
 
 
-def dtlab_once(dtlab, path, method, work, timeout):
+def dtlab_once(dtlab, path, method, work, timeout, merge=False):
     p, err = run([dtlab, "constrain", path, "--method", method, "--stats", "-o",
-                  os.path.join(work, "out.mesh")], work, timeout)
+                  os.path.join(work, "out.mesh")] + (["--merge-coplanar"] if merge else []), work, timeout)
     if err:
         return {"error": err}
     if p.returncode != 0:
-        return {"error": (p.stderr.strip().splitlines() or ["exit status %d" % p.returncode])[0]}
+        # The error is dtlab's last line (--merge-coplanar reports its merges before the checks run).
+        return {"error": (p.stderr.strip().splitlines() or ["exit status %d" % p.returncode])[-1]}
     stats = json.loads(p.stdout.strip().splitlines()[-1])
     s = stats["steiner_points"]
     return {"seconds": stats["seconds"]["total"], "steiner": s["on_edges"] + s["on_faces"] + s["interior"],
             "split": f"{s['on_edges']} / {s['on_faces']} / {s['interior']}", "tets": stats["elements"],
-            "points": stats["points"], "triangles": stats["input_triangles"]}
+            "points": stats["points"], "triangles": stats["input_triangles"],
+            "merged": stats.get("merged_facets", 0)}
 
 
-def tetgen_once(path, work, timeout):
+def tetgen_once(path, work, timeout, switches="-p"):
     local = os.path.join(work, os.path.basename(path))
     shutil.copy(path, local)
-    p, err = run(["tetgen", "-p", os.path.basename(local)], work, timeout)
+    p, err = run(["tetgen", switches, os.path.basename(local)], work, timeout)
     if err:
         return {"error": err}
     out = p.stdout
@@ -142,12 +154,16 @@ def main():
     ap.add_argument("--cgal-meshes", default=DEFAULT_MESHES, help="comma-separated names in CGAL's data/meshes")
     ap.add_argument("--gmsh-sizes", default=DEFAULT_GMSH_SIZES,
                     help="comma-separated -clmax values for data/cad_part.geo (empty: none)")
+    ap.add_argument("--merge", choices=("off", "on", "both"), default="both",
+                    help="dtlab runs without --merge-coplanar, with it, or both (default)")
+    ap.add_argument("--inputs", help="the constrained3d_inputs binary (default BUILD/bench/constrained3d_inputs)")
+    ap.add_argument("--no-times", action="store_true", help="leave the seconds columns out")
     ap.add_argument("--update-readme", action="store_true")
     args = ap.parse_args()
 
     args.build = os.path.abspath(args.build)
     dtlab = os.path.join(args.build, "dtlab")
-    inputs_bin = os.path.join(args.build, "bench", "constrained3d_inputs")
+    inputs_bin = os.path.abspath(args.inputs) if args.inputs else os.path.join(args.build, "bench", "constrained3d_inputs")
     for b in (dtlab, inputs_bin):
         if not os.path.exists(b):
             raise SystemExit(f"{b} not found: build it (cmake --build {args.build} --target dtlab_cli constrained3d_inputs)")
@@ -160,13 +176,18 @@ def main():
         files = subprocess.run([inputs_bin, os.path.join(work, "family")], stdout=subprocess.PIPE, text=True,
                                check=True).stdout.split()
         files += extract_meshes([n for n in args.cgal_meshes.split(",") if n], os.path.join(work, "cgal"))
+        files += [os.path.join(ROOT, "data", n) for n in BUNDLED]
         files += gmsh_surfaces([h for h in args.gmsh_sizes.split(",") if h], os.path.join(work, "gmsh"), args.timeout)
+        merges = {"off": [False], "on": [True], "both": [False, True]}[args.merge]
         rows = []
         for path in files:
             name = os.path.basename(path)
-            programs = [(m, lambda p=path, m=m: dtlab_once(dtlab, p, m, work, args.timeout)) for m in methods3]
+            programs = [(m + (" --merge-coplanar" if merge else ""),
+                         lambda p=path, m=m, merge=merge: dtlab_once(dtlab, p, m, work, args.timeout, merge))
+                        for m in methods3 for merge in merges]
             if have_tetgen:
                 programs.append(("tetgen", lambda p=path: tetgen_once(p, work, args.timeout)))
+                programs.append(("tetgen -M", lambda p=path: tetgen_once(p, work, args.timeout, "-pM")))
             results = {}
             for label, once in programs:
                 progress(f"bench_constrained3d: {name}, {label} ({args.runs} runs)")
@@ -181,15 +202,22 @@ def main():
                  f"seconds: minimum of {args.runs} runs, each program's own timing (TetGen's: CPU time, less "
                  f"its file output); Steiner points split as on edges / on faces / interior (TetGen: on "
                  f"segments / in facets / in volume).", "",
-                 "| input | vertices | triangles | program | Steiner points | split | tetrahedra | seconds | time / TetGen |",
-                 "|---|---|---|---|---|---|---|---|---|"]
+                 "| input | vertices | triangles | program | Steiner points | split | tetrahedra |" +
+                 ("" if args.no_times else " seconds | time / TetGen |"),
+                 "|---|---|---|---|---|---|---|" + ("" if args.no_times else "---|---|")]
+        if args.no_times:
+            lines[0] = lines[0].replace("seconds: minimum of", "seconds left out (--no-times);").replace(
+                " runs, each program's own timing (TetGen's: CPU time, less its file output)", " run(s)")
         for name, size, label, r, t in rows:
-            head = f"| {name} | {size.get('points', '-')} | {size.get('triangles', '-')} | {label} |"
+            if r.get("merged"):
+                label += f" ({r['merged']} facets merged)"
+            head = f"| {name} | {size.get('points', '-')} | {r.get('triangles', size.get('triangles', '-'))} | {label} |"
             if "error" in r:
-                lines.append(f"{head} refused: {r['error']} | | | | |")
+                lines.append(f"{head} refused: {r['error']} | | |" + ("" if args.no_times else " | |"))
                 continue
             ratio = fmt(r["seconds"] / t["seconds"], 2) if t and "error" not in t and t["seconds"] > 0 else "-"
-            lines.append(f"{head} {r['steiner']} | {r['split']} | {r['tets']} | {fmt(r['seconds'])} | {ratio} |")
+            times = "" if args.no_times else f" {fmt(r['seconds'])} | {ratio} |"
+            lines.append(f"{head} {r['steiner']} | {r['split']} | {r['tets']} |{times}")
         text = "\n".join(lines) + "\n"
         print(text)
         if args.update_readme:

@@ -79,7 +79,7 @@ Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrai
   for (std::size_t i = 0; i < input.regions.size(); ++i)
     check_coordinates(std::span<const Vec3>(&input.regions[i].point, 1), "region point " + std::to_string(i + 1));
   if (input.triangles.empty()) throw InputError("constrained3d: no triangles");
-  check_plc(input.points, input.triangles);
+  check_plc(input.points, input.triangles, input.triangle_name);
 
   Constrained3dResult r;
   r.seconds.checks = since(start);

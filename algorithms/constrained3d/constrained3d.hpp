@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -43,6 +44,9 @@ struct ConstrainedInput3 {
   std::span<const int> triangle_refs;                        // empty, or one per triangle
   std::span<const Vec3> holes;                               // each removes the region holding it
   std::span<const RegionSeed3> regions;                      // each gives its region an attribute
+  // Empty, or what input triangle t (0-based) is part of, for the input check's messages (the
+  // facet it was cut from: facet_triangulation.hpp), e.g. "quadrilateral 2".
+  std::function<std::string(std::uint32_t)> triangle_name = {};
 };
 
 struct Constrained3dOptions {

@@ -325,10 +325,14 @@ PlcReport inspect_plc(std::span<const Vec3> points, std::span<const Face3> faces
   return report;
 }
 
-void check_plc(std::span<const Vec3> points, std::span<const Face3> faces) {
+void check_plc(std::span<const Vec3> points, std::span<const Face3> faces, const FaceNamer& face_name) {
   const PlcReport r = inspect_plc(points, faces);
   const auto number = [](std::uint64_t i) { return std::to_string(i + 1); };
+  // With names, each face is its name alone ("face 2", "quadrilateral 3 (triangle 1 of 2)").
+  const auto face = [&](std::uint64_t i) { return face_name ? face_name(static_cast<std::uint32_t>(i)) : number(i); };
+  const std::string faces_word = face_name ? "" : "faces ", face_word = face_name ? "" : "face(s) ";
   const auto pair = [&](const auto& p) { return number(p.first) + " and " + number(p.second); };
+  const auto face_pair = [&](const auto& p) { return face(p.first) + " and " + face(p.second); };
   const auto edge = [&](const std::array<std::uint32_t, 2>& e) { return number(e[0]) + "-" + number(e[1]); };
   if (!r.duplicate_vertices.empty()) {
     std::vector<std::uint64_t> items;
@@ -339,14 +343,14 @@ void check_plc(std::span<const Vec3> points, std::span<const Face3> faces) {
   }
   if (!r.degenerate_faces.empty())
     throw InputError(std::to_string(r.degenerate_faces.size()) +
-                         " degenerate face(s) (zero area: repeated or collinear vertices): face(s) " +
-                         list_items(r.degenerate_faces, number),
+                         " degenerate face(s) (zero area: repeated or collinear vertices): " + face_word +
+                         list_items(r.degenerate_faces, face),
                      {r.degenerate_faces.begin(), r.degenerate_faces.end()});
   if (!r.duplicate_faces.empty()) {
     std::vector<std::uint64_t> items;
     for (const auto& p : r.duplicate_faces) items.insert(items.end(), {p.first, p.second});
-    throw InputError(std::to_string(r.duplicate_faces.size()) + " duplicate face pair(s): faces " +
-                         list_items(r.duplicate_faces, pair),
+    throw InputError(std::to_string(r.duplicate_faces.size()) + " duplicate face pair(s): " + faces_word +
+                         list_items(r.duplicate_faces, face_pair),
                      items);
   }
   if (!r.free_edges.empty()) {
@@ -360,8 +364,8 @@ void check_plc(std::span<const Vec3> points, std::span<const Face3> faces) {
     std::vector<std::uint64_t> items;
     for (const auto& p : r.intersecting_faces) items.insert(items.end(), {p.first, p.second});
     throw InputError("the surface intersects itself: " + std::to_string(r.intersecting_faces.size()) +
-                         " pair(s) of faces meet other than along a shared edge or vertex: faces " +
-                         list_items(r.intersecting_faces, pair),
+                         " pair(s) of faces meet other than along a shared edge or vertex: " + faces_word +
+                         list_items(r.intersecting_faces, face_pair),
                      items);
   }
 }

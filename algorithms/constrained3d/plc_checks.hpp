@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <utility>
@@ -51,7 +52,11 @@ PlcReport inspect_plc(std::span<const Vec3> points, std::span<const Face3> faces
 // inspect_plc, then InputError for the first failed category, naming up to 10 of its items
 // (vertex and face numbers counted from 1, as in the input files) and how many there are;
 // the exception's items() holds them 0-based.
-void check_plc(std::span<const Vec3> points, std::span<const Face3> faces);
+// face_name, where given, names each face in the messages instead of its number: the input item
+// it is (the facet a triangle was cut from: facet_triangulation.hpp), e.g. "... meet other than
+// along a shared edge or vertex: face 5 and quadrilateral 2 (triangle 1 of 2)".
+using FaceNamer = std::function<std::string(std::uint32_t)>;
+void check_plc(std::span<const Vec3> points, std::span<const Face3> faces, const FaceNamer& face_name = {});
 
 // The pair-of-faces test behind check 6, for callers that test their own pairs.
 bool faces_intersect_improperly(std::span<const Vec3> points, const Face3& f, const Face3& g) noexcept;

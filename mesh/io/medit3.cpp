@@ -17,10 +17,17 @@ using io::LineTokenizer;
 using io::quote;
 
 constexpr std::array<std::string_view, 4> kKeptKeywords = {"Vertices", "Edges", "Triangles", "Tetrahedra"};
+constexpr std::array<std::string_view, 5> kSurfaceKeywords = {"Vertices", "Edges", "Triangles", "Quadrilaterals",
+                                                              "Tetrahedra"};
 
 class Medit3Reader {
  public:
-  Medit3Reader(std::istream& in, const std::string& name) : in_(in, name) {}
+  // quadrilaterals: read the Quadrilaterals section (read_medit3_surface) rather than refuse it.
+  Medit3Reader(std::istream& in, const std::string& name, bool quadrilaterals = false)
+      : in_(in, name), quadrilaterals_(quadrilaterals) {}
+
+  const std::vector<std::array<std::uint32_t, 4>>& quads() const noexcept { return quads_; }
+  const std::vector<int>& quad_refs() const noexcept { return quad_refs_; }
 
   MeshData3 read() {
     bool have_version = false;
@@ -29,6 +36,7 @@ class Medit3Reader {
     bool have_edges = false;
     bool have_triangles = false;
     bool have_tetrahedra = false;
+    bool have_quadrilaterals = false;
     while (in_.next_line()) {
       const std::string_view kw = in_.token(0);
       if (!have_version && kw != "MeshVersionFormatted") {
@@ -56,6 +64,9 @@ class Medit3Reader {
       } else if (kw == "Triangles") {
         begin_cells("Triangles", have_vertices, have_triangles);
         read_cells<3>("Triangles", "triangle", mesh_.triangles, mesh_.triangle_refs);
+      } else if (kw == "Quadrilaterals" && quadrilaterals_) {
+        begin_cells("Quadrilaterals", have_vertices, have_quadrilaterals);
+        read_cells<4>("Quadrilaterals", "quadrilateral", quads_, quad_refs_);
       } else if (kw == "Tetrahedra") {
         begin_cells("Tetrahedra", have_vertices, have_tetrahedra);
         read_cells<4>("Tetrahedra", "tetrahedron", mesh_.tetrahedra, mesh_.tetrahedron_refs);
@@ -64,7 +75,11 @@ class Medit3Reader {
         if (in_.next_line()) in_.fail("text after End: " + quote(in_.token(0)));
         return std::move(mesh_);
       } else {
-        io::medit_refuse_keyword(in_, kw, "3D reader", kKeptKeywords);
+        if (quadrilaterals_) {
+          io::medit_refuse_keyword(in_, kw, "3D surface reader", kSurfaceKeywords);
+        } else {
+          io::medit_refuse_keyword(in_, kw, "3D reader", kKeptKeywords);
+        }
       }
     }
     in_.fail_at(std::max<std::uint64_t>(in_.line(), 1), "file ends before End (truncated?)");
@@ -106,7 +121,9 @@ class Medit3Reader {
       in_.expect_tokens(N + 1, what + kFields[N]);
       std::array<std::uint32_t, N> cell{};
       for (std::size_t k = 0; k < N; ++k) cell[k] = io::vertex_number(in_, k, 1, nv, what);
-      if constexpr (N == 4) check_positive(cell, what);
+      if constexpr (N == 4) {
+        if (noun == "tetrahedron") check_positive(cell, what);
+      }
       cells.push_back(cell);
       refs.push_back(io::int_field(in_, N, what + " reference"));
     }
@@ -124,7 +141,10 @@ class Medit3Reader {
   }
 
   LineTokenizer in_;
+  bool quadrilaterals_ = false;
   MeshData3 mesh_;
+  std::vector<std::array<std::uint32_t, 4>> quads_;
+  std::vector<int> quad_refs_;
 };
 
 }  // namespace
@@ -136,6 +156,38 @@ MeshData3 read_medit3(std::istream& in, const std::string& file_name) {
 MeshData3 read_medit3(const std::string& path) {
   std::ifstream in = io::open_for_reading(path);
   return read_medit3(in, path);
+}
+
+Plc3 read_medit3_surface(std::istream& in, const std::string& file_name) {
+  Medit3Reader reader(in, file_name, true);
+  MeshData3 mesh = reader.read();
+  if (!mesh.tetrahedra.empty()) {
+    throw InputError(file_name + " has " + std::to_string(mesh.tetrahedra.size()) +
+                     " tetrahedra: a volume mesh, where a surface (Vertices, Triangles, Quadrilaterals, Edges) is "
+                     "expected");
+  }
+  Plc3 plc;
+  plc.vertices = std::move(mesh.vertices);
+  plc.vertex_markers = std::move(mesh.vertex_refs);
+  plc.facets.reserve(mesh.triangles.size() + reader.quads().size() + mesh.edges.size());
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
+    plc.facets.push_back({{{t[0], t[1], t[2]}}, {}, mesh.triangle_refs[i]});
+  }
+  for (std::size_t i = 0; i < reader.quads().size(); ++i) {
+    const auto& q = reader.quads()[i];
+    plc.facets.push_back({{{q[0], q[1], q[2], q[3]}}, {}, reader.quad_refs()[i]});
+  }
+  for (std::size_t i = 0; i < mesh.edges.size(); ++i) {
+    const auto& e = mesh.edges[i];
+    plc.facets.push_back({{{e[0], e[1]}}, {}, mesh.edge_refs[i]});
+  }
+  return plc;
+}
+
+Plc3 read_medit3_surface(const std::string& path) {
+  std::ifstream in = io::open_for_reading(path);
+  return read_medit3_surface(in, path);
 }
 
 void write_medit3(std::ostream& out, const MeshData3& mesh) {

@@ -6,6 +6,7 @@
 //   Edges       n   then n lines  v1 v2 ref          (vertex numbers from 1)
 //   Triangles   n   then n lines  v1 v2 v3 ref
 //   Tetrahedra  n   then n lines  v1 v2 v3 v4 ref    (positive: orient3d(v1, v2, v3, v4) > 0)
+//   Quadrilaterals n then n lines v1 v2 v3 v4 ref    (read_medit3_surface only)
 //   End
 //
 // The layout rules are the 2D reader's (medit.hpp): a keyword's value on its line or the next,
@@ -22,12 +23,22 @@
 #include <string>
 
 #include "mesh/io/mesh_data3.hpp"
+#include "mesh/io/tetgen_poly.hpp"
 
 namespace dtlab {
 
 // `file_name` names the input in error messages.
 MeshData3 read_medit3(std::istream& in, const std::string& file_name);
 MeshData3 read_medit3(const std::string& path);
+
+// A surface as a PLC (mesh/io/tetgen_poly.hpp): the same layout, with Quadrilaterals read too;
+// one facet of one polygon per element, triangles first, then quadrilaterals, then edges (2-corner
+// polygons), each with its reference as marker; vertex_markers = the vertex references. Planarity
+// and simplicity of a quadrilateral are decided later, exactly
+// (algorithms/constrained3d/facet_triangulation.hpp). A file with Tetrahedra is an InputError (a
+// volume mesh, not a surface).
+Plc3 read_medit3_surface(std::istream& in, const std::string& file_name);
+Plc3 read_medit3_surface(const std::string& path);
 
 // Throws InputError naming the element if a vertex number is out of range or a refs vector is
 // neither empty nor the size of its elements. Orientation is not checked here (the reader does).

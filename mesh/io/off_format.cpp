@@ -52,11 +52,19 @@ VertexLayout parse_header_keyword(const LineTokenizer& in) {
   return layout;
 }
 
+// What the reader collects: the vertices and each face's corners (in file order); read_off
+// turns it into triangles, read_off_surface into one polygon facet per face.
+struct OffContent {
+  std::vector<Vec3> vertices;
+  std::vector<std::vector<std::uint32_t>> faces;
+};
+
 class OffReader {
  public:
-  OffReader(std::istream& in, const std::string& name) : in_(in, name) {}
+  // polygons: faces of more than 3 vertices are read (read_off_surface) rather than refused.
+  OffReader(std::istream& in, const std::string& name, bool polygons) : in_(in, name), polygons_(polygons) {}
 
-  MeshData3 read() {
+  OffContent read() {
     if (!in_.next_line()) in_.fail_at(1, "empty file: missing the OFF header");
     const VertexLayout layout = parse_header_keyword(in_);
     if (in_.size() == 2 && in_.token(1) == "BINARY") in_.fail("binary OFF is not supported (only ASCII OFF)");
@@ -75,7 +83,7 @@ class OffReader {
     if (in_.next_line()) {
       in_.fail("more lines than the header's " + std::to_string(nf) + " faces: " + quote(in_.token(0)));
     }
-    return std::move(mesh_);
+    return std::move(content_);
   }
 
  private:
@@ -92,47 +100,73 @@ class OffReader {
         io::check_coordinate(in_, c[k], what + kAxes[k]);
       }
       for (std::size_t k = 3; k < in_.size(); ++k) in_.real(k, what + " field " + std::to_string(k + 1));
-      mesh_.vertices.push_back(Vec3{c[0], c[1], c[2]});
+      content_.vertices.push_back(Vec3{c[0], c[1], c[2]});
     }
-    mesh_.vertex_refs.assign(mesh_.vertices.size(), 0);
   }
 
   void read_faces(std::uint64_t n) {
-    const std::uint64_t nv = mesh_.vertices.size();
+    const std::uint64_t nv = content_.vertices.size();
     for (std::uint64_t i = 0; i < n; ++i) {
       io::next_counted_entry(in_, i, n, "faces");
       const std::string what = "face " + std::to_string(i);
       const std::uint64_t corners = in_.count(0, what + " vertex count");
       if (corners < 3) in_.fail(what + " has " + std::to_string(corners) + " vertices; a face needs 3");
-      if (corners > 3) {
+      if (corners > 3 && !polygons_) {
         in_.fail(what + " has " + std::to_string(corners) +
-                 " vertices: a polygon. This reader keeps triangles only (MeshData3); a PLC facet with more "
-                 "than 3 vertices is a polygon facet, which TetGen's .poly format can carry");
+                 " vertices: a polygon. read_off keeps triangles only (MeshData3); read_off_surface, which "
+                 "`dtlab constrain` uses, reads polygons as PLC facets");
       }
-      if (in_.size() < 4) in_.fail(what + ": expected 3 vertex numbers, found " + std::to_string(in_.size() - 1));
-      const std::size_t colour = in_.size() - 4;
+      if (in_.size() < corners + 1) {
+        in_.fail(what + ": expected " + std::to_string(corners) + " vertex numbers, found " +
+                 std::to_string(in_.size() - 1));
+      }
+      const std::size_t colour = in_.size() - 1 - corners;
       if (colour != 0 && colour != 1 && colour != 3 && colour != 4) {
         in_.fail(what + ": " + std::to_string(colour) + " numbers after the vertex numbers; a face colour has 1, 3 or 4");
       }
-      std::array<std::uint32_t, 3> t{};
-      for (std::size_t k = 0; k < 3; ++k) t[k] = io::vertex_number(in_, 1 + k, 0, nv, what);
-      for (std::size_t k = 4; k < in_.size(); ++k) in_.real(k, what + " colour");
-      mesh_.triangles.push_back(t);
+      std::vector<std::uint32_t> face(corners);
+      for (std::size_t k = 0; k < corners; ++k) face[k] = io::vertex_number(in_, 1 + k, 0, nv, what);
+      for (std::size_t k = 1 + corners; k < in_.size(); ++k) in_.real(k, what + " colour");
+      content_.faces.push_back(std::move(face));
     }
-    mesh_.triangle_refs.assign(mesh_.triangles.size(), 0);
   }
 
   LineTokenizer in_;
-  MeshData3 mesh_;
+  bool polygons_ = false;
+  OffContent content_;
 };
 
 }  // namespace
 
-MeshData3 read_off(std::istream& in, const std::string& file_name) { return OffReader(in, file_name).read(); }
+MeshData3 read_off(std::istream& in, const std::string& file_name) {
+  OffContent content = OffReader(in, file_name, false).read();
+  MeshData3 mesh;
+  mesh.vertices = std::move(content.vertices);
+  mesh.vertex_refs.assign(mesh.vertices.size(), 0);
+  mesh.triangles.reserve(content.faces.size());
+  for (const auto& f : content.faces) mesh.triangles.push_back({f[0], f[1], f[2]});
+  mesh.triangle_refs.assign(mesh.triangles.size(), 0);
+  return mesh;
+}
 
 MeshData3 read_off(const std::string& path) {
   std::ifstream in = io::open_for_reading(path);
   return read_off(in, path);
+}
+
+Plc3 read_off_surface(std::istream& in, const std::string& file_name) {
+  OffContent content = OffReader(in, file_name, true).read();
+  Plc3 plc;
+  plc.vertices = std::move(content.vertices);
+  plc.vertex_markers.assign(plc.vertices.size(), 0);
+  plc.facets.resize(content.faces.size());
+  for (std::size_t f = 0; f < content.faces.size(); ++f) plc.facets[f].polygons.push_back(std::move(content.faces[f]));
+  return plc;
+}
+
+Plc3 read_off_surface(const std::string& path) {
+  std::ifstream in = io::open_for_reading(path);
+  return read_off_surface(in, path);
 }
 
 void write_off(std::ostream& out, const MeshData3& mesh) {

@@ -10,16 +10,19 @@
 // kept either. '#' comments and blank lines may appear anywhere. Messages name vertices and
 // faces by their 0-based number, as OFF itself does.
 //
-// MeshData3 holds triangles, so every face must have exactly 3 vertices: a face with more is a
-// polygon, refused by name with a ParseError (a PLC facet with more than 3 vertices is a polygon
-// facet, which TetGen's .poly format carries: mesh/io/tetgen_poly.hpp). Refused by name too: the
+// read_off fills a MeshData3, which holds triangles, so there every face must have exactly 3
+// vertices: a face with more is a polygon, refused by name with a ParseError. read_off_surface
+// reads every face of 3 or more vertices as a PLC facet of one polygon (mesh/io/tetgen_poly.hpp:
+// facet i is face i, corners in file order, marker 0); whether a polygon is planar and simple is
+// not the reader's business (algorithms/constrained3d/facet_triangulation.hpp decides it
+// exactly). Refused by name in both: the
 // 4OFF (4D) and nOFF (n-dimensional) variants, binary OFF ("OFF BINARY"), an unknown header.
 // Every other deviation is a ParseError naming the file and line: counts that do not match the
 // entries, a vertex number out of range, a coordinate outside kernel/coordinate_range.hpp, a
 // face with fewer than 3 vertices, text after the last face. Nothing is repaired: repeated
 // vertices, degenerate faces and open or non-manifold surfaces are the PLC check's business.
 //
-// The reader fills vertex_refs and triangle_refs with 0 (OFF has no references).
+// The readers fill vertex_refs and triangle_refs (vertex_markers) with 0 (OFF has no references).
 #pragma once
 
 #include <istream>
@@ -27,12 +30,15 @@
 #include <string>
 
 #include "mesh/io/mesh_data3.hpp"
+#include "mesh/io/tetgen_poly.hpp"
 
 namespace dtlab {
 
 // `file_name` names the input in error messages.
 MeshData3 read_off(std::istream& in, const std::string& file_name);
 MeshData3 read_off(const std::string& path);
+Plc3 read_off_surface(std::istream& in, const std::string& file_name);
+Plc3 read_off_surface(const std::string& path);
 
 // Writes "OFF", the counts (0 edges), the vertices and the triangles. References have no place in
 // OFF and are not written. Edges or tetrahedra (which OFF cannot hold), or a vertex number out of

@@ -84,6 +84,9 @@ void write_tetgen_poly(const std::string& path, const Plc3& plc);
 void write_tetgen_smesh(std::ostream& out, const Plc3& plc);
 void write_tetgen_smesh(const std::string& path, const Plc3& plc);
 
+// mesh/io's own split of the facets, kept for writers and the reader fuzz target: `dtlab
+// constrain` triangulates facets with algorithms/constrained3d/facet_triangulation.hpp instead
+// (any simple planar polygon, holes, exact checks, the constrained Delaunay triangulation).
 // The PLC's facets as a triangle surface: vertices and vertex_refs = vertex_markers; each
 // triangle polygon becomes a triangle, each 2-corner polygon an edge, both with their facet's
 // marker as reference; a 1-corner polygon adds nothing (its vertex is among the vertices). A

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
+#include "algorithms/constrained3d/facet_triangulation.hpp"
 #include "mesh/io/surface_input.hpp"
 #include "verify/checks_constrained3d.hpp"
 
@@ -38,7 +39,8 @@ struct CheckedResult {
 
 CheckedResult run(const std::filesystem::path& file, const std::string& method) {
   const SurfaceInput s = read_surface(file.string());
-  const ConstrainedInput3 in{.points = s.surface.vertices, .triangles = s.surface.triangles, .triangle_refs = {},
+  const FacetTriangulation facets = triangulate_facets(s.plc);
+  const ConstrainedInput3 in{.points = s.plc.vertices, .triangles = facets.triangles, .triangle_refs = {},
                              .holes = {}, .regions = {}};
   CheckedResult r;
   r.result = constrained3d(in, {.method = method});

@@ -111,6 +111,30 @@ TEST(PlcChecks, OpenSurfaceNamesItsFreeEdges) {
   EXPECT_EQ(r.free_edges.size(), 3u);
 }
 
+TEST(PlcChecks, FaceNamesSayWhichFacetATriangleWasCutFrom) {
+  Surface s = join(cube(), cube({0.5, 0.25, 0.25}));
+  const FaceNamer name = [](std::uint32_t f) { return "quadrilateral " + std::to_string(f / 2 + 1); };
+  try {
+    check_plc(s.points, s.faces, name);
+    ADD_FAILURE() << "interpenetrating cubes passed";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("vertex: quadrilateral 2 and quadrilateral 9, quadrilateral 2 and quadrilateral 9, "
+                        "quadrilateral 2 and quadrilateral 11"),
+              std::string::npos)
+        << what;
+  }
+  s = cube();
+  s.faces.push_back(s.faces[3]);
+  EXPECT_NE(error_of(s).find("faces 4 and 13"), std::string::npos) << error_of(s);
+  try {
+    check_plc(s.points, s.faces, name);
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("duplicate face pair(s): quadrilateral 2 and quadrilateral 7"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(PlcChecks, InterpenetratingCubesNameTheFaces) {
   const Surface s = join(cube(), cube({0.5, 0.25, 0.25}));
   const PlcReport r = inspect_plc(s.points, s.faces);

@@ -1,8 +1,10 @@
-// The surface readers (OFF, STL ASCII and binary, TetGen .poly/.smesh, read_surface): round trips
-// keep every bit, STL encoding is told by the size rule, STL vertices merge only when bitwise
-// identical, polygons become triangles only when planar and strictly convex (decided exactly),
-// every malformed input is a ParseError at the right line (or byte offset), and real OFF and
-// STL surfaces from Debian's CGAL data read as closed or open surfaces as they should.
+// The surface readers (OFF, STL ASCII and binary, TetGen .poly/.smesh, Medit, read_surface):
+// round trips keep every bit, STL encoding is told by the size rule, STL vertices merge only when
+// bitwise identical, mesh/io's own fan split of polygons (triangulate_plc_facets) takes planar
+// strictly convex ones only (decided exactly), read_surface carries OFF polygons and Medit
+// Quadrilaterals as polygon facets named as their files number them, every malformed input is a
+// ParseError at the right line (or byte offset), and real OFF and STL surfaces from Debian's CGAL
+// data read as closed or open surfaces (or polygon facets) as they should.
 #include <bit>
 #include <cmath>
 #include <cstdlib>
@@ -19,6 +21,7 @@
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit3.hpp"
+#include "mesh/io/obj_format.hpp"
 #include "mesh/io/off_format.hpp"
 #include "mesh/io/stl_format.hpp"
 #include "mesh/io/surface_input.hpp"
@@ -140,7 +143,7 @@ TEST(Off, ReadsPrefixedHeadersColoursCommentsAndCountsOnTheHeaderLine) {
 
 TEST(Off, PolygonIsRefusedByName) {
   expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n", kReadOff, 7, "face 0 has 4 vertices: a polygon");
-  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n", kReadOff, 7, ".poly");
+  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n", kReadOff, 7, "read_off_surface");
 }
 
 TEST(Off, MalformedInputIsAParseErrorAtItsLine) {
@@ -535,6 +538,80 @@ TEST(TriangulatePlcFacets, RefusesWhatItCannotSplitExactly) {
   EXPECT_EQ(triangulate_plc_facets(star).triangles.size(), 3u);
 }
 
+// --- Polygon facets: OFF and Medit Quadrilaterals ----------------------------------------------------
+
+TEST(OffSurface, ReadsPolygonsAsFacetsWithTheirColoursSkipped) {
+  std::istringstream in("OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 2 0\n5 0 1 4 2 3 0.5 0.5 0.5\n3 0 3 1\n");
+  const Plc3 plc = read_off_surface(in, "input.txt");
+  ASSERT_EQ(plc.facets.size(), 2u);
+  EXPECT_EQ(plc.facets[0].polygons, (std::vector<std::vector<std::uint32_t>>{{0, 1, 4, 2, 3}}));
+  EXPECT_EQ(plc.facets[1].polygons, (std::vector<std::vector<std::uint32_t>>{{0, 3, 1}}));
+  EXPECT_EQ(plc.facets[0].marker, 0);
+  EXPECT_EQ(plc.vertex_markers, std::vector<int>(5, 0));
+  const auto read = [](std::istream& s) { read_off_surface(s, "input.txt"); };
+  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2\n", read, 7, "face 0: expected 4 vertex numbers, found 3");
+  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 4\n", read, 7, "vertex number 4 out of range");
+  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 1 2\n", read, 7, "2 numbers after the vertex numbers");
+  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 1\n", read, 7, "face 0 has 2 vertices; a face needs 3");
+}
+
+TEST(ObjSurface, ReadsFacesOfEveryCornerFormAndNegativeNumbers) {
+  std::istringstream in(
+      "# a square and a triangle\nmtllib a.mtl\no square\nv 0 0 0\nv 1 0 0\nv 1 1 0 1\nv 0 1 0 0.5 0.5 0.5\n"
+      "vt 0 0\nvn 0 0 1\ns off\nusemtl red\nf 1/1/1 2//1 3/1 4\ng tip\nf -4 -1 5\nv 0.5 0.5 1\nl 1 3 5\np 2\n");
+  const Plc3 plc = read_obj_surface(in, "input.txt");
+  ASSERT_EQ(plc.vertices.size(), 5u);
+  EXPECT_EQ(plc.vertices[4], (Vec3{0.5, 0.5, 1}));
+  EXPECT_EQ(plc.vertex_markers, std::vector<int>(5, 0));
+  ASSERT_EQ(plc.facets.size(), 4u);
+  EXPECT_EQ(plc.facets[0].polygons, (std::vector<std::vector<std::uint32_t>>{{0, 1, 2, 3}}));
+  EXPECT_EQ(plc.facets[1].polygons, (std::vector<std::vector<std::uint32_t>>{{0, 3, 4}}));  // 5: given later
+  EXPECT_EQ(plc.facets[2].polygons, (std::vector<std::vector<std::uint32_t>>{{0, 2}}));
+  EXPECT_EQ(plc.facets[3].polygons, (std::vector<std::vector<std::uint32_t>>{{2, 4}}));
+  const auto read = [](std::istream& s) { read_obj_surface(s, "input.txt"); };
+  const std::string v3 = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  expect_parse_error(v3 + "f 1 2\n", read, 4, "face 1 has 2 corners; a face needs 3");
+  expect_parse_error(v3 + "f 1 2 0\n", read, 4, "face 1: vertex number 0");
+  expect_parse_error(v3 + "f 1 2 -4\n", read, 4, "reaches back past the first vertex (3 read so far)");
+  expect_parse_error(v3 + "f 1 2 4\nf 1 2 3\n", read, 4, "vertex number 4 out of range 1..3");
+  expect_parse_error(v3 + "f 1 2 3/x\n", read, 4, "is not v, v/vt, v//vn or v/vt/vn");
+  expect_parse_error(v3 + "f 1 2 3/1/1/1\n", read, 4, "is not v, v/vt, v//vn or v/vt/vn");
+  expect_parse_error(v3 + "f 1 2 \\\n3\n", read, 4, "continued with");
+  expect_parse_error(v3 + "curv 0 1 1 2\n", read, 4, "free-form geometry ('curv')");
+  expect_parse_error(v3 + "vx 1\n", read, 4, "unknown OBJ keyword 'vx'");
+  expect_parse_error("v 0 0 0 2\n", read, 1, "w = 2; rational vertices");
+  expect_parse_error("v 0 0\n", read, 1, "expected x y z [w] or x y z r g b, found 2 numbers");
+  expect_parse_error("v 0 0 nan\n", read, 1, "vertex z");
+}
+
+TEST(MeditSurface, ReadsQuadrilateralsAfterTrianglesAndEdgesLast) {
+  const std::string text =
+      "MeshVersionFormatted 2\nDimension 3\nVertices 5\n0 0 0 1\n1 0 0 2\n1 1 0 3\n0 1 0 4\n0 0 1 5\n"
+      "Quadrilaterals 1\n1 2 3 4 9\nTriangles 1\n1 2 5 8\nEdges 1\n1 5 6\nEnd\n";
+  std::istringstream in(text);
+  const Plc3 plc = read_medit3_surface(in, "input.txt");
+  EXPECT_EQ(plc.vertex_markers, (std::vector<int>{1, 2, 3, 4, 5}));
+  ASSERT_EQ(plc.facets.size(), 3u);
+  EXPECT_EQ(plc.facets[0], (PlcFacet3{{{0, 1, 4}}, {}, 8}));
+  EXPECT_EQ(plc.facets[1], (PlcFacet3{{{0, 1, 2, 3}}, {}, 9}));
+  EXPECT_EQ(plc.facets[2], (PlcFacet3{{{0, 4}}, {}, 6}));
+  // read_medit3 (MeshData3 has no quadrilaterals) still refuses the section by name.
+  std::istringstream again(text);
+  try {
+    read_medit3(again, "input.txt");
+    ADD_FAILURE() << "Quadrilaterals accepted by read_medit3";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.line(), 9u);
+    EXPECT_NE(std::string(e.what()).find("'Quadrilaterals' is not supported by the 3D reader"), std::string::npos)
+        << e.what();
+  }
+  const auto read = [](std::istream& s) { read_medit3_surface(s, "input.txt"); };
+  expect_parse_error("MeshVersionFormatted 2\nDimension 3\nVertices 1\n0 0 0 0\nQuadrilaterals 1\n1 1 1 2 0\nEnd\n",
+                     read, 6, "vertex number 2 out of range");
+  expect_parse_error("MeshVersionFormatted 2\nDimension 3\nVertices 1\n0 0 0 0\nHexahedra 0\nEnd\n", read, 5,
+                     "not supported by the 3D surface reader (it keeps Vertices, Edges, Triangles, Quadrilaterals and Tetrahedra)");
+}
+
 // --- read_surface ----------------------------------------------------------------------------------
 
 TEST(ReadSurface, ChoosesTheReaderByExtension) {
@@ -552,15 +629,22 @@ TEST(ReadSurface, ChoosesTheReaderByExtension) {
   write_tetgen_poly((dir / "cube.poly").string(), plc);
   write_tetgen_smesh((dir / "cube.smesh").string(), plc);
 
-  EXPECT_EQ(read_surface((dir / "tet.off").string()).surface, tet);
-  EXPECT_EQ(read_surface((dir / "tet.STL").string()).surface, tet);
-  EXPECT_EQ(read_surface((dir / "tet.mesh").string()).surface, with_refs);
+  EXPECT_EQ(read_surface((dir / "tet.off").string()).plc, plc_from_triangles(tet));
+  EXPECT_EQ(read_surface((dir / "tet.STL").string()).plc, plc_from_triangles(tet));
+  const SurfaceInput medit = read_surface((dir / "tet.mesh").string());
+  EXPECT_EQ(medit.plc, plc_from_triangles(with_refs));
+  EXPECT_EQ(medit.facet_name(3), "triangle 4");
+  EXPECT_EQ(medit.facet_name(4), "edge 1");
+  EXPECT_EQ(read_surface((dir / "tet.off").string()).facet_name(2), "face 2");
+  std::ofstream((dir / "tet.OBJ").string()) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n";
+  const SurfaceInput obj = read_surface((dir / "tet.OBJ").string());
+  EXPECT_EQ(obj.plc.facets.size(), 4u);
+  EXPECT_EQ(obj.facet_name(3), "facet 4");
   for (const char* name : {"cube.poly", "cube.smesh"}) {
     const SurfaceInput s = read_surface((dir / name).string());
-    EXPECT_EQ(s.surface, triangulate_plc_facets(plc)) << name;
-    EXPECT_EQ(s.holes, plc.holes) << name;
-    EXPECT_EQ(s.regions, plc.regions) << name;
-    EXPECT_TRUE(is_closed(s.surface)) << name;
+    EXPECT_EQ(s.plc, plc) << name;
+    EXPECT_EQ(s.facet_name(0), "facet 1") << name;
+    EXPECT_TRUE(is_closed(triangulate_plc_facets(s.plc))) << name;
   }
 
   MeshData3 volume = tet;
@@ -569,7 +653,7 @@ TEST(ReadSurface, ChoosesTheReaderByExtension) {
                                                    "0 1 0 0\n0 0 1 0\nTetrahedra 1\n1 2 3 4 0\nEnd\n";
   expect_input_error([&] { read_surface((dir / "volume.mesh").string()); }, "1 tetrahedra: a volume mesh");
   expect_input_error([&] { read_surface((dir / "tet.ply").string()); },
-                     "unknown surface file extension '.ply'; supported: .off, .stl, .poly, .smesh, .mesh");
+                     "unknown surface file extension '.ply'; supported: .off, .obj, .stl, .poly, .smesh, .mesh");
   expect_input_error([&] { read_surface((dir / "tet").string()); }, "extension (none)");
   EXPECT_THROW(read_surface((dir / "missing.off").string()), ParseError);
 }
@@ -601,8 +685,7 @@ TEST(RealData, CgalOffAndStlSurfaces) {
   if (dir.empty()) GTEST_SKIP() << kCgalData << " (Debian package libcgal-demo) is absent";
 
   for (const std::string& name : closed) {
-    const SurfaceInput s = read_surface((dir / name).string());
-    const MeshData3& m = s.surface;
+    const MeshData3 m = triangulate_plc_facets(read_surface((dir / name).string()).plc);
     EXPECT_TRUE(is_closed(m)) << name;
     // A closed surface of genus 0: V - E + F = 2, so every vertex was merged where it should be.
     const auto edges = static_cast<std::int64_t>(edge_uses(m).size());
@@ -610,23 +693,31 @@ TEST(RealData, CgalOffAndStlSurfaces) {
         << name;
   }
   for (const std::string& name : open) {
-    const SurfaceInput s = read_surface((dir / name).string());
-    EXPECT_FALSE(is_closed(s.surface)) << name;
-    EXPECT_FALSE(s.surface.triangles.empty()) << name;
+    const MeshData3 m = triangulate_plc_facets(read_surface((dir / name).string()).plc);
+    EXPECT_FALSE(is_closed(m)) << name;
+    EXPECT_FALSE(m.triangles.empty()) << name;
   }
-  // Quadrilaterals and a pentagon: refused by name at their line (lines counted in the files).
+  // Quadrilaterals and a pentagon: read_off refuses them by name at their line (lines counted in
+  // the files); read_surface carries them as polygon facets.
   for (const auto& [name, line] : std::vector<std::pair<std::string, std::uint64_t>>{{"cube_quad.off", 11},
                                                                                      {"mesh_with_colors.off", 23}}) {
     try {
-      read_surface((dir / name).string());
+      read_off((dir / name).string());
       ADD_FAILURE() << name << " was not refused";
     } catch (const ParseError& e) {
       EXPECT_EQ(e.line(), line) << e.what();
       EXPECT_NE(std::string(e.what()).find("a polygon"), std::string::npos) << e.what();
     }
   }
+  const Plc3 cube_quad = read_surface((dir / "cube_quad.off").string()).plc;
+  ASSERT_EQ(cube_quad.facets.size(), 6u);
+  for (const PlcFacet3& f : cube_quad.facets) EXPECT_EQ(f.polygons, (std::vector<std::vector<std::uint32_t>>{f.polygons[0]}));
+  EXPECT_EQ(cube_quad.facets[0].polygons[0], (std::vector<std::uint32_t>{0, 3, 7, 4}));
+  const Plc3 colours = read_surface((dir / "mesh_with_colors.off").string()).plc;
+  EXPECT_TRUE(std::any_of(colours.facets.begin(), colours.facets.end(),
+                          [](const PlcFacet3& f) { return f.polygons[0].size() == 5; }));
   // The binary sphere written back in both encodings reads back the same.
-  const MeshData3 sphere = read_surface((dir / "sphere.stl").string()).surface;
+  const MeshData3 sphere = read_stl((dir / "sphere.stl").string());
   for (StlEncoding e : {StlEncoding::Ascii, StlEncoding::Binary}) {
     std::stringstream again;
     write_stl(again, sphere, e);

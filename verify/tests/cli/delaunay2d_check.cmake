@@ -173,6 +173,23 @@ elseif(CASE STREQUAL "duplicates")
     fail("stderr does not count 3 duplicates")
   endif()
 
+elseif(CASE STREQUAL "bad_option_values")
+  # Every numeric option of `dtlab delaunay` out of range, negative or not an integer is refused
+  # naming the option (a negative count once wrapped around to a huge one).
+  foreach(args "--random;-5" "--random;0" "--random;2.5" "--random;800000000" "--random;100;--threads;-1"
+               "--random;100;--threads;0" "--random;100;--threads;5000" "--random;100;--dim;4"
+               "--random;100;--dim;-2" "--random;100;--seed;-3" "--random;100;--seed;x")
+    run(delaunay ${args})
+    list(GET args -2 option)
+    list(GET args -1 value)
+    expect_failure("${option}: Value ${value} ")
+    if(value MATCHES "^-")
+      expect_failure("${option}: Value ${value} is negative")
+    endif()
+  endforeach()
+  run(delaunay --random 100 --seed 18446744073709551615)
+  expect_success()
+
 else()
   message(FATAL_ERROR "unknown CASE '${CASE}'")
 endif()

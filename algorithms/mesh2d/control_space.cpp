@@ -1,0 +1,71 @@
+// The control space (control_space.hpp): point location in the background by the visibility walk
+// of Mesh2, then the metric interpolated from the triangle's vertices (kernel/metric.hpp).
+#include "algorithms/mesh2d/control_space.hpp"
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include "kernel/error.hpp"
+#include "mesh/mesh2_from_data.hpp"
+
+namespace dtlab {
+
+ControlSpace2::ControlSpace2(const MeshData2& background, std::vector<Metric2> metrics, MetricInterpolation mode)
+    : ControlSpace2(background.triangles.empty() ? Mesh2{} : mesh2_from_data(background), std::move(metrics), mode) {
+  if (background.triangles.empty()) throw InputError("the background mesh has no triangle");
+  if (metrics_.size() != background.vertices.size()) {
+    throw InputError("the background mesh has " + std::to_string(background.vertices.size()) + " vertices but " +
+                     std::to_string(metrics_.size()) + " metrics are given");
+  }
+}
+
+ControlSpace2::ControlSpace2(Mesh2 background, std::vector<Metric2> metrics, MetricInterpolation mode)
+    : mesh_(std::move(background)), metrics_(std::move(metrics)), mode_(mode) {
+  for (std::uint32_t t = 0; t < mesh_.triangle_capacity(); ++t) {
+    if (mesh_.is_alive(t) && !mesh_.is_ghost(t)) {
+      start_ = t;
+      break;
+    }
+  }
+  if (start_ == kNoHint) return;  // the MeshData2 constructor names the problem
+  if (metrics_.size() < mesh_.vertex_capacity()) {
+    throw InputError("the control space has " + std::to_string(metrics_.size()) + " metrics for " +
+                     std::to_string(mesh_.vertex_capacity()) + " background vertices");
+  }
+  validate();
+}
+
+void ControlSpace2::validate() const {
+  for (std::uint32_t v = 0; v < mesh_.vertex_capacity(); ++v) {
+    if (mesh_.is_dead_vertex(v)) continue;
+    if (!metrics_[v].is_positive_definite()) {
+      throw InputError("the metric at background vertex " + std::to_string(v + 1) + " is not positive definite", {v});
+    }
+  }
+}
+
+Metric2 ControlSpace2::metric_at(const Vec2& p, std::uint32_t& hint) const {
+  DTLAB_ASSERT(start_ != kNoHint);
+  std::uint32_t from = hint < mesh_.triangle_capacity() && mesh_.is_alive(hint) ? hint : start_;
+  Mesh2::Location loc = mesh_.locate(p, from);
+  std::uint32_t t = loc.triangle;
+  if (mesh_.is_ghost(t)) t = Mesh2::triangle_of(mesh_.twin(Mesh2::half_edge(t, 0)));
+  hint = t;
+  const std::array<std::uint32_t, 3> v{mesh_.vertex(t, 0), mesh_.vertex(t, 1), mesh_.vertex(t, 2)};
+  const Vec2 &a = mesh_.point(v[0]), &b = mesh_.point(v[1]), &c = mesh_.point(v[2]);
+  // Barycentric weights in doubles, clamped to the triangle (a point outside the background takes
+  // the metric at the nearest point of the triangle reached, up to the clamping).
+  const double area = cross(b - a, c - a);
+  std::array<double, 3> w{cross(b - p, c - p) / area, cross(c - p, a - p) / area, 0.0};
+  w[0] = std::clamp(w[0], 0.0, 1.0);
+  w[1] = std::clamp(w[1], 0.0, 1.0);
+  w[2] = std::max(0.0, 1.0 - w[0] - w[1]);
+  const double sum = w[0] + w[1] + w[2];
+  for (double& x : w) x /= sum;
+  const std::array<Metric2, 3> m{metrics_[v[0]], metrics_[v[1]], metrics_[v[2]]};
+  if (m[0] == m[1] && m[1] == m[2]) return m[0];
+  return interpolate(std::span<const Metric2>(m), std::span<const double>(w), mode_);
+}
+
+}  // namespace dtlab

@@ -1,0 +1,138 @@
+// The local operators of 2D mesh optimization (book §8.3-§8.4) on the shared mesh
+// (mesh/mesh2.hpp), one a file: edge swap (swap.cpp), vertex relocation toward the optimal
+// point of its ball (relocate.cpp), edge collapse (collapse.cpp), edge split (split.cpp),
+// valence relaxation (valence.cpp). strategy.cpp (optimize2d.hpp) orders them.
+//
+// Every operator follows §8.6.1: it simulates its result (validity by exact orient2d on every
+// new triangle, quality Q_K of kernel/quality.hpp in the vertex metrics) and applies it only when
+// the criterion holds. None crosses a constrained edge, touches a ghost or an exterior triangle,
+// or merges two regions (an edge between triangles of different references is treated as
+// constrained); none moves or removes a vertex flagged Mesh2::kFixed or Mesh2::kOnBoundary.
+// After each one the mesh passes Mesh2::check().
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "kernel/metric.hpp"
+#include "kernel/vec.hpp"
+#include "mesh/mesh2.hpp"
+
+namespace dtlab {
+
+// The control space: the metric wanted at any point of the domain (the generator's
+// ControlSpace2, a constant size, ...). An empty function means "interpolate from the
+// neighbouring vertices" (split) or "keep the vertex's metric" (relocation).
+using MetricField2 = std::function<Metric2(const Vec2&)>;
+
+// The unit mesh of the book (§5.3, §9): edges of metric length in [1/sqrt2, sqrt2]. An edge
+// shorter is collapsed, one longer split; a collapse may not create an edge longer than the
+// upper bound, so that the two never undo each other.
+inline constexpr double kShortEdgeLength = 0.70710678118654752440;  // 1/sqrt2
+inline constexpr double kLongEdgeLength = 1.41421356237309504880;   // sqrt2
+// A strict improvement is one below (1 - margin) times the old value: no cycling on rounding.
+inline constexpr double kImprovementMargin = 1e-6;
+// A collapse may leave the ball's worst Q_K at the old worst or at this, whichever is larger
+// (Q <= 2: the book's first quality class, §8.2.2 and Tables 7.1-7.3).
+inline constexpr double kCollapseQualityLimit = 2.0;
+
+// --- Edge swap (book §8.3.1) ---------------------------------------------------------------------
+// Swaps the diagonal of half-edge h's quadrilateral when the worst Q_K of the pair strictly
+// improves (by the relative `margin`) and both new triangles are positive. False (nothing
+// changed) when h is constrained, between regions, beside a ghost or an exterior triangle, or
+// when the swap is invalid or does not improve.
+bool try_swap(Mesh2& mesh, std::uint32_t h, double margin = kImprovementMargin);
+
+struct SwapPassResult {
+  std::uint64_t swaps = 0;
+  bool limit_reached = false;  // stopped at the swap bound (a safety net: never reached in tests)
+};
+// Swaps with a work queue until no edge improves: the edges of `seeds` (half-edges; empty: every
+// edge of the domain, worst pair first), and the four outer edges of each swapped pair. At most
+// 20 swaps per live triangle + 1000.
+SwapPassResult swap_pass(Mesh2& mesh, double margin = kImprovementMargin, std::span<const std::uint32_t> seeds = {});
+
+// --- Relocation (book §8.4.1, (8.13)-(8.17)) ---------------------------------------------------
+struct RelocateOptions {
+  double margin = kImprovementMargin;  // the ball's worst Q_K must improve by this, relative
+  std::uint32_t tries = 6;             // relaxation w = 1, 1/2, ..., 2^-(tries-1)
+};
+// Moves a free vertex v (no kFixed / kOnBoundary flag, every triangle around it in one region
+// of the domain, no constrained edge at it) to P' = (1 - w) P + w P*, P* the optimal point of its
+// ball: the mean, weighted by the triangles' Q_K, of the points I_j that make each ring edge an
+// equilateral triangle in the edge's metric (§8.4.1 "optimal shape relocation", Brière de l'Isle
+// and George 1995, weights a_j = Q_Kj). The first w, from 1 down, for which every triangle of the
+// ball is positive and the ball's worst Q_K improves is kept; the vertex's metric is `field` at
+// P' (unchanged when the field is empty). True when v moved.
+bool try_relocate(Mesh2& mesh, std::uint32_t v, const MetricField2& field, const RelocateOptions& options = {});
+// One sweep: every free vertex once, worst ball first. Returns the number of vertices moved.
+std::uint64_t relocate_sweep(Mesh2& mesh, const MetricField2& field, const RelocateOptions& options = {});
+
+// --- Collapse (book §8.3.5, edge suppression by reduction) -------------------------------------
+struct CollapseOptions {
+  double short_length = kShortEdgeLength;  // collapse_pass: edges shorter than this, in the metric
+  double long_length = kLongEdgeLength;    // no new edge may be longer than this
+  double quality_limit = kCollapseQualityLimit;
+  double margin = kImprovementMargin;
+};
+enum class CollapseCriterion : std::uint8_t {
+  // The new worst Q_K of the ball is at most max(old worst, quality_limit): a size operation.
+  NotWorse,
+  // The new worst Q_K is strictly below the old worst (margin): a shape operation.
+  Improve,
+};
+// Collapses the edge of h onto one of its ends: the other end (which must be free as in
+// try_relocate) is removed and its triangles reconnected to the kept end; the two triangles of
+// the edge disappear. Both directions are tried when both ends are free, the better result kept.
+// Accepted when the link condition holds (the ends share exactly the two opposite vertices), every
+// new triangle is positive, no new edge is longer than long_length, and the criterion holds.
+bool try_collapse(Mesh2& mesh, std::uint32_t h, const CollapseOptions& options = {},
+                  CollapseCriterion criterion = CollapseCriterion::NotWorse);
+// Collapses every edge shorter than short_length, shortest first (edges made short by a collapse
+// join the queue). Returns the number of collapses.
+std::uint64_t collapse_pass(Mesh2& mesh, const CollapseOptions& options = {});
+
+// --- Split (book §8.3.6) -----------------------------------------------------------------------
+struct SplitOptions {
+  double long_length = kLongEdgeLength;  // split_pass: edges longer than this, in the metric
+  // No split makes an edge from the new vertex to an opposite vertex shorter than this: without
+  // it, triangles beside an edge that may not be split (a long boundary edge) would be split
+  // without end, ever flatter.
+  double short_length = kShortEdgeLength;
+  // Split constrained edges (and edges between regions) too: 1 -> 2 in each triangle beside the
+  // edge (ghosts included), the constraint and its reference carried to both halves, the new
+  // vertex kOnBoundary. Off by default: the boundary discretisation is the input's.
+  bool boundary = false;
+  double swap_margin = kImprovementMargin;  // the swaps around each new vertex
+  std::uint64_t max_vertices = 20'000'000;  // split_pass stops short of this many live vertices
+};
+// The point of edge ab where both halves have the same metric length, with the length varying
+// geometrically along the edge (the interpolation of kernel/metric.hpp edge_length): a + s (b - a),
+// s = ln((1 + r) / 2) / ln r, r = l_b / l_a (s = 1/2 when r = 1).
+Vec2 metric_midpoint(const Vec2& a, const Metric2& ma, const Vec2& b, const Metric2& mb) noexcept;
+// Splits the edge of h at its metric midpoint (metric from `field`, else interpolated from the
+// ends): 2 -> 4. Refused (kNone) for a constrained edge or an edge between regions unless
+// options.boundary, for an edge beside no domain triangle, when a new finite triangle would not
+// be positive, or when an edge from the new vertex to an opposite vertex would be shorter than
+// options.short_length. Returns the new vertex. No swaps here (split_pass does them).
+std::uint32_t try_split(Mesh2& mesh, std::uint32_t h, const MetricField2& field, const SplitOptions& options = {});
+struct SplitPassResult {
+  std::uint64_t splits = 0;
+  std::uint64_t swaps = 0;
+  bool limit_reached = false;  // stopped at options.max_vertices
+};
+// Splits every edge longer than long_length, longest first, each followed by swaps on the edges
+// around the new vertex; halves still too long join the queue.
+SplitPassResult split_pass(Mesh2& mesh, const MetricField2& field, const SplitOptions& options = {});
+
+// --- Valence relaxation (book §8.3.7; Frey and Field 1991) ---------------------------------------
+// Swaps the edges whose swap brings the degrees of the four vertices involved closer to their
+// targets (6 inside; on the boundary 1 + the number of 60-degree sectors of the domain angle, at
+// least 3), decided on the sum of squared deviations, when the swap is valid and does not make
+// the pair's worst Q_K worse. One pass over the edges in storage order; returns the swaps.
+std::uint64_t valence_pass(Mesh2& mesh);
+
+}  // namespace dtlab

@@ -1,0 +1,183 @@
+// The optimization strategy of book §8.6.3 in 2D: classify the triangles by Q_K, treat the bad
+// ones worst first with the operator sequence their pathology calls for (a flat "cap" is cured
+// by swapping its longest edge or moving its vertices, a "needle" by collapsing its short edge:
+// Frey and George, "Mesh Generation", §18.3), then apply each operator to the whole mesh (sizes
+// by collapse and split toward a unit mesh, swaps, relocation sweeps), and repeat while a round
+// still improves the worst or the mean quality significantly (§8.6.3's stopping criterion).
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <utility>
+#include <cstdio>
+#include <cstdlib>
+
+#include "algorithms/optimize2d/local.hpp"
+#include "algorithms/optimize2d/optimize2d.hpp"
+
+namespace dtlab {
+
+using optimize2d_detail::edge_length;
+using optimize2d_detail::triangle_quality;
+
+QualitySummary2 summarize_quality(const Mesh2& mesh) {
+  QualitySummary2 s;
+  double sum = 0.0;
+  std::uint64_t finite = 0;
+  for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) {
+    if (!mesh.in_domain(t)) continue;
+    const double q = triangle_quality(mesh, t);
+    ++s.triangles;
+    s.worst = std::max(s.worst, q);
+    if (std::isfinite(q)) {
+      sum += q;
+      ++finite;
+    }
+  }
+  s.mean = finite > 0 ? sum / static_cast<double>(finite) : 0.0;
+  return s;
+}
+
+namespace {
+void dbg(const Mesh2& mesh, const char* what) {
+  if (!std::getenv("OPTDBG")) return;
+  double mn = 1e300; QualitySummary2 q = summarize_quality(mesh);
+  for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) { if (!mesh.in_domain(t)) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) { auto h = Mesh2::half_edge(t,i); mn = std::min(mn, edge_length(mesh, mesh.origin(h), mesh.destination(h))); } }
+  std::fprintf(stderr, "%-10s tri %llu worst %.3g mean %.3g minlen %.3g\n", what, (unsigned long long)q.triangles, q.worst, q.mean, mn);
+}
+
+// The bad triangles, worst first: for each, the operators of its pathology until one applies.
+void treat_bad_triangles(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field,
+                         Optimize2dStats& stats) {
+  struct Bad {
+    double quality;
+    std::uint32_t t;
+    std::array<std::uint32_t, 3> vertices;
+  };
+  std::vector<Bad> bad;
+  for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) {
+    if (!mesh.in_domain(t)) continue;
+    const double q = triangle_quality(mesh, t);
+    if (q > options.bad_quality) bad.push_back({q, t, {mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2)}});
+  }
+  std::sort(bad.begin(), bad.end(),
+            [](const Bad& x, const Bad& y) { return x.quality > y.quality || (x.quality == y.quality && x.t < y.t); });
+  for (const Bad& b : bad) {
+    const std::uint32_t t = b.t;
+    // An earlier operation may have changed or freed the slot.
+    if (!mesh.in_domain(t) || mesh.vertex(t, 0) != b.vertices[0] || mesh.vertex(t, 1) != b.vertices[1] ||
+        mesh.vertex(t, 2) != b.vertices[2]) {
+      continue;
+    }
+    // Edges by metric length, longest first: edge i is opposite vertex i.
+    std::array<std::pair<double, std::uint32_t>, 3> edges;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = Mesh2::half_edge(t, i);
+      edges[i] = {edge_length(mesh, mesh.origin(h), mesh.destination(h)), h};
+    }
+    std::sort(edges.begin(), edges.end(), [](const auto& x, const auto& y) {
+      return x.first > y.first || (x.first == y.first && x.second < y.second);
+    });
+    bool done = false;
+    if (options.swaps) {
+      for (const auto& e : edges) {
+        if (try_swap(mesh, e.second, options.swap_margin)) {
+          ++stats.swaps;
+          done = true;
+          break;
+        }
+      }
+    }
+    if (done) continue;
+    if (options.relocation) {
+      for (const std::uint32_t v : b.vertices) {
+        if (try_relocate(mesh, v, field, options.relocate)) {
+          ++stats.relocations;
+          done = true;
+        }
+      }
+    }
+    if (done || !options.collapses) continue;
+    if (try_collapse(mesh, edges[2].second, options.collapse, CollapseCriterion::Improve)) ++stats.collapses;
+  }
+}
+
+}  // namespace
+
+Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field) {
+  const auto start = std::chrono::steady_clock::now();
+  Optimize2dStats stats;
+  const QualitySummary2 before = summarize_quality(mesh);
+  stats.worst_before = before.worst;
+  stats.mean_before = before.mean;
+  stats.triangles_before = before.triangles;
+  stats.vertices_before = mesh.live_vertex_count();
+  QualitySummary2 last = before;
+  stats.stopped_by = "max_rounds";
+  for (std::uint32_t round = 0; round < options.max_rounds; ++round) {
+    ++stats.rounds;
+    std::uint64_t size_changes = 0;
+    bool limit = false;
+    dbg(mesh, "start");
+    treat_bad_triangles(mesh, options, field, stats);
+    dbg(mesh, "bad");
+    if (options.collapses) {
+      const std::uint64_t c = collapse_pass(mesh, options.collapse);
+      stats.collapses += c;
+      size_changes += c;
+    }
+    dbg(mesh, "collapse");
+    if (options.splits) {
+      const SplitPassResult r = split_pass(mesh, field, options.split);
+      stats.splits += r.splits;
+      stats.swaps += r.swaps;
+      size_changes += r.splits;
+      if (r.limit_reached) {
+        stats.stopped_by = "vertex_limit";
+        limit = true;
+      }
+    }
+    auto swaps = [&] {
+      if (!options.swaps) return;
+      const SwapPassResult r = swap_pass(mesh, options.swap_margin);
+      stats.swaps += r.swaps;
+      if (r.limit_reached) {
+        stats.stopped_by = "swap_limit";
+        limit = true;
+      }
+    };
+    dbg(mesh, "split");
+    swaps();
+    dbg(mesh, "swap");
+    if (options.relocation) {
+      for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
+        const std::uint64_t moved = relocate_sweep(mesh, field, options.relocate);
+        stats.relocations += moved;
+        if (moved == 0) break;
+      }
+    }
+    dbg(mesh, "relocate");
+    if (options.valence) {
+      stats.valence_swaps += valence_pass(mesh);
+      swaps();
+    }
+    const QualitySummary2 now = summarize_quality(mesh);
+    const double keep = 1.0 - options.round_improvement;
+    const bool improved = now.worst < last.worst * keep || now.mean < last.mean * keep;
+    last = now;
+    if (limit) break;
+    if (!improved && size_changes == 0) {
+      stats.stopped_by = "converged";
+      break;
+    }
+  }
+  stats.worst_after = last.worst;
+  stats.mean_after = last.mean;
+  stats.triangles_after = last.triangles;
+  stats.vertices_after = mesh.live_vertex_count();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+}  // namespace dtlab

@@ -1,0 +1,91 @@
+// Edge swap of book §8.3.1: the diagonal of the quadrilateral of two triangles is replaced by the
+// other one when the worst shape quality Q_K of the pair (in the vertex metrics, §8.2) strictly
+// improves. Validity is exact (orient2d of both new triangles: a strictly convex quadrilateral).
+// The pass is the queue-driven one of §8.6.2: worst pairs first, the neighbours of each swap
+// queued again; each swap lowers the pair's worst Q_K, so the pass ends (the bound is a net).
+#include <algorithm>
+#include <deque>
+#include <utility>
+
+#include "algorithms/optimize2d/local.hpp"
+#include "algorithms/optimize2d/operators.hpp"
+#include "kernel/predicates.hpp"
+#include "kernel/quality.hpp"
+
+namespace dtlab {
+
+using optimize2d_detail::is_locked;
+using optimize2d_detail::quality;
+using optimize2d_detail::triangle_quality;
+
+bool try_swap(Mesh2& mesh, std::uint32_t h, double margin) {
+  if (is_locked(mesh, h)) return false;
+  const std::uint32_t g = mesh.twin(h);
+  // t1 = (p, a, b) with h = a -> b; t2 = (q, b, a). New pair (p, a, q), (q, b, p).
+  const std::uint32_t p = mesh.vertex_at(h), a = mesh.origin(h), b = mesh.destination(h), q = mesh.vertex_at(g);
+  if (orient2d(mesh.point(p), mesh.point(a), mesh.point(q)) != Sign::Positive ||
+      orient2d(mesh.point(q), mesh.point(b), mesh.point(p)) != Sign::Positive) {
+    return false;
+  }
+  const double before = std::max(triangle_quality(mesh, Mesh2::triangle_of(h)), triangle_quality(mesh, Mesh2::triangle_of(g)));
+  const double after = std::max(quality(mesh, p, a, q), quality(mesh, q, b, p));
+  if (!(after < before * (1.0 - margin))) return false;
+  mesh.flip(h);
+  return true;
+}
+
+SwapPassResult swap_pass(Mesh2& mesh, double margin, std::span<const std::uint32_t> seeds) {
+  SwapPassResult result;
+  // One queue entry per edge: the smaller of its two half-edges, marked while queued.
+  std::vector<std::uint8_t> queued(3ull * mesh.triangle_capacity(), 0);
+  std::deque<std::uint32_t> queue;
+  auto canonical = [&](std::uint32_t h) { return std::min(h, mesh.twin(h)); };
+  auto push = [&](std::uint32_t h) {
+    if (is_locked(mesh, h)) return;
+    const std::uint32_t e = canonical(h);
+    if (queued[e]) return;
+    queued[e] = 1;
+    queue.push_back(e);
+  };
+  if (seeds.empty()) {
+    // Every unlocked edge, the worst pair first (ties by half-edge: deterministic).
+    std::vector<std::pair<double, std::uint32_t>> order;
+    for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) {
+      if (!mesh.in_domain(t)) continue;
+      const double qt = triangle_quality(mesh, t);
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t h = Mesh2::half_edge(t, i);
+        if (is_locked(mesh, h) || mesh.twin(h) < h) continue;
+        order.emplace_back(std::max(qt, triangle_quality(mesh, Mesh2::triangle_of(mesh.twin(h)))), h);
+      }
+    }
+    std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) {
+      return x.first > y.first || (x.first == y.first && x.second < y.second);
+    });
+    for (const auto& entry : order) push(entry.second);
+  } else {
+    for (const std::uint32_t h : seeds) push(h);
+  }
+  const std::uint64_t bound = 20ull * mesh.live_triangle_count() + 1000;
+  while (!queue.empty()) {
+    const std::uint32_t h = queue.front();
+    queue.pop_front();
+    queued[h] = 0;
+    if (!mesh.is_alive(Mesh2::triangle_of(h))) continue;
+    // flip keeps both slots (with other vertices): the quadrilateral's outer edges are edges of
+    // these two triangles.
+    const std::uint32_t t1 = Mesh2::triangle_of(h), t2 = Mesh2::triangle_of(mesh.twin(h));
+    if (!try_swap(mesh, h, margin)) continue;
+    if (++result.swaps >= bound) {
+      result.limit_reached = true;
+      break;
+    }
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      push(Mesh2::half_edge(t1, i));
+      push(Mesh2::half_edge(t2, i));
+    }
+  }
+  return result;
+}
+
+}  // namespace dtlab

@@ -1,0 +1,169 @@
+// `dtlab mesh`: 2D mesh generation governed by a control space (algorithms/mesh2d, book §5):
+// the domain is a planar straight line graph (Triangle .poly, or Medit .mesh with Edges) whose
+// segments are the boundary discretisation; the sizes are classical (from that discretisation),
+// a uniform --size, a size map (--size-map S.sol, scalars) or a metric map (--metric M.sol,
+// symmetric tensors) given at the vertices of --background (default: the input, whose own
+// Triangles serve as the background when it has them, else its constrained triangulation).
+// Output: Medit .mesh with Triangles (region references) and Edges (segment markers).
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include "algorithms/mesh2d/mesh2d.hpp"
+#include "apps/cli_util.hpp"
+#include "apps/graph_input.hpp"
+#include "apps/subcommands.hpp"
+#include "kernel/error.hpp"
+#include "mesh/io/medit.hpp"
+#include "mesh/io/medit_sol.hpp"
+#include "mesh/mesh_quality.hpp"
+#include "verify/checks_mesh2d.hpp"
+
+namespace dtlab::cli {
+
+namespace {
+
+struct MeshArgs {
+  std::string input, output, output_metric;
+  double size = 0.0;  // 0: not given
+  std::string size_map, metric, background;
+  std::string method = "edge";
+  std::string interpolation = "sizes";
+  bool no_optimize = false, stats = false, verify = false;
+};
+
+// A uniform metric: a background of two triangles around the input (the metric is the same at
+// every vertex, so where the walk ends does not matter).
+ControlSpace2 uniform_control_space(const std::vector<Vec2>& points, double h) {
+  double x0 = points.front().x, x1 = x0, y0 = points.front().y, y1 = y0;
+  for (const Vec2& p : points) {
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  }
+  MeshData2 box;
+  box.vertices = {{x0 - 1, y0 - 1}, {x1 + 1, y0 - 1}, {x1 + 1, y1 + 1}, {x0 - 1, y1 + 1}};
+  box.vertex_refs.assign(4, 0);
+  box.triangles = {{0, 1, 2}, {0, 2, 3}};
+  box.triangle_refs.assign(2, 0);
+  return ControlSpace2(box, std::vector<Metric2>(4, Metric2::isotropic(h)));
+}
+
+std::vector<Metric2> read_metrics(const MeshArgs& args, std::size_t vertex_count, const std::string& against) {
+  const std::string& file = args.size_map.empty() ? args.metric : args.size_map;
+  const SolData sol = read_medit_sol(file);
+  if (sol.dimension != 2) throw InputError(file + ": a " + std::to_string(sol.dimension) + "D solution for a 2D domain");
+  if (!args.size_map.empty() && sol.kind != SolData::Kind::Scalar)
+    throw InputError(file + ": --size-map wants scalar sizes; this file holds tensors (use --metric)");
+  if (!args.metric.empty() && sol.kind != SolData::Kind::Tensor)
+    throw InputError(file + ": --metric wants symmetric tensors; this file holds scalar sizes (use --size-map)");
+  check_sol_matches(sol, vertex_count, file + " (against " + against + ")");
+  return metrics2_from_sol(sol, file);
+}
+
+int run_mesh(const MeshArgs& args) {
+  const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
+  if (given > 1) throw InputError("give one of --size, --size-map, --metric");
+  if (!args.background.empty() && args.size_map.empty() && args.metric.empty())
+    throw InputError("--background needs --size-map or --metric (the file of values at its vertices)");
+  const GraphInput graph = read_graph(args.input, false);
+  const PolyData2& poly = graph.poly;
+  if (poly.points.empty()) throw InputError(args.input + ": no vertices");
+
+  Mesh2dInput input{.points = poly.points,
+                    .segments = poly.segments,
+                    .segment_markers = poly.segment_markers,
+                    .holes = poly.holes,
+                    .regions = graph.regions};
+  Mesh2dOptions options;
+  options.method = args.method;
+  options.optimize = !args.no_optimize;
+  options.first_number = graph.first_number;
+  options.interpolation = args.interpolation == "log-euclidean" ? MetricInterpolation::LogEuclidean : MetricInterpolation::Sizes;
+  std::optional<ControlSpace2> control;
+  std::vector<Metric2> input_metrics;
+  if (args.size > 0) {
+    control.emplace(uniform_control_space(poly.points, args.size));
+  } else if (given == 1) {
+    if (!args.background.empty()) {
+      const MeshData2 background = read_medit2(args.background);
+      control.emplace(background, read_metrics(args, background.vertices.size(), args.background), options.interpolation);
+    } else if (!graph.medit.triangles.empty()) {
+      control.emplace(graph.medit, read_metrics(args, graph.medit.vertices.size(), args.input), options.interpolation);
+    } else {
+      input_metrics = read_metrics(args, poly.points.size(), args.input);
+      options.input_metrics = input_metrics;
+    }
+  }
+  if (control) options.control = &*control;
+
+  Mesh2dResult result;
+  try {
+    result = mesh2d(input, options);
+  } catch (const InputError& e) {
+    throw InputError(args.input + ": " + e.what(), e.items());
+  }
+  const double peak_mb = peak_rss_mb();
+  for (const std::string& m : result.messages) std::cerr << "dtlab: " << m << "\n";
+
+  bool ok = true;
+  if (args.verify) {
+    const MeshCheckReport2 report = check_mesh2d(input, result.output, graph.first_number);
+    std::cout << to_text(report);
+    ok = report.ok;
+  }
+  if (!args.output.empty()) write_medit2(args.output, result.output);
+  if (!args.output_metric.empty()) write_medit_sol(args.output_metric, sol_from_metrics(result.output_metrics));
+  if (args.stats) {
+    const QualityReport quality = measure_quality(result.output.vertices, result.output.triangles, result.output_metrics);
+    std::cout << quality_table(quality);
+    const Mesh2dStats& s = result.stats;
+    const double per_minute = s.seconds > 0 ? static_cast<double>(result.output.triangles.size()) * 60.0 / s.seconds : 0.0;
+    std::ostringstream json;
+    json << "{\"input\":" << json_string(args.input) << ",\"method\":" << json_string(args.method)
+         << ",\"points\":" << s.input_points << ",\"segments\":" << s.segments
+         << ",\"vertices\":" << result.output.vertices.size() << ",\"triangles\":" << result.output.triangles.size()
+         << ",\"field_points\":" << s.field_points << ",\"filtered\":" << s.filtered
+         << ",\"not_inserted\":" << s.not_inserted << ",\"passes\":" << s.passes
+         << ",\"cavity_corrections\":" << s.cavity_corrections << ",\"swaps\":" << s.swaps
+         << ",\"relocations\":" << s.relocations << ",\"collapses\":" << s.collapses << ",\"splits\":" << s.splits
+         << ",\"seconds\":" << json_number(s.seconds) << ",\"seconds_empty_mesh\":" << json_number(s.seconds_empty_mesh)
+         << ",\"seconds_control_space\":" << json_number(s.seconds_control_space)
+         << ",\"seconds_field_points\":" << json_number(s.seconds_field_points)
+         << ",\"seconds_optimization\":" << json_number(s.seconds_optimization)
+         << ",\"triangles_per_minute\":" << json_number(per_minute) << ",\"peak_rss_mb\":" << json_number(peak_mb)
+         << ",\"quality\":" << quality_json(quality) << "}";
+    std::cout << json.str() << "\n";
+  }
+  return ok ? 0 : 3;
+}
+
+}  // namespace
+
+void add_mesh(CLI::App& app) {
+  auto args = std::make_shared<MeshArgs>();
+  CLI::App* cmd = app.add_subcommand("mesh", "2D mesh generation governed by sizes or a metric (book chapter 5)");
+  cmd->add_option("input", args->input,
+                  "Domain: Triangle .poly (vertices, segments with markers, holes, regions) or Medit .mesh (Vertices, "
+                  "Edges with references); the segments are the boundary discretisation")
+      ->required();
+  cmd->add_option("-o,--output", args->output, "Write OUT.mesh (Medit): Vertices, Edges with markers, Triangles with regions");
+  cmd->add_option("--size", args->size, "Uniform target size H (> 0)")->check(CLI::PositiveNumber);
+  cmd->add_option("--size-map", args->size_map, "Medit .sol/.solb of scalar sizes at the vertices of --background");
+  cmd->add_option("--metric", args->metric, "Medit .sol/.solb of symmetric tensors (m11 m12 m22) at the vertices of --background");
+  cmd->add_option("--background", args->background,
+                  "Medit .mesh holding the --size-map / --metric vertices (default: the input; its Triangles, or its "
+                  "constrained triangulation)");
+  cmd->add_option("--method", args->method, "Field points: edge (the edge method) or front (advancing front)")
+      ->check(CLI::IsMember({"edge", "front"}));
+  cmd->add_option("--interpolation", args->interpolation, "Metric interpolation: sizes (default) or log-euclidean")
+      ->check(CLI::IsMember({"sizes", "log-euclidean"}));
+  cmd->add_option("--output-metric", args->output_metric, "Write the metric at the output vertices (Medit .sol)");
+  cmd->add_flag("--no-optimize", args->no_optimize, "Skip the optimization step");
+  cmd->add_flag("--stats", args->stats, "Print the quality table and one JSON object (counts, phases, quality) last");
+  cmd->add_flag("--verify", args->verify,
+                "Check the output exactly (validity, segments as chains, regions, area); exit 3 if it fails");
+  cmd->callback([args] { exit_code() = run_mesh(*args); });
+}
+
+}  // namespace dtlab::cli

@@ -1,0 +1,190 @@
+// `dtlab optimize MESH -o OUT [--metric M.sol | --size H] [--stats]`: 2D mesh optimization
+// (algorithms/optimize2d, book §8) of a Medit .mesh or Triangle .ele: swaps, relocation,
+// collapses and splits toward a unit mesh in the metric, the boundary (the file's boundary edges
+// and Edges entries, constrained) kept as it is. The metric: H^-2 I (--size), one per vertex
+// from a .sol (--metric; the input mesh is its background, interpolated at moved and new
+// points), or, with neither, the mesh's own sizes (each vertex: the mean length of its edges), so
+// that only the shapes change. Prints the quality tables (mesh/mesh_quality.hpp) before and
+// after; --stats adds one JSON line with the operation counts and both reports.
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "algorithms/mesh2d/control_space.hpp"
+#include "algorithms/optimize2d/optimize2d.hpp"
+#include "apps/cli_util.hpp"
+#include "apps/input_files.hpp"
+#include "apps/subcommands.hpp"
+#include "kernel/error.hpp"
+#include "mesh/io/medit_sol.hpp"
+#include "mesh/mesh2_from_data.hpp"
+#include "mesh/mesh_quality.hpp"
+
+namespace dtlab::cli {
+
+namespace {
+
+struct OptimizeArgs {
+  std::string input;
+  std::string output;
+  std::string metric;
+  std::string size;  // kept as text: refused with our own message, exit code 1
+  bool size_given = false;
+  std::uint32_t rounds = Optimize2dOptions{}.max_rounds;
+  bool shape_only = false;
+  bool boundary_splits = false;
+  bool valence = false;
+  bool stats = false;
+};
+
+double parse_size(const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  const double h = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(h) || !(h > 0.0))
+    throw InputError("--size " + text + ": give a positive finite size H (the metric H^-2 I)");
+  return h;
+}
+
+// Each vertex's size: the mean Euclidean length of the triangle edges at it (each edge counted
+// from each triangle beside it: a mean weighted toward interior edges, which is what sizes are).
+std::vector<Metric2> implied_metrics(const MeshData2& data) {
+  std::vector<double> sum(data.vertices.size(), 0.0);
+  std::vector<std::uint32_t> count(data.vertices.size(), 0);
+  for (const auto& t : data.triangles) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = t[i], b = t[(i + 1) % 3];
+      if (a >= data.vertices.size() || b >= data.vertices.size()) continue;  // mesh2_from_data names it
+      const double l = norm(data.vertices[b] - data.vertices[a]);
+      sum[a] += l;
+      sum[b] += l;
+      ++count[a];
+      ++count[b];
+    }
+  }
+  std::vector<Metric2> metrics(data.vertices.size());
+  for (std::size_t v = 0; v < metrics.size(); ++v)
+    if (count[v] > 0 && sum[v] > 0.0) metrics[v] = Metric2::isotropic(sum[v] / count[v]);
+  return metrics;
+}
+
+// The domain as a file, with the metric of each of its vertices, and the input's vertex
+// references kept for the boundary vertices (never moved or removed; the others are 0).
+struct Snapshot {
+  MeshData2 data;
+  std::vector<Metric2> metrics;
+};
+
+Snapshot snapshot(const Mesh2& mesh, const MeshData2& input) {
+  Snapshot s;
+  std::vector<std::uint32_t> ids;
+  s.data = mesh.domain(&ids);
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    s.metrics.push_back(mesh.metric(ids[i]));
+    const std::uint32_t v = ids[i];
+    if (v < input.vertex_refs.size() && (mesh.flags(v) & Mesh2::kOnBoundary) != 0) s.data.vertex_refs[i] = input.vertex_refs[v];
+  }
+  return s;
+}
+
+int run_optimize(const OptimizeArgs& args) {
+  if (args.input.empty()) throw InputError("give a MESH file (Medit .mesh, Triangle .ele)");
+  if (args.size_given && !args.metric.empty())
+    throw InputError("--size " + args.size + ": give either --size or --metric");
+  if (input_dimension(args.input) != 2)
+    throw InputError(args.input + ": a 3D mesh; dtlab optimize works on 2D triangle meshes");
+  const MeshData2 input = read_mesh2(args.input);
+  std::vector<Metric2> metrics;
+  if (args.size_given) {
+    metrics.assign(input.vertices.size(), Metric2::isotropic(parse_size(args.size)));
+  } else if (!args.metric.empty()) {
+    const SolData sol = read_medit_sol(args.metric);
+    check_sol_matches(sol, input.vertices.size(), args.metric);
+    metrics = metrics2_from_sol(sol, args.metric);
+  } else {
+    metrics = implied_metrics(input);
+  }
+  Mesh2 mesh;
+  try {
+    mesh = mesh2_from_data(input);
+  } catch (const InputError& e) {
+    throw InputError(args.input + ": " + e.what(), e.items());
+  }
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v)
+    if (!mesh.is_dead_vertex(v)) mesh.set_metric(v, metrics[v]);
+
+  // The control space: constant for --size, else the input mesh as background.
+  MetricField2 field;
+  std::shared_ptr<ControlSpace2> control;
+  if (args.size_given) {
+    const Metric2 m = metrics.front();
+    field = [m](const Vec2&) { return m; };
+  } else {
+    control = std::make_shared<ControlSpace2>(input, metrics);
+    auto hint = std::make_shared<std::uint32_t>(ControlSpace2::kNoHint);
+    field = [control, hint](const Vec2& p) { return control->metric_at(p, *hint); };
+  }
+
+  const Snapshot before = snapshot(mesh, input);
+  const QualityReport report_before = measure_quality(before.data.vertices, before.data.triangles, before.metrics);
+  Optimize2dOptions options;
+  options.max_rounds = args.rounds;
+  options.collapses = options.splits = !args.shape_only;
+  options.split.boundary = args.boundary_splits;
+  options.valence = args.valence;
+  const Optimize2dStats stats = optimize2d(mesh, options, field);
+  const Snapshot after = snapshot(mesh, input);
+  const QualityReport report_after = measure_quality(after.data.vertices, after.data.triangles, after.metrics);
+  if (!args.output.empty()) write_mesh2(args.output, after.data);
+
+  std::cout << "before:\n" << quality_table(report_before) << "after:\n" << quality_table(report_after);
+  std::cout << "operations: " << stats.swaps << " swaps, " << stats.relocations << " relocations, " << stats.collapses
+            << " collapses, " << stats.splits << " splits, " << stats.valence_swaps << " valence swaps in "
+            << stats.rounds << " rounds (" << stats.stopped_by << ")\n";
+  if (args.stats) {
+    std::ostringstream json;
+    json << "{\"input\":" << json_string(args.input) << ",\"swaps\":" << stats.swaps
+         << ",\"relocations\":" << stats.relocations << ",\"collapses\":" << stats.collapses
+         << ",\"splits\":" << stats.splits << ",\"valence_swaps\":" << stats.valence_swaps
+         << ",\"rounds\":" << stats.rounds << ",\"stopped_by\":" << json_string(stats.stopped_by)
+         << ",\"worst_before\":" << json_number(stats.worst_before) << ",\"mean_before\":" << json_number(stats.mean_before)
+         << ",\"worst_after\":" << json_number(stats.worst_after) << ",\"mean_after\":" << json_number(stats.mean_after)
+         << ",\"triangles_before\":" << stats.triangles_before << ",\"triangles_after\":" << stats.triangles_after
+         << ",\"seconds\":" << json_number(stats.seconds) << ",\"peak_rss_mb\":" << json_number(peak_rss_mb())
+         << ",\"before\":" << quality_json(report_before) << ",\"after\":" << quality_json(report_after) << "}";
+    std::cout << json.str() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_optimize(CLI::App& app) {
+  auto args = std::make_shared<OptimizeArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "optimize",
+      "Optimize a 2D triangle mesh in a metric (book §8): swaps, relocation, collapses and splits toward unit edges; "
+      "the boundary is kept");
+  cmd->add_option("mesh", args->input, "The mesh: Medit .mesh (Edges: its constrained edges) or Triangle .ele");
+  cmd->add_option("-o,--output", args->output, "Write the optimized mesh (Medit .mesh, or Triangle .ele/.node)");
+  cmd->add_option("--metric", args->metric, "Medit .sol with the metric (or size) at the mesh's vertices");
+  CLI::Option* size = cmd->add_option("--size", args->size, "Optimize toward the isotropic size H (the metric H^-2 I)");
+  cmd->add_option("--rounds", args->rounds, "At most this many rounds of the strategy (default 8)")
+      ->check(CLI::Range(0u, 1000u));
+  cmd->add_flag("--shape-only", args->shape_only, "No collapses or splits: swaps and relocation only");
+  cmd->add_flag("--split-boundary", args->boundary_splits,
+                "Split long boundary edges too (the new points lie on them, their references kept)");
+  cmd->add_flag("--valence", args->valence, "Add valence relaxation (degrees toward 6)");
+  cmd->add_flag("--stats", args->stats, "Print one JSON object with the counts and both quality reports as the last line");
+  cmd->callback([args, size] {
+    args->size_given = size->count() > 0;
+    exit_code() = run_optimize(*args);
+  });
+}
+
+}  // namespace dtlab::cli

@@ -1,0 +1,356 @@
+// The shared mutable 2D mesh (mesh2.hpp): storage, free lists, navigation, the visibility walk
+// and the edge flip. Operators that change the mesh live in algorithms/ (one a file).
+#include "mesh/mesh2.hpp"
+
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+
+namespace dtlab {
+
+namespace {
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) noexcept {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | b;
+}
+
+}  // namespace
+
+Mesh2::Mesh2(const Triangulation2& tri, std::span<const int> triangle_refs, std::span<const MeshEdge2> constrained,
+             const Metric2& metric) {
+  const std::size_t n = tri.point_count();
+  const std::size_t nt = tri.triangle_count();
+  if (triangle_refs.size() != nt) {
+    throw InputError("Mesh2: " + std::to_string(triangle_refs.size()) + " triangle references for " +
+                     std::to_string(nt) + " triangles");
+  }
+  points_.assign(tri.points().begin(), tri.points().end());
+  metrics_.assign(n, metric);
+  vertex_flags_.assign(n, kFixed);
+  vertex_triangle_.assign(n, kNone);
+  vertices_ = tri.vertices();
+  neighbours_ = tri.neighbours();
+  refs_.assign(triangle_refs.begin(), triangle_refs.end());
+  constrained_.assign(vertices_.size(), 0);
+  edge_refs_.assign(vertices_.size(), 0);
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    if (is_ghost(t)) refs_[t] = kExterior;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t v = vertices_[3 * t + i];
+      if (v != kInfinite && vertex_triangle_[v] == kNone) vertex_triangle_[v] = t;
+    }
+  }
+  // Vertices no triangle uses (duplicates of the input) are dead slots.
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (vertex_triangle_[v] == kNone) {
+      vertex_flags_[v] = kDead;
+      free_vertices_.push_back(v);
+    }
+  }
+  std::reverse(free_vertices_.begin(), free_vertices_.end());
+  if (constrained.empty()) return;
+  std::unordered_map<std::uint64_t, std::uint32_t> by_edge;
+  by_edge.reserve(constrained.size() * 2);
+  for (std::uint32_t i = 0; i < constrained.size(); ++i) by_edge.emplace(edge_key(constrained[i].a, constrained[i].b), i);
+  std::vector<std::uint8_t> found(constrained.size(), 0);
+  for (std::uint32_t h = 0; h < vertices_.size(); ++h) {
+    const std::uint32_t a = origin(h), b = destination(h);
+    if (a == kInfinite || b == kInfinite) continue;
+    const auto it = by_edge.find(edge_key(a, b));
+    if (it == by_edge.end()) continue;
+    constrained_[h] = 1;
+    edge_refs_[h] = constrained[it->second].ref;
+    found[it->second] = 1;
+    vertex_flags_[a] |= kOnBoundary;
+    vertex_flags_[b] |= kOnBoundary;
+  }
+  for (std::uint32_t i = 0; i < constrained.size(); ++i) {
+    if (!found[i]) {
+      throw InputError("Mesh2: constrained edge " + std::to_string(i) + " (" + std::to_string(constrained[i].a) + ", " +
+                           std::to_string(constrained[i].b) + ") is not an edge of the triangulation",
+                       {i});
+    }
+  }
+}
+
+std::uint32_t Mesh2::add_vertex(const Vec2& p, const Metric2& m, std::uint8_t flags) {
+  DTLAB_ASSERT((flags & kDead) == 0);
+  if (!free_vertices_.empty()) {
+    const std::uint32_t v = free_vertices_.back();
+    free_vertices_.pop_back();
+    points_[v] = p;
+    metrics_[v] = m;
+    vertex_flags_[v] = flags;
+    vertex_triangle_[v] = kNone;
+    return v;
+  }
+  DTLAB_ASSERT(points_.size() < Triangulation2::kMaxPoints);
+  points_.push_back(p);
+  metrics_.push_back(m);
+  vertex_flags_.push_back(flags);
+  vertex_triangle_.push_back(kNone);
+  return static_cast<std::uint32_t>(points_.size() - 1);
+}
+
+void Mesh2::remove_vertex(std::uint32_t v) {
+  DTLAB_ASSERT(!is_dead_vertex(v));
+  vertex_flags_[v] = kDead;
+  vertex_triangle_[v] = kNone;
+  free_vertices_.push_back(v);
+}
+
+std::uint32_t Mesh2::add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, int r) {
+  DTLAB_ASSERT(b != kInfinite && c != kInfinite);
+  std::uint32_t t;
+  if (!free_triangles_.empty()) {
+    t = free_triangles_.back();
+    free_triangles_.pop_back();
+  } else {
+    t = triangle_capacity();
+    DTLAB_ASSERT(3ull * t + 3 < kInfinite);
+    vertices_.resize(vertices_.size() + 3);
+    neighbours_.resize(neighbours_.size() + 3);
+    refs_.push_back(0);
+    constrained_.resize(constrained_.size() + 3);
+    edge_refs_.resize(edge_refs_.size() + 3);
+  }
+  vertices_[3 * t] = a;
+  vertices_[3 * t + 1] = b;
+  vertices_[3 * t + 2] = c;
+  refs_[t] = r;
+  for (std::uint32_t i = 0; i < 3; ++i) {
+    neighbours_[3 * t + i] = kNone;
+    constrained_[3 * t + i] = 0;
+    edge_refs_[3 * t + i] = 0;
+  }
+  if (a != kInfinite) vertex_triangle_[a] = t;
+  vertex_triangle_[b] = t;
+  vertex_triangle_[c] = t;
+  return t;
+}
+
+void Mesh2::remove_triangle(std::uint32_t t) {
+  DTLAB_ASSERT(is_alive(t));
+  vertices_[3 * t] = kNone;
+  free_triangles_.push_back(t);
+}
+
+void Mesh2::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  const std::uint32_t t0 = vertex_triangle_[v];
+  DTLAB_ASSERT(t0 != kNone && is_alive(t0));
+  std::uint32_t h0 = kNone;
+  for (std::uint32_t i = 0; i < 3; ++i) {
+    if (vertices_[3 * t0 + i] == v) h0 = 3 * t0 + i;
+  }
+  DTLAB_ASSERT(h0 != kNone);
+  // Counter-clockwise around v: across next(h) (the edge ending at v), then the half-edge opposite
+  // v in the triangle there is next(twin(next(h))).
+  std::uint32_t h = h0;
+  const std::size_t bound = live_triangle_count() + 1;
+  do {
+    out.push_back(h);
+    if (out.size() > bound) throw InternalError("Mesh2::ball: the triangles around vertex " + std::to_string(v) + " do not close");
+    h = next(neighbours_[next(h)]);
+  } while (h != h0);
+}
+
+std::uint32_t Mesh2::find_half_edge(std::uint32_t u, std::uint32_t v) const {
+  std::vector<std::uint32_t> ring;
+  ball(u, ring);
+  // h opposite u runs a -> b; the edge u -> a is prev(h) (it runs from u to origin(h)).
+  for (const std::uint32_t h : ring) {
+    if (origin(h) == v) return prev(h);
+  }
+  return kNone;
+}
+
+Mesh2::Location Mesh2::locate(const Vec2& p, std::uint32_t start, bool stop_at_constraints) const {
+  DTLAB_ASSERT(start < triangle_capacity() && is_alive(start));
+  std::uint32_t t = start;
+  if (is_ghost(t)) t = triangle_of(neighbours_[3 * t]);
+  std::uint64_t rng = 0x9E3779B97F4A7C15ull ^ (static_cast<std::uint64_t>(start) * 0xBF58476D1CE4E5B9ull);
+  const std::uint64_t bound = 64ull * live_triangle_count() + 64;
+  std::uint32_t came_from = kNone;
+  for (std::uint64_t step = 0; step < bound; ++step) {
+    if (is_ghost(t)) return {Where::Outside, t, kNone, false};
+    // Stochastic visibility walk (Devillers, Pion, Teillaud 2002): test the edges from a random
+    // one, step across the first that has p strictly on its far side.
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    const std::uint32_t first = static_cast<std::uint32_t>(rng % 3);
+    bool moved = false;
+    int zero_edges = 0;
+    std::uint32_t zero_edge = kNone;
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const std::uint32_t h = 3 * t + (first + k) % 3;
+      if (h == came_from) continue;
+      const Sign s = orient2d(points_[origin(h)], points_[destination(h)], p);
+      if (s == Sign::Negative) {
+        if (stop_at_constraints && constrained_[h]) return {Where::Triangle, t, kNone, true};
+        came_from = neighbours_[h];
+        t = triangle_of(came_from);
+        moved = true;
+        break;
+      }
+      if (s == Sign::Zero) {
+        ++zero_edges;
+        zero_edge = h;
+      }
+    }
+    if (moved) continue;
+    // came_from was skipped: p is not strictly beyond it (we came from there), but it may be on it.
+    if (came_from != kNone && orient2d(points_[origin(came_from)], points_[destination(came_from)], p) == Sign::Zero) {
+      ++zero_edges;
+      zero_edge = came_from;
+    }
+    if (zero_edges >= 2) {
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        const std::uint32_t v = vertices_[3 * t + i];
+        if (points_[v] == p) return {Where::Vertex, t, v, false};
+      }
+    }
+    if (zero_edges >= 1) return {Where::Edge, t, zero_edge, false};
+    return {Where::Triangle, t, kNone, false};
+  }
+  throw InternalError("Mesh2::locate: no triangle found for (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                      ") within the step bound");
+}
+
+std::uint32_t Mesh2::flip(std::uint32_t h) {
+  const std::uint32_t g = neighbours_[h];
+  const std::uint32_t t1 = triangle_of(h), t2 = triangle_of(g);
+  DTLAB_ASSERT(is_alive(t1) && is_alive(t2) && !is_ghost(t1) && !is_ghost(t2) && !constrained_[h]);
+  // t1 = (p, a, b) with h = b -> ... : h opposite p runs a -> b; t2 has g opposite q running b -> a.
+  const std::uint32_t p = vertices_[h], a = origin(h), b = destination(h);
+  const std::uint32_t q = vertices_[g];
+  // Outer half-edges and their data: t1's edges b->p (next(h)) and p->a (prev(h)); t2's a->q
+  // (next(g)) and q->b (prev(g)).
+  struct Outer {
+    std::uint32_t twin;
+    std::uint8_t constrained;
+    int ref;
+  };
+  auto outer = [&](std::uint32_t e) { return Outer{neighbours_[e], constrained_[e], edge_refs_[e]}; };
+  const Outer bp = outer(next(h)), pa = outer(prev(h)), aq = outer(next(g)), qb = outer(prev(g));
+  // New t1 = (p, a, q), new t2 = (q, b, p); diagonal p-q: in t1 it is edge 1 (opposite a)
+  // running q -> p; in t2 edge 1 (opposite b) running p -> q.
+  vertices_[3 * t1] = p;
+  vertices_[3 * t1 + 1] = a;
+  vertices_[3 * t1 + 2] = q;
+  vertices_[3 * t2] = q;
+  vertices_[3 * t2 + 1] = b;
+  vertices_[3 * t2 + 2] = p;
+  auto set = [&](std::uint32_t e, const Outer& o) {
+    neighbours_[e] = o.twin;
+    neighbours_[o.twin] = e;
+    constrained_[e] = o.constrained;
+    edge_refs_[e] = o.ref;
+  };
+  // t1 = (p, a, q): edge 0 (a -> q) = aq, edge 2 (p -> a) = pa. t2 = (q, b, p): edge 0 (b -> p) =
+  // bp, edge 2 (q -> b) = qb.
+  set(3 * t1 + 0, aq);
+  set(3 * t1 + 2, pa);
+  set(3 * t2 + 0, bp);
+  set(3 * t2 + 2, qb);
+  link(3 * t1 + 1, 3 * t2 + 1);
+  constrained_[3 * t1 + 1] = constrained_[3 * t2 + 1] = 0;
+  edge_refs_[3 * t1 + 1] = edge_refs_[3 * t2 + 1] = 0;
+  vertex_triangle_[p] = t1;
+  vertex_triangle_[a] = t1;
+  vertex_triangle_[q] = t1;
+  vertex_triangle_[b] = t2;
+  return 3 * t1 + 1;
+}
+
+void Mesh2::check() const {
+  auto fail = [](const std::string& what) { throw InternalError("Mesh2::check: " + what); };
+  const std::uint32_t nt = triangle_capacity();
+  std::vector<std::uint8_t> free_t(nt, 0);
+  for (const std::uint32_t t : free_triangles_) {
+    if (t >= nt || is_alive(t) || free_t[t]) fail("free triangle list holds " + std::to_string(t));
+    free_t[t] = 1;
+  }
+  for (std::uint32_t v : free_vertices_) {
+    if (v >= vertex_capacity() || !is_dead_vertex(v)) fail("free vertex list holds " + std::to_string(v));
+  }
+  std::vector<std::uint8_t> used(vertex_capacity(), 0);
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    if (!is_alive(t)) {
+      if (!free_t[t]) fail("dead triangle " + std::to_string(t) + " not in the free list");
+      continue;
+    }
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = 3 * t + i;
+      const std::uint32_t v = vertices_[h];
+      if (v == kInfinite) {
+        if (i != 0) fail("kInfinite at index " + std::to_string(i) + " of triangle " + std::to_string(t));
+        continue;
+      }
+      if (v >= vertex_capacity() || is_dead_vertex(v)) fail("triangle " + std::to_string(t) + " uses dead vertex " + std::to_string(v));
+      used[v] = 1;
+      const std::uint32_t g = neighbours_[h];
+      if (g == kNone || g >= vertices_.size() || !is_alive(triangle_of(g))) fail("half-edge " + std::to_string(h) + " has no live twin");
+      if (neighbours_[g] != h) fail("half-edge " + std::to_string(h) + " twin not symmetric");
+      if (origin(g) != destination(h) || destination(g) != origin(h)) fail("half-edge " + std::to_string(h) + " twin not reversed");
+      if (constrained_[g] != constrained_[h] || (constrained_[h] && edge_refs_[g] != edge_refs_[h])) {
+        fail("half-edge " + std::to_string(h) + " constrained differently from its twin");
+      }
+    }
+    const std::uint32_t a = vertices_[3 * t], b = vertices_[3 * t + 1], c = vertices_[3 * t + 2];
+    if (a == b || b == c || a == c) fail("triangle " + std::to_string(t) + " repeats a vertex");
+    if (a != kInfinite && orient2d(points_[a], points_[b], points_[c]) != Sign::Positive) {
+      fail("triangle " + std::to_string(t) + " is not positively oriented");
+    }
+  }
+  for (std::uint32_t v = 0; v < vertex_capacity(); ++v) {
+    if (is_dead_vertex(v)) continue;
+    const std::uint32_t t = vertex_triangle_[v];
+    if (t == kNone || t >= nt || !is_alive(t) ||
+        (vertices_[3 * t] != v && vertices_[3 * t + 1] != v && vertices_[3 * t + 2] != v)) {
+      fail("vertex_triangle of vertex " + std::to_string(v) + " is stale");
+    }
+    if (!used[v]) fail("live vertex " + std::to_string(v) + " is used by no triangle");
+  }
+}
+
+MeshData2 Mesh2::domain(std::vector<std::uint32_t>* vertex_ids) const {
+  MeshData2 out;
+  std::vector<std::uint32_t> number(vertex_capacity(), kNone);
+  const std::uint32_t nt = triangle_capacity();
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    if (!in_domain(t)) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) number[vertices_[3 * t + i]] = 0;
+  }
+  if (vertex_ids) vertex_ids->clear();
+  for (std::uint32_t v = 0; v < vertex_capacity(); ++v) {
+    if (number[v] == kNone) continue;
+    number[v] = static_cast<std::uint32_t>(out.vertices.size());
+    out.vertices.push_back(points_[v]);
+    out.vertex_refs.push_back(0);
+    if (vertex_ids) vertex_ids->push_back(v);
+  }
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    if (!in_domain(t)) continue;
+    out.triangles.push_back({number[vertices_[3 * t]], number[vertices_[3 * t + 1]], number[vertices_[3 * t + 2]]});
+    out.triangle_refs.push_back(refs_[t]);
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = 3 * t + i;
+      if (!constrained_[h]) continue;
+      const std::uint32_t g = neighbours_[h];
+      // Each edge once: from the side with the smaller half-edge among the domain sides.
+      if (in_domain(triangle_of(g)) && g < h) continue;
+      std::uint32_t a = number[origin(h)], b = number[destination(h)];
+      out.edges.push_back({a, b});
+      out.edge_refs.push_back(edge_refs_[h]);
+    }
+  }
+  return out;
+}
+
+}  // namespace dtlab

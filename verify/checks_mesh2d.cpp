@@ -1,0 +1,178 @@
+// The exact checks of a 2D mesh (checks_mesh2d.hpp).
+#include "verify/checks_mesh2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include "kernel/constructions.hpp"
+#include "kernel/predicates.hpp"
+
+namespace dtlab {
+
+namespace {
+
+std::uint64_t key(std::uint32_t a, std::uint32_t b) { return (static_cast<std::uint64_t>(a) << 32) | b; }
+
+ReportCounts counts_of(const MeshCheckReport2& r) {
+  return {{"vertices", r.vertices},   {"triangles", r.triangles},     {"edges", r.edges},
+          {"segments", r.segments},   {"chain_edges", r.chain_edges}, {"region_checks", r.region_checks}};
+}
+
+}  // namespace
+
+MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, std::uint32_t first_number) {
+  MeshCheckReport2 r;
+  r.vertices = out.vertices.size();
+  r.triangles = out.triangles.size();
+  r.edges = out.edges.size();
+  r.segments = input.segments.size();
+  const auto name = [&](std::size_t i) { return std::to_string(i + first_number); };
+  // Validity.
+  {
+    std::vector<Vec2> sorted(out.vertices);
+    std::sort(sorted.begin(), sorted.end(), [](const Vec2& a, const Vec2& b) { return a < b; });
+    for (std::size_t i = 1; i < sorted.size(); ++i) {
+      if (sorted[i] == sorted[i - 1]) r.add_problem("two output vertices at (" + std::to_string(sorted[i].x) + ", " + std::to_string(sorted[i].y) + ")");
+    }
+  }
+  std::unordered_map<std::uint64_t, std::uint32_t> half_edges;  // directed edge -> triangle
+  half_edges.reserve(out.triangles.size() * 4);
+  for (std::uint32_t t = 0; t < out.triangles.size(); ++t) {
+    const auto& v = out.triangles[t];
+    if (std::max({v[0], v[1], v[2]}) >= out.vertices.size()) {
+      r.add_problem("triangle " + std::to_string(t + 1) + " uses a vertex out of range");
+      continue;
+    }
+    if (orient2d(out.vertices[v[0]], out.vertices[v[1]], out.vertices[v[2]]) != Sign::Positive) {
+      r.add_problem("triangle " + std::to_string(t + 1) + " is not strictly counter-clockwise");
+    }
+    r.area += signed_area(out.vertices[v[0]], out.vertices[v[1]], out.vertices[v[2]]);
+    for (int i = 0; i < 3; ++i) {
+      if (!half_edges.emplace(key(v[i], v[(i + 1) % 3]), t).second) {
+        r.add_problem("edge (" + std::to_string(v[i] + 1) + ", " + std::to_string(v[(i + 1) % 3] + 1) +
+                      ") is in two triangles with the same orientation (triangle " + std::to_string(t + 1) + ")");
+      }
+    }
+  }
+  std::unordered_map<std::uint64_t, int> edge_ref;  // undirected (min, max) -> ref
+  std::vector<std::vector<std::uint32_t>> edge_adj(out.vertices.size());
+  for (std::size_t e = 0; e < out.edges.size(); ++e) {
+    const auto [a, b] = out.edges[e];
+    if (std::max(a, b) >= out.vertices.size()) {
+      r.add_problem("edge " + std::to_string(e + 1) + " uses a vertex out of range");
+      continue;
+    }
+    if (!half_edges.count(key(a, b)) && !half_edges.count(key(b, a))) {
+      r.add_problem("edge " + std::to_string(e + 1) + " is not an edge of the triangles");
+    }
+    edge_ref[key(std::min(a, b), std::max(a, b))] = out.edge_refs.empty() ? 0 : out.edge_refs[e];
+    edge_adj[a].push_back(b);
+    edge_adj[b].push_back(a);
+  }
+  for (const auto& [k, t] : half_edges) {
+    const std::uint32_t a = static_cast<std::uint32_t>(k >> 32), b = static_cast<std::uint32_t>(k);
+    if (!half_edges.count(key(b, a)) && !edge_ref.count(key(std::min(a, b), std::max(a, b)))) {
+      r.add_problem("boundary edge (" + std::to_string(a + 1) + ", " + std::to_string(b + 1) + ") of triangle " +
+                    std::to_string(t + 1) + " is not an output edge");
+    }
+  }
+  // Constraints: the input points are found among the output vertices by their coordinates.
+  std::map<std::pair<double, double>, std::uint32_t> by_point;
+  for (std::uint32_t v = 0; v < out.vertices.size(); ++v) by_point[{out.vertices[v].x, out.vertices[v].y}] = v;
+  // The markers of the segments whose chains pass along each edge: its reference must be one.
+  std::unordered_map<std::uint64_t, std::vector<int>> allowed;
+  for (std::size_t s = 0; s < input.segments.size(); ++s) {
+    const Vec2 A = input.points[input.segments[s][0]], B = input.points[input.segments[s][1]];
+    if (A == B) continue;
+    const auto ia = by_point.find({A.x, A.y}), ib = by_point.find({B.x, B.y});
+    if (ia == by_point.end() || ib == by_point.end()) {
+      r.add_problem("segment " + name(s) + ": an endpoint is not an output vertex");
+      continue;
+    }
+    const int marker = s < input.segment_markers.size() ? input.segment_markers[s] : 0;
+    const Vec2 dir = B - A;
+    const double scale = std::max({std::fabs(A.x), std::fabs(A.y), std::fabs(B.x), std::fabs(B.y), 1e-300});
+    std::uint32_t v = ia->second;
+    double progress = 0.0;
+    std::size_t steps = 0;
+    bool reached = false;
+    while (steps++ <= out.vertices.size()) {
+      if (v == ib->second) {
+        reached = true;
+        break;
+      }
+      std::uint32_t best = UINT32_MAX;
+      double best_progress = 2.0;
+      for (const std::uint32_t w : edge_adj[v]) {
+        const Vec2 P = out.vertices[w];
+        const double t = dot(P - A, dir) / dot(dir, dir);
+        if (!(t > progress && t <= 1.0 + 1e-15)) continue;
+        const bool on = orient2d(A, B, P) == Sign::Zero ||
+                        std::fabs(cross(dir, P - A)) / norm(dir) <= 8.0 * 2.220446049250313e-16 * scale;
+        if (on && t < best_progress) {
+          best = w;
+          best_progress = t;
+        }
+      }
+      if (best == UINT32_MAX) break;
+      ++r.chain_edges;
+      allowed[key(std::min(v, best), std::max(v, best))].push_back(marker);
+      v = best;
+      progress = best_progress;
+    }
+    if (!reached) r.add_problem("segment " + name(s) + " is not a chain of output edges");
+  }
+  for (const auto& [k, markers] : allowed) {
+    const int ref = edge_ref.at(k);
+    if (std::find(markers.begin(), markers.end(), ref) == markers.end()) {
+      r.add_problem("edge (" + std::to_string((k >> 32) + 1) + ", " + std::to_string((k & 0xFFFFFFFFu) + 1) +
+                    ") has reference " + std::to_string(ref) + ", which no segment along it has");
+    }
+  }
+  // Regions and coverage, against the input's constrained Delaunay triangulation.
+  Constrained2dResult cdt = constrained2d({.points = input.points,
+                                           .segments = input.segments,
+                                           .segment_markers = input.segment_markers,
+                                           .holes = input.holes,
+                                           .regions = input.regions},
+                                          {});
+  for (const auto& t : cdt.triangles) {
+    const auto p = cdt.triangulation.points();
+    r.domain_area += signed_area(p[t[0]], p[t[1]], p[t[2]]);
+  }
+  if (!cdt.triangles.empty()) {
+    const Mesh2 empty = empty_mesh(cdt);
+    std::uint32_t hint = 0;
+    while (hint < empty.triangle_capacity() && !empty.in_domain(hint)) ++hint;
+    for (std::uint32_t t = 0; t < out.triangles.size(); ++t) {
+      const auto& v = out.triangles[t];
+      if (std::max({v[0], v[1], v[2]}) >= out.vertices.size()) continue;
+      const Vec2 c = (1.0 / 3.0) * (out.vertices[v[0]] + out.vertices[v[1]] + out.vertices[v[2]]);
+      const Mesh2::Location loc = empty.locate(c, hint);
+      ++r.region_checks;
+      if (loc.where == Mesh2::Where::Outside || !empty.in_domain(loc.triangle)) {
+        r.add_problem("triangle " + std::to_string(t + 1) + " lies outside the domain");
+        continue;
+      }
+      hint = loc.triangle;
+      const int want = empty.ref(loc.triangle);
+      const int got = out.triangle_refs.empty() ? 0 : out.triangle_refs[t];
+      if (want != got) {
+        r.add_problem("triangle " + std::to_string(t + 1) + " has reference " + std::to_string(got) + ", its region " +
+                      std::to_string(want));
+      }
+    }
+  }
+  if (std::fabs(r.area - r.domain_area) > 1e-9 * std::max(std::fabs(r.domain_area), 1e-300)) {
+    r.add_problem("the triangles' area " + std::to_string(r.area) + " differs from the domain's " +
+                  std::to_string(r.domain_area));
+  }
+  return r;
+}
+
+std::string to_json(const MeshCheckReport2& r) { return report_json(r, counts_of(r)); }
+std::string to_text(const MeshCheckReport2& r) { return report_text(r, counts_of(r)); }
+
+}  // namespace dtlab

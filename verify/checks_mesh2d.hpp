@@ -1,0 +1,32 @@
+// Exact checks of a 2D mesher's output (algorithms/mesh2d), library code for the tests, the
+// fuzzer, the benchmark and `dtlab mesh --verify`. Independent of the generator: it reads the
+// output arrays and recomputes the constrained triangulation of the input.
+//  - validity in doubles: every triangle strictly ccw (exact orient2d), no two vertices equal,
+//    conformity (each edge in at most two triangles, with opposite orientations), the boundary
+//    (edges in one triangle) made of output Edges only;
+//  - constraints: every input segment a chain of output Edges from one end to the other, each step
+//    forward, through vertices exactly on it (orient2d zero) or, for the crossing points of the
+//    empty mesh, within a few ulps of its line; each Edge with its segment's marker;
+//  - regions: the centroid of each output triangle lies in the domain of the input's constrained
+//    Delaunay triangulation, in a triangle of the same region;
+//  - coverage: the output's area equals the domain's (relative 1e-9: both are sums in doubles).
+#pragma once
+
+#include <string>
+
+#include "algorithms/mesh2d/mesh2d.hpp"
+#include "verify/problem_report.hpp"
+
+namespace dtlab {
+
+struct MeshCheckReport2 : ProblemReport {
+  std::size_t vertices = 0, triangles = 0, edges = 0, segments = 0, chain_edges = 0, region_checks = 0;
+  double area = 0.0, domain_area = 0.0;
+};
+
+MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& output, std::uint32_t first_number = 0);
+
+std::string to_json(const MeshCheckReport2& report);
+std::string to_text(const MeshCheckReport2& report);
+
+}  // namespace dtlab

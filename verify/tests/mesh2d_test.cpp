@@ -1,0 +1,362 @@
+// 2D mesh generation (algorithms/mesh2d) and the shared mesh it builds on (mesh/mesh2.hpp): the
+// structure's operations keep it valid (Mesh2::check: links, exact orientation, free lists); the
+// Delaunay kernel keeps an isotropic mesh constrained Delaunay and an anisotropic one valid; the
+// generator's output passes the exact checks (verify/checks_mesh2d.hpp) on fixed domains and on
+// random polygons with holes, thin strips and small angles, with uniform, classical and
+// anisotropic sizes; it is deterministic; bad input is refused by name.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "algorithms/delaunay2d/delaunay2d.hpp"
+#include "algorithms/mesh2d/delaunay_kernel.hpp"
+#include "algorithms/mesh2d/mesh2d.hpp"
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+#include "mesh/mesh2_from_data.hpp"
+#include "mesh/mesh_quality.hpp"
+#include "verify/checks_mesh2d.hpp"
+
+namespace dtlab {
+namespace {
+
+using Segment = std::array<std::uint32_t, 2>;
+
+struct Domain {
+  std::vector<Vec2> points;
+  std::vector<Segment> segments;
+  std::vector<int> markers;
+  std::vector<Vec2> holes;
+  std::vector<RegionSeed2> regions;
+  Mesh2dInput input() const { return {points, segments, markers, holes, regions}; }
+};
+
+// Closes the polygon given by its vertices into segments with one marker.
+void add_loop(Domain& d, const std::vector<Vec2>& loop, int marker) {
+  const auto first = static_cast<std::uint32_t>(d.points.size());
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    d.points.push_back(loop[i]);
+    d.segments.push_back({first + static_cast<std::uint32_t>(i), first + static_cast<std::uint32_t>((i + 1) % loop.size())});
+    d.markers.push_back(marker);
+  }
+}
+
+// The polygon with n vertices on the circle (c, r), counter-clockwise.
+std::vector<Vec2> circle(Vec2 c, double r, int n) {
+  std::vector<Vec2> out;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * std::numbers::pi * i / n;
+    out.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+  }
+  return out;
+}
+
+// The unit square, each side cut into n pieces, minus a disc of radius 0.2 at its centre.
+Domain square_minus_disc(int n) {
+  Domain d;
+  std::vector<Vec2> square;
+  for (int s = 0; s < 4; ++s) {
+    for (int i = 0; i < n; ++i) {
+      const double t = static_cast<double>(i) / n;
+      const Vec2 p = s == 0 ? Vec2{t, 0} : s == 1 ? Vec2{1, t} : s == 2 ? Vec2{1 - t, 1} : Vec2{0, 1 - t};
+      square.push_back(p);
+    }
+  }
+  add_loop(d, square, 1);
+  add_loop(d, circle({0.5, 0.5}, 0.2, static_cast<int>(std::ceil(2 * std::numbers::pi * 0.2 * n))), 2);
+  d.holes.push_back({0.5, 0.5});
+  return d;
+}
+
+void expect_valid(const Domain& d, const Mesh2dResult& r) {
+  r.mesh.check();
+  const MeshCheckReport2 report = check_mesh2d(d.input(), r.output);
+  EXPECT_TRUE(report.ok) << to_text(report);
+}
+
+TEST(Mesh2, FromDataBuildsAClosedStructure) {
+  MeshData2 data;
+  data.vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}};
+  data.triangles = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  data.triangle_refs = {1, 1, 2, 2};
+  data.edges = {{0, 1}};
+  data.edge_refs = {7};
+  const Mesh2 mesh = mesh2_from_data(data);
+  mesh.check();
+  EXPECT_EQ(mesh.live_triangle_count(), 8u);  // 4 triangles, 4 ghosts
+  EXPECT_EQ(mesh.flags(4), 0);
+  EXPECT_EQ(mesh.flags(0), Mesh2::kFixed | Mesh2::kOnBoundary);
+  const std::uint32_t h = mesh.find_half_edge(0, 1);
+  ASSERT_NE(h, Mesh2::kNone);
+  EXPECT_TRUE(mesh.is_constrained(h));
+  EXPECT_EQ(mesh.edge_ref(h), 7);
+  EXPECT_EQ(mesh.edge_ref(mesh.find_half_edge(1, 2)), 0);
+  EXPECT_TRUE(mesh.is_constrained(mesh.find_half_edge(1, 2)));
+  EXPECT_FALSE(mesh.is_constrained(mesh.find_half_edge(0, 4)));
+  std::vector<std::uint32_t> ring;
+  mesh.ball(4, ring);
+  EXPECT_EQ(ring.size(), 4u);
+  const MeshData2 back = mesh.domain();
+  EXPECT_EQ(back.triangles.size(), 4u);
+  EXPECT_EQ(back.edges.size(), 4u);
+}
+
+TEST(Mesh2, FromDataRefusesBadMeshes) {
+  MeshData2 cw;
+  cw.vertices = {{0, 0}, {1, 0}, {0, 1}};
+  cw.triangles = {{0, 2, 1}};
+  EXPECT_THROW(mesh2_from_data(cw), InputError);
+  MeshData2 pinched;  // two triangles touching at vertex 0 only
+  pinched.vertices = {{0, 0}, {1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  pinched.triangles = {{0, 1, 2}, {0, 3, 4}};
+  try {
+    mesh2_from_data(pinched);
+    FAIL() << "a pinched vertex was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Mesh2, FlipKeepsTheStructureValid) {
+  MeshData2 data;
+  data.vertices = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+  data.triangles = {{0, 1, 2}, {0, 2, 3}};
+  Mesh2 mesh = mesh2_from_data(data);
+  const std::uint32_t h = mesh.find_half_edge(0, 2);
+  const std::uint32_t g = mesh.flip(h);
+  mesh.check();
+  EXPECT_TRUE((mesh.origin(g) == 1 && mesh.destination(g) == 3) || (mesh.origin(g) == 3 && mesh.destination(g) == 1));
+  EXPECT_EQ(mesh.find_half_edge(0, 2), Mesh2::kNone);
+}
+
+// The kernel with an isotropic metric keeps the mesh Delaunay: every unconstrained interior edge
+// passes the exact incircle test.
+TEST(DelaunayKernel2, IsotropicInsertionKeepsTheMeshDelaunay) {
+  MeshData2 data;
+  data.vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  data.triangles = {{0, 1, 2}, {0, 2, 3}};
+  Mesh2 mesh = mesh2_from_data(data);
+  DelaunayKernel2 kernel(mesh);
+  std::uint64_t s = 12345;
+  std::uint32_t inserted = 0;
+  for (int i = 0; i < 400; ++i) {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    const Vec2 p{static_cast<double>(s >> 11) / 9007199254740992.0, static_cast<double>((s * 31) >> 11) / 9007199254740992.0};
+    std::uint32_t start = 0;
+    while (!mesh.in_domain(start)) ++start;
+    const Mesh2::Location loc = mesh.locate(p, start);
+    if (loc.where != Mesh2::Where::Triangle && loc.where != Mesh2::Where::Edge) continue;
+    if (!kernel.find_cavity(p, Metric2::isotropic(0.1), loc.triangle)) continue;
+    kernel.commit(p, Metric2::isotropic(0.1));
+    ++inserted;
+  }
+  mesh.check();
+  EXPECT_GT(inserted, 390u);
+  for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) {
+    if (!mesh.in_domain(t)) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = Mesh2::half_edge(t, i);
+      if (mesh.is_constrained(h) || !mesh.in_domain(Mesh2::triangle_of(mesh.twin(h)))) continue;
+      const Vec2 q = mesh.point(mesh.vertex_at(mesh.twin(h)));
+      EXPECT_NE(incircle(mesh.point(mesh.vertex(t, 0)), mesh.point(mesh.vertex(t, 1)), mesh.point(mesh.vertex(t, 2)), q),
+                Sign::Positive);
+    }
+  }
+}
+
+TEST(DelaunayKernel2, AnisotropicInsertionStaysValid) {
+  MeshData2 data;
+  data.vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  data.triangles = {{0, 1, 2}, {0, 2, 3}};
+  Mesh2 mesh = mesh2_from_data(data);
+  DelaunayKernel2 kernel(mesh);
+  std::uint64_t s = 777;
+  for (int i = 0; i < 600; ++i) {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    const Vec2 p{static_cast<double>(s >> 11) / 9007199254740992.0, static_cast<double>((s * 31) >> 11) / 9007199254740992.0};
+    const double angle = 3.0 * p.x;
+    const Metric2 m = Metric2::from_sizes({std::cos(angle), std::sin(angle)}, 0.5, 0.0005);
+    std::uint32_t start = 0;
+    while (!mesh.in_domain(start)) ++start;
+    const Mesh2::Location loc = mesh.locate(p, start);
+    if (loc.where != Mesh2::Where::Triangle && loc.where != Mesh2::Where::Edge) continue;
+    if (!kernel.find_cavity(p, m, loc.triangle)) continue;
+    kernel.commit(p, m);
+  }
+  mesh.check();
+}
+
+TEST(Mesh2d, SquareWithHoleUniformSize) {
+  const Domain d = square_minus_disc(25);
+  const Mesh2dResult r = mesh2d(d.input(), {});
+  expect_valid(d, r);
+  EXPECT_GT(r.output.triangles.size(), 1000u);
+  EXPECT_GT(r.stats.field_points, 300u);
+  const QualityReport q = measure_quality(r.output.vertices, r.output.triangles, r.output_metrics);
+  EXPECT_LT(q.quality_worst, 3.0);
+  EXPECT_GT(q.unit_edge_share, 0.9);
+}
+
+TEST(Mesh2d, ClassicalSizesGradeBetweenFineAndCoarseBoundaries) {
+  // A coarse outer square (4 segments a side) around a finely cut circle: sizes grade between.
+  Domain d;
+  std::vector<Vec2> square;
+  for (int s = 0; s < 4; ++s) {
+    for (int i = 0; i < 4; ++i) {
+      const double t = i / 4.0;
+      square.push_back(s == 0 ? Vec2{t, 0} : s == 1 ? Vec2{1, t} : s == 2 ? Vec2{1 - t, 1} : Vec2{0, 1 - t});
+    }
+  }
+  add_loop(d, square, 1);
+  add_loop(d, circle({0.5, 0.5}, 0.1, 64), 2);
+  d.holes.push_back({0.5, 0.5});
+  const Mesh2dResult r = mesh2d(d.input(), {});
+  expect_valid(d, r);
+  const QualityReport q = measure_quality(r.output.vertices, r.output.triangles, r.output_metrics);
+  EXPECT_LT(q.quality_worst, 4.0);
+}
+
+TEST(Mesh2d, RegionsAndMarkersAreKept) {
+  Domain d;
+  add_loop(d, {{0, 0}, {2, 0}, {2, 1}, {0, 1}}, 5);
+  // A wall at x = 1 splitting two regions.
+  d.points.push_back({1, 0});
+  d.points.push_back({1, 1});
+  d.segments.push_back({4, 5});
+  d.markers.push_back(9);
+  d.regions = {{{0.5, 0.5}, 10}, {{1.5, 0.5}, 20}};
+  Mesh2dOptions options;
+  ControlSpace2 control(mesh2_from_data(MeshData2{{{-1, -1}, {3, -1}, {3, 2}, {-1, 2}}, {}, {}, {}, {{0, 1, 2}, {0, 2, 3}}, {0, 0}}),
+                        std::vector<Metric2>(4, Metric2::isotropic(0.1)));
+  options.control = &control;
+  const Mesh2dResult r = mesh2d(d.input(), options);
+  expect_valid(d, r);
+  std::size_t left = 0, right = 0;
+  for (const int ref : r.output.triangle_refs) (ref == 10 ? left : right) += 1;
+  EXPECT_GT(left, 100u);
+  EXPECT_GT(right, 100u);
+  std::size_t wall_edges = 0;
+  for (const int ref : r.output.edge_refs) wall_edges += ref == 9;
+  EXPECT_GE(wall_edges, 1u);
+}
+
+TEST(Mesh2d, IsDeterministic) {
+  const Domain d = square_minus_disc(16);
+  const Mesh2dResult a = mesh2d(d.input(), {});
+  const Mesh2dResult b = mesh2d(d.input(), {});
+  EXPECT_EQ(a.output, b.output);
+}
+
+// UGAWG's "linear" boundary layer in 2D: h_x = 0.1, h_y = h0 + 2 (0.1 - h0) |y - 0.5|.
+Metric2 linear_layer(const Vec2& p, double h0) {
+  const double hy = h0 + 2 * (0.1 - h0) * std::fabs(p.y - 0.5);
+  return Metric2::from_sizes({1, 0}, 0.1, hy);
+}
+
+TEST(Mesh2d, AnisotropicLinearLayer) {
+  Domain d;
+  std::vector<Vec2> square;
+  for (int s = 0; s < 4; ++s) {
+    for (int i = 0; i < 10; ++i) {
+      const double t = i / 10.0;
+      square.push_back(s == 0 ? Vec2{t, 0} : s == 1 ? Vec2{1, t} : s == 2 ? Vec2{1 - t, 1} : Vec2{0, 1 - t});
+    }
+  }
+  add_loop(d, square, 1);
+  // Background: a 40 x 40 grid with the analytic metric at its vertices.
+  MeshData2 bg;
+  const int n = 40;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) bg.vertices.push_back({static_cast<double>(i) / n, static_cast<double>(j) / n});
+  }
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const std::uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 2, e = a + n + 1;
+      bg.triangles.push_back({a, b, c});
+      bg.triangles.push_back({a, c, e});
+    }
+  }
+  std::vector<Metric2> metrics;
+  for (const Vec2& p : bg.vertices) metrics.push_back(linear_layer(p, 0.01));
+  ControlSpace2 control(bg, metrics);
+  Mesh2dOptions options;
+  options.control = &control;
+  const Mesh2dResult r = mesh2d(d.input(), options);
+  expect_valid(d, r);
+  const QualityReport q = measure_quality(r.output.vertices, r.output.triangles, r.output_metrics);
+  EXPECT_GT(q.unit_edge_share, 0.8);
+}
+
+TEST(Mesh2d, RefusesAnOpenBoundary) {
+  Domain d;
+  d.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}};
+  EXPECT_THROW(mesh2d(d.input(), {}), InputError);
+}
+
+TEST(Mesh2d, RefusesAnUnknownMethod) {
+  const Domain d = square_minus_disc(4);
+  Mesh2dOptions options;
+  options.method = "magic";
+  EXPECT_THROW(mesh2d(d.input(), options), InputError);
+}
+
+TEST(Mesh2d, RefusesANonPositiveMetric) {
+  MeshData2 bg{{{-1, -1}, {3, -1}, {3, 2}, {-1, 2}}, {}, {}, {}, {{0, 1, 2}, {0, 2, 3}}, {0, 0}};
+  std::vector<Metric2> metrics(4, Metric2::isotropic(0.1));
+  metrics[2].m = {1.0, 2.0, 1.0};  // indefinite
+  try {
+    ControlSpace2 control(bg, metrics);
+    FAIL() << "an indefinite metric was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 3"), std::string::npos) << e.what();
+  }
+}
+
+// Random star-shaped polygons with a random polygonal hole, random uniform sizes, small angles.
+RC_GTEST_PROP(Mesh2dProperty, RandomPolygonsWithHolesMeshValidly, ()) {
+  const int n = *rc::gen::inRange(3, 24);
+  std::vector<double> radii = *rc::gen::container<std::vector<double>>(n, rc::gen::map(rc::gen::inRange(400, 1000), [](int r) { return r / 1000.0; }));
+  Domain d;
+  std::vector<Vec2> outer;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * std::numbers::pi * i / n;
+    outer.push_back({radii[i] * std::cos(a), radii[i] * std::sin(a)});
+  }
+  add_loop(d, outer, 1);
+  const bool hole = *rc::gen::arbitrary<bool>();
+  if (hole) {
+    add_loop(d, circle({0, 0}, 0.2, *rc::gen::inRange(3, 12)), 2);
+    d.holes.push_back({0, 0});
+  }
+  const double h = *rc::gen::inRange(3, 20) / 100.0;
+  ControlSpace2 control(MeshData2{{{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, {}, {}, {}, {{0, 1, 2}, {0, 2, 3}}, {0, 0}},
+                        std::vector<Metric2>(4, Metric2::isotropic(h)));
+  Mesh2dOptions options;
+  options.control = &control;
+  const Mesh2dResult r = mesh2d(d.input(), options);
+  r.mesh.check();
+  const MeshCheckReport2 report = check_mesh2d(d.input(), r.output);
+  RC_ASSERT(report.ok);
+  // Bounded: no more vertices than the domain's area over the smallest equilateral cell, with room.
+  RC_ASSERT(r.output.vertices.size() < 20 * (4.0 / (h * h)) + 200);
+}
+
+// A strip 1000 times longer than wide, meshed with sizes from its boundary (classical).
+TEST(Mesh2d, ThinStrip) {
+  Domain d;
+  std::vector<Vec2> loop;
+  for (int i = 0; i <= 100; ++i) loop.push_back({i / 100.0, 0});
+  loop.push_back({1, 0.001});
+  for (int i = 99; i >= 0; --i) loop.push_back({i / 100.0, 0.001});
+  add_loop(d, loop, 1);
+  const Mesh2dResult r = mesh2d(d.input(), {});
+  expect_valid(d, r);
+}
+
+}  // namespace
+}  // namespace dtlab
