@@ -31,7 +31,7 @@ struct MeshArgs {
   std::string size_map, metric, background;
   std::string method = "edge";
   std::string interpolation = "sizes";
-  bool no_optimize = false, stats = false, verify = false;
+  bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
 };
 
 // A uniform metric: a background of two triangles around the input (the metric is the same at
@@ -78,6 +78,10 @@ int run_mesh(const MeshArgs& args) {
   Mesh2dOptions options;
   options.method = args.method;
   options.optimize = !args.no_optimize;
+  options.resample_boundary = args.resample_boundary;
+  if (args.resample_boundary && given == 0)
+    throw InputError("--resample-boundary needs a size (--size, --size-map or --metric): the classical sizes come from the "
+                     "boundary itself");
   options.first_number = graph.first_number;
   options.interpolation = args.interpolation == "log-euclidean" ? MetricInterpolation::LogEuclidean : MetricInterpolation::Sizes;
   std::optional<ControlSpace2> control;
@@ -123,7 +127,7 @@ int run_mesh(const MeshArgs& args) {
     json << "{\"input\":" << json_string(args.input) << ",\"method\":" << json_string(args.method)
          << ",\"points\":" << s.input_points << ",\"segments\":" << s.segments
          << ",\"vertices\":" << result.output.vertices.size() << ",\"triangles\":" << result.output.triangles.size()
-         << ",\"field_points\":" << s.field_points << ",\"filtered\":" << s.filtered
+         << ",\"boundary_points\":" << s.boundary_points << ",\"field_points\":" << s.field_points << ",\"filtered\":" << s.filtered
          << ",\"not_inserted\":" << s.not_inserted << ",\"passes\":" << s.passes
          << ",\"cavity_corrections\":" << s.cavity_corrections << ",\"swaps\":" << s.swaps
          << ",\"relocations\":" << s.relocations << ",\"collapses\":" << s.collapses << ",\"splits\":" << s.splits
@@ -159,6 +163,8 @@ void add_mesh(CLI::App& app) {
   cmd->add_option("--interpolation", args->interpolation, "Metric interpolation: sizes (default) or log-euclidean")
       ->check(CLI::IsMember({"sizes", "log-euclidean"}));
   cmd->add_option("--output-metric", args->output_metric, "Write the metric at the output vertices (Medit .sol)");
+  cmd->add_flag("--resample-boundary", args->resample_boundary,
+                "Cut the input segments anew in the size or metric given (default: they are the boundary discretisation)");
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the optimization step");
   cmd->add_flag("--stats", args->stats, "Print the quality table and one JSON object (counts, phases, quality) last");
   cmd->add_flag("--verify", args->verify,

@@ -17,7 +17,8 @@ std::uint64_t key(std::uint32_t a, std::uint32_t b) { return (static_cast<std::u
 
 ReportCounts counts_of(const MeshCheckReport2& r) {
   return {{"vertices", r.vertices},   {"triangles", r.triangles},     {"edges", r.edges},
-          {"segments", r.segments},   {"chain_edges", r.chain_edges}, {"region_checks", r.region_checks}};
+          {"segments", r.segments},   {"chain_edges", r.chain_edges}, {"region_checks", r.region_checks},
+          {"exterior_segments", r.exterior_segments}};
 }
 
 }  // namespace
@@ -78,27 +79,72 @@ MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, st
                     std::to_string(t + 1) + " is not an output edge");
     }
   }
-  // Constraints: the input points are found among the output vertices by their coordinates.
-  std::map<std::pair<double, double>, std::uint32_t> by_point;
-  for (std::uint32_t v = 0; v < out.vertices.size(); ++v) by_point[{out.vertices[v].x, out.vertices[v].y}] = v;
-  // The markers of the segments whose chains pass along each edge: its reference must be one.
-  std::unordered_map<std::uint64_t, std::vector<int>> allowed;
-  for (std::size_t s = 0; s < input.segments.size(); ++s) {
-    const Vec2 A = input.points[input.segments[s][0]], B = input.points[input.segments[s][1]];
-    if (A == B) continue;
-    const auto ia = by_point.find({A.x, A.y}), ib = by_point.find({B.x, B.y});
-    if (ia == by_point.end() || ib == by_point.end()) {
-      r.add_problem("segment " + name(s) + ": an endpoint is not an output vertex");
+  // Regions, coverage and constraints, against the input's constrained Delaunay triangulation.
+  Constrained2dResult cdt = constrained2d({.points = input.points,
+                                           .segments = input.segments,
+                                           .segment_markers = input.segment_markers,
+                                           .holes = input.holes,
+                                           .regions = input.regions},
+                                          {});
+  const auto cdt_points = cdt.triangulation.points();
+  for (const auto& t : cdt.triangles) r.domain_area += signed_area(cdt_points[t[0]], cdt_points[t[1]], cdt_points[t[2]]);
+  if (cdt.triangles.empty()) {
+    if (!out.triangles.empty()) r.add_problem("the output has triangles but the input's domain has none");
+    return r;
+  }
+  const Mesh2 empty = empty_mesh(cdt);
+  std::uint32_t hint = 0;
+  while (hint < empty.triangle_capacity() && !empty.in_domain(hint)) ++hint;
+  for (std::uint32_t t = 0; t < out.triangles.size(); ++t) {
+    const auto& v = out.triangles[t];
+    if (std::max({v[0], v[1], v[2]}) >= out.vertices.size()) continue;
+    const Vec2 c = (1.0 / 3.0) * (out.vertices[v[0]] + out.vertices[v[1]] + out.vertices[v[2]]);
+    const Mesh2::Location loc = empty.locate(c, hint);
+    ++r.region_checks;
+    if (loc.where == Mesh2::Where::Outside || !empty.in_domain(loc.triangle)) {
+      r.add_problem("triangle " + std::to_string(t + 1) + " lies outside the domain");
       continue;
     }
-    const int marker = s < input.segment_markers.size() ? input.segment_markers[s] : 0;
+    hint = loc.triangle;
+    const int want = empty.ref(loc.triangle);
+    const int got = out.triangle_refs.empty() ? 0 : out.triangle_refs[t];
+    if (want != got) {
+      r.add_problem("triangle " + std::to_string(t + 1) + " has reference " + std::to_string(got) + ", its region " +
+                    std::to_string(want));
+    }
+  }
+  // Constraints: every piece of an input segment in the empty mesh (split at input vertices and
+  // crossings) with the domain on a side is a chain of output Edges, each step forward along the
+  // piece, carrying the marker of one of the segments along it; pieces outside the domain are
+  // not meshed.
+  std::map<std::pair<double, double>, std::uint32_t> by_point;
+  for (std::uint32_t v = 0; v < out.vertices.size(); ++v) by_point[{out.vertices[v].x, out.vertices[v].y}] = v;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<int>> piece_markers;
+  for (const ConstrainedEdge2& e : cdt.constrained_edges) piece_markers[{e.a, e.b}].push_back(e.marker);
+  for (const ConstrainedEdge2& e : cdt.shared_edges) piece_markers[{e.a, e.b}].push_back(e.marker);
+  std::unordered_map<std::uint64_t, std::vector<int>> allowed;
+  std::vector<std::uint8_t> segment_seen(input.segments.size(), 0);
+  for (const ConstrainedEdge2& e : cdt.constrained_edges) {
+    const std::uint32_t h = empty.find_half_edge(e.a, e.b);
+    if (h == Mesh2::kNone) {
+      r.add_problem("segment " + name(e.segment) + ": a piece is not an edge of the empty mesh");
+      continue;
+    }
+    if (!empty.in_domain(Mesh2::triangle_of(h)) && !empty.in_domain(Mesh2::triangle_of(empty.twin(h)))) continue;
+    segment_seen[e.segment] = 1;
+    const Vec2 A = cdt_points[e.a], B = cdt_points[e.b];
+    const auto ia = by_point.find({A.x, A.y}), ib = by_point.find({B.x, B.y});
+    if (ia == by_point.end() || ib == by_point.end()) {
+      r.add_problem("segment " + name(e.segment) + ": an end of a piece is not an output vertex");
+      continue;
+    }
+    const std::vector<int>& markers = piece_markers[{e.a, e.b}];
     const Vec2 dir = B - A;
     const double scale = std::max({std::fabs(A.x), std::fabs(A.y), std::fabs(B.x), std::fabs(B.y), 1e-300});
     std::uint32_t v = ia->second;
     double progress = 0.0;
-    std::size_t steps = 0;
     bool reached = false;
-    while (steps++ <= out.vertices.size()) {
+    for (std::size_t steps = 0; steps <= out.vertices.size(); ++steps) {
       if (v == ib->second) {
         reached = true;
         break;
@@ -109,6 +155,8 @@ MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, st
         const Vec2 P = out.vertices[w];
         const double t = dot(P - A, dir) / dot(dir, dir);
         if (!(t > progress && t <= 1.0 + 1e-15)) continue;
+        // On the piece: exactly, or (a cut point of a resampled boundary, rounded) within a few
+        // ulps of its line.
         const bool on = orient2d(A, B, P) == Sign::Zero ||
                         std::fabs(cross(dir, P - A)) / norm(dir) <= 8.0 * 2.220446049250313e-16 * scale;
         if (on && t < best_progress) {
@@ -118,51 +166,19 @@ MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, st
       }
       if (best == UINT32_MAX) break;
       ++r.chain_edges;
-      allowed[key(std::min(v, best), std::max(v, best))].push_back(marker);
+      auto& list = allowed[key(std::min(v, best), std::max(v, best))];
+      list.insert(list.end(), markers.begin(), markers.end());
       v = best;
       progress = best_progress;
     }
-    if (!reached) r.add_problem("segment " + name(s) + " is not a chain of output edges");
+    if (!reached) r.add_problem("segment " + name(e.segment) + " is not a chain of output edges");
   }
+  for (std::size_t s = 0; s < input.segments.size(); ++s) r.exterior_segments += !segment_seen[s];
   for (const auto& [k, markers] : allowed) {
     const int ref = edge_ref.at(k);
     if (std::find(markers.begin(), markers.end(), ref) == markers.end()) {
       r.add_problem("edge (" + std::to_string((k >> 32) + 1) + ", " + std::to_string((k & 0xFFFFFFFFu) + 1) +
                     ") has reference " + std::to_string(ref) + ", which no segment along it has");
-    }
-  }
-  // Regions and coverage, against the input's constrained Delaunay triangulation.
-  Constrained2dResult cdt = constrained2d({.points = input.points,
-                                           .segments = input.segments,
-                                           .segment_markers = input.segment_markers,
-                                           .holes = input.holes,
-                                           .regions = input.regions},
-                                          {});
-  for (const auto& t : cdt.triangles) {
-    const auto p = cdt.triangulation.points();
-    r.domain_area += signed_area(p[t[0]], p[t[1]], p[t[2]]);
-  }
-  if (!cdt.triangles.empty()) {
-    const Mesh2 empty = empty_mesh(cdt);
-    std::uint32_t hint = 0;
-    while (hint < empty.triangle_capacity() && !empty.in_domain(hint)) ++hint;
-    for (std::uint32_t t = 0; t < out.triangles.size(); ++t) {
-      const auto& v = out.triangles[t];
-      if (std::max({v[0], v[1], v[2]}) >= out.vertices.size()) continue;
-      const Vec2 c = (1.0 / 3.0) * (out.vertices[v[0]] + out.vertices[v[1]] + out.vertices[v[2]]);
-      const Mesh2::Location loc = empty.locate(c, hint);
-      ++r.region_checks;
-      if (loc.where == Mesh2::Where::Outside || !empty.in_domain(loc.triangle)) {
-        r.add_problem("triangle " + std::to_string(t + 1) + " lies outside the domain");
-        continue;
-      }
-      hint = loc.triangle;
-      const int want = empty.ref(loc.triangle);
-      const int got = out.triangle_refs.empty() ? 0 : out.triangle_refs[t];
-      if (want != got) {
-        r.add_problem("triangle " + std::to_string(t + 1) + " has reference " + std::to_string(got) + ", its region " +
-                      std::to_string(want));
-      }
     }
   }
   if (std::fabs(r.area - r.domain_area) > 1e-9 * std::max(std::fabs(r.domain_area), 1e-300)) {

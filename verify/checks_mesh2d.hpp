@@ -4,9 +4,10 @@
 //  - validity in doubles: every triangle strictly ccw (exact orient2d), no two vertices equal,
 //    conformity (each edge in at most two triangles, with opposite orientations), the boundary
 //    (edges in one triangle) made of output Edges only;
-//  - constraints: every input segment a chain of output Edges from one end to the other, each step
-//    forward, through vertices exactly on it (orient2d zero) or, for the crossing points of the
-//    empty mesh, within a few ulps of its line; each Edge with its segment's marker;
+//  - constraints: every piece of an input segment in the input's constrained triangulation (split
+//    at vertices and crossings) that has the domain on a side is a chain of output Edges, each step
+//    forward, through vertices exactly on it (orient2d zero) or, for a resampled boundary's rounded
+//    cut points, within a few ulps of its line; each Edge with the marker of a segment along it;
 //  - regions: the centroid of each output triangle lies in the domain of the input's constrained
 //    Delaunay triangulation, in a triangle of the same region;
 //  - coverage: the output's area equals the domain's (relative 1e-9: both are sums in doubles).
@@ -21,6 +22,7 @@ namespace dtlab {
 
 struct MeshCheckReport2 : ProblemReport {
   std::size_t vertices = 0, triangles = 0, edges = 0, segments = 0, chain_edges = 0, region_checks = 0;
+  std::size_t exterior_segments = 0;  // input segments with no piece beside the domain (not meshed)
   double area = 0.0, domain_area = 0.0;
 };
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "algorithms/mesh2d/delaunay_kernel.hpp"
+#include "algorithms/mesh2d/edge_cuts.hpp"
 #include "algorithms/mesh2d/mesh2d.hpp"
 #include "kernel/error.hpp"
 
@@ -22,17 +23,6 @@ struct Candidate {
   double length;
   std::uint32_t a, b;
 };
-
-// Parameters t_1..t_{n-1} in (0, 1) of the points cutting edge ab into n sub-edges of equal metric
-// length, for a size varying linearly from ha (at a) to hb (at b) along it: h(t_k) = ha (hb/ha)^(k/n).
-void cut_points(double ha, double hb, std::uint32_t n, std::vector<double>& out) {
-  out.clear();
-  const bool uniform = std::fabs(hb - ha) <= 1e-9 * std::max(ha, hb);
-  for (std::uint32_t k = 1; k < n; ++k) {
-    const double s = static_cast<double>(k) / n;
-    out.push_back(uniform ? s : (ha * std::pow(hb / ha, s) - ha) / (hb - ha));
-  }
-}
 
 }  // namespace
 

@@ -3,8 +3,10 @@
 
 #include <chrono>
 #include <memory>
+#include <span>
 #include <string>
 
+#include "algorithms/optimize2d/optimize2d.hpp"
 #include "kernel/error.hpp"
 
 namespace dtlab {
@@ -34,19 +36,39 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   Constrained2dOptions cdt_options;
   cdt_options.method = "cdt";
   cdt_options.first_number = options.first_number;
-  const Constrained2dResult cdt = constrained2d({.points = input.points,
-                                                 .segments = input.segments,
-                                                 .segment_markers = input.segment_markers,
-                                                 .holes = input.holes,
-                                                 .regions = input.regions},
-                                                cdt_options);
-  result.messages = cdt.messages;
-  if (!cdt.degenerate_message.empty()) throw InputError("mesh2d: no domain: " + cdt.degenerate_message);
-  if (cdt.triangles.empty()) {
-    throw InputError("mesh2d: the domain has no triangle: the segments enclose no region (an open boundary?), or "
-                     "the holes remove every region");
-  }
-  result.mesh = empty_mesh(cdt);
+  const auto build_empty_mesh = [&](std::span<const Vec2> points, std::span<const std::array<std::uint32_t, 2>> segments,
+                                    std::span<const int> markers) {
+    const Constrained2dResult cdt = constrained2d(
+        {.points = points, .segments = segments, .segment_markers = markers, .holes = input.holes, .regions = input.regions},
+        cdt_options);
+    result.messages = cdt.messages;
+    if (!cdt.degenerate_message.empty()) throw InputError("mesh2d: no domain: " + cdt.degenerate_message);
+    if (cdt.triangles.empty()) {
+      throw InputError("mesh2d: the domain has no triangle: the segments enclose no region (an open boundary?), or "
+                       "the holes remove every region");
+    }
+    Mesh2 mesh = empty_mesh(cdt);
+    // Segments with no piece beside the domain are not meshed: say so, naming them.
+    std::vector<std::uint8_t> inside(segments.size(), 0);
+    for (const ConstrainedEdge2& e : cdt.constrained_edges) {
+      const std::uint32_t h = mesh.find_half_edge(e.a, e.b);
+      if (h != Mesh2::kNone && (mesh.in_domain(Mesh2::triangle_of(h)) || mesh.in_domain(Mesh2::triangle_of(mesh.twin(h))))) {
+        inside[e.segment] = 1;
+      }
+    }
+    std::string outside;
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < segments.size(); ++k) {
+      if (inside[k]) continue;
+      if (++count <= 20) outside += (outside.empty() ? "" : ", ") + std::to_string(k + options.first_number);
+    }
+    if (count > 0) {
+      result.messages.push_back(std::to_string(count) + " segment(s) outside the domain, not meshed: " + outside +
+                                (count > 20 ? ", ..." : ""));
+    }
+    return mesh;
+  };
+  result.mesh = build_empty_mesh(input.points, input.segments, input.segment_markers);
   result.stats.seconds_empty_mesh = seconds_since(phase);
 
   // 2. Control space: the given one, or the classical sizes on a frozen copy of the empty mesh.
@@ -62,6 +84,13 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
     classical = std::make_unique<ControlSpace2>(classical_control_space(result.mesh));
   }
   const ControlSpace2& control = options.control ? *options.control : *classical;
+  if (options.resample_boundary && (options.control || !options.input_metrics.empty())) {
+    // The boundary cut in the metric, then the empty mesh of the new boundary (the control space
+    // stays the one built on the input).
+    const ResampledBoundary boundary = resample_boundary(input, control, options);
+    result.stats.boundary_points = boundary.points.size() - input.points.size();
+    result.mesh = build_empty_mesh(boundary.points, boundary.segments, boundary.markers);
+  }
   std::uint32_t hint = ControlSpace2::kNoHint;
   for (std::uint32_t v = 0; v < result.mesh.vertex_capacity(); ++v) {
     if (!result.mesh.is_dead_vertex(v)) result.mesh.set_metric(v, control.metric_at(result.mesh.point(v), hint));
@@ -73,12 +102,23 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   if (options.method == "edge") {
     insert_edge_points(result.mesh, control, options, result.stats);
   } else {
-    throw InputError("the advancing-front placement (--method front) is not built yet");
+    insert_front_points(result.mesh, control, options, result.stats);
   }
   result.stats.seconds_field_points = seconds_since(phase);
 
   // 5. Optimization.
   phase = std::chrono::steady_clock::now();
+  if (options.optimize) {
+    // Moved and new points take their metric from the control space (one walk hint for all).
+    std::uint32_t field_hint = ControlSpace2::kNoHint;
+    const MetricField2 field = [&control, &field_hint](const Vec2& p) { return control.metric_at(p, field_hint); };
+    const Optimize2dStats o = optimize2d(result.mesh, options.optimization, field);
+    result.stats.swaps = o.swaps + o.valence_swaps;
+    result.stats.relocations = o.relocations;
+    result.stats.collapses = o.collapses;
+    result.stats.splits = o.splits;
+    result.stats.optimization_rounds = o.rounds;
+  }
   result.stats.seconds_optimization = seconds_since(phase);
 
   result.output = result.mesh.domain(&result.output_vertex_ids);

@@ -24,6 +24,7 @@
 
 #include "algorithms/constrained2d/constrained2d.hpp"
 #include "algorithms/mesh2d/control_space.hpp"
+#include "algorithms/optimize2d/optimize2d.hpp"
 #include "mesh/io/mesh_data.hpp"
 #include "mesh/mesh2.hpp"
 
@@ -49,6 +50,10 @@ struct Mesh2dOptions {
   std::span<const Metric2> input_metrics;
   MetricInterpolation interpolation = MetricInterpolation::Sizes;
   bool optimize = true;
+  Optimize2dOptions optimization;  // step 5 (algorithms/optimize2d)
+  // Cut the input segments anew in the metric (boundary_resample.cpp) instead of taking them as
+  // the boundary discretisation; not in the classical case, whose sizes come from them.
+  bool resample_boundary = false;
   // A field point closer than this (metric length, in the metric at the point) to a vertex that
   // would become its neighbour is filtered out.
   double filter_distance = 0.7;
@@ -71,8 +76,10 @@ struct Mesh2dStats {
   std::uint64_t not_inserted = 0;          // candidates outside the domain or on an edge that cannot open
   std::uint64_t cavity_corrections = 0;    // triangles taken out of cavities (star-shapedness, §2.6.3)
   std::uint64_t input_points = 0, segments = 0;
+  std::uint64_t boundary_points = 0;  // cut points added by resample_boundary
   // Optimization counts (algorithms/optimize2d), filled when it ran.
   std::uint64_t swaps = 0, relocations = 0, collapses = 0, splits = 0;
+  std::uint32_t optimization_rounds = 0;
 };
 
 struct Mesh2dResult {
@@ -99,7 +106,17 @@ ControlSpace2 classical_control_space(const Mesh2& empty);
 // The empty mesh with one metric per input point (the first `metrics.size()` vertex slots);
 // the crossing points after them interpolate their constrained neighbours' metrics.
 ControlSpace2 input_control_space(const Mesh2& empty, std::span<const Metric2> metrics, MetricInterpolation mode);
+// The boundary cut in the metric: the input points first, then the cut points; every input segment
+// replaced by its sub-segments, in order, with its marker.
+struct ResampledBoundary {
+  std::vector<Vec2> points;
+  std::vector<std::array<std::uint32_t, 2>> segments;
+  std::vector<int> markers;
+};
+ResampledBoundary resample_boundary(const Mesh2dInput& input, const ControlSpace2& control, const Mesh2dOptions& options);
 // 3.+4. The edge method: field points inserted until saturation. Adds to `stats`.
 void insert_edge_points(Mesh2& mesh, const ControlSpace2& control, const Mesh2dOptions& options, Mesh2dStats& stats);
+// 3.+4. The advancing-front method (front_points.cpp): points placed from the front, inserted at once.
+void insert_front_points(Mesh2& mesh, const ControlSpace2& control, const Mesh2dOptions& options, Mesh2dStats& stats);
 
 }  // namespace dtlab

@@ -38,6 +38,9 @@ inline constexpr double kImprovementMargin = 1e-6;
 // A collapse may leave the ball's worst Q_K at the old worst or at this, whichever is larger
 // (Q <= 2: the book's first quality class, §8.2.2 and Tables 7.1-7.3).
 inline constexpr double kCollapseQualityLimit = 2.0;
+// A split may leave the new triangles' worst Q_K at the old worst or at this, whichever is
+// larger (Q <= 3: the book's second quality class).
+inline constexpr double kSplitQualityLimit = 3.0;
 
 // --- Edge swap (book §8.3.1) ---------------------------------------------------------------------
 // Swaps the diagonal of half-edge h's quadrilateral when the worst Q_K of the pair strictly
@@ -102,6 +105,12 @@ struct SplitOptions {
   // it, triangles beside an edge that may not be split (a long boundary edge) would be split
   // without end, ever flatter.
   double short_length = kShortEdgeLength;
+  // A split that makes the pair's worst Q_K exceed both the old worst and quality_limit is taken
+  // only if every new triangle keeps an altitude of at least min_height in the metric (thick:
+  // the swaps after it improve it); otherwise, beside an edge that may not be split, splits
+  // would flatten triangles without end.
+  double quality_limit = kSplitQualityLimit;
+  double min_height = 0.5 * kShortEdgeLength;
   // Split constrained edges (and edges between regions) too: 1 -> 2 in each triangle beside the
   // edge (ghosts included), the constraint and its reference carried to both halves, the new
   // vertex kOnBoundary. Off by default: the boundary discretisation is the input's.
@@ -116,8 +125,10 @@ Vec2 metric_midpoint(const Vec2& a, const Metric2& ma, const Vec2& b, const Metr
 // Splits the edge of h at its metric midpoint (metric from `field`, else interpolated from the
 // ends): 2 -> 4. Refused (kNone) for a constrained edge or an edge between regions unless
 // options.boundary, for an edge beside no domain triangle, when a new finite triangle would not
-// be positive, or when an edge from the new vertex to an opposite vertex would be shorter than
-// options.short_length. Returns the new vertex. No swaps here (split_pass does them).
+// be positive, when an edge from the new vertex to an opposite vertex would be shorter than
+// options.short_length, or when the new domain triangles would be both worse (above the old
+// pair's worst and options.quality_limit) and thin (an altitude below options.min_height in the
+// metric). Returns the new vertex. No swaps here (split_pass does them).
 std::uint32_t try_split(Mesh2& mesh, std::uint32_t h, const MetricField2& field, const SplitOptions& options = {});
 struct SplitPassResult {
   std::uint64_t splits = 0;

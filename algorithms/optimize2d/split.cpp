@@ -6,14 +6,15 @@
 // around each new point (§8.6.2), so the mesh stays close to Delaunay-like shapes.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <tuple>
-#include <cstdio>
 
 #include "algorithms/optimize2d/local.hpp"
 #include "algorithms/optimize2d/operators.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/predicates.hpp"
+#include "kernel/quality.hpp"
 
 namespace dtlab {
 
@@ -70,6 +71,25 @@ std::uint32_t try_split(Mesh2& mesh, std::uint32_t h, const MetricField2& field,
     const double spoke = dtlab::edge_length(at, metric, mesh.point(opposite), mesh.metric(opposite));
     if (!(spoke >= options.short_length)) return Mesh2::kNone;
   }
+  // Beside an edge that may not be split (a long boundary edge) each split would leave flatter
+  // triangles than the last, without end: a split that makes the pair worse than max(old worst,
+  // quality_limit) is taken only if every new triangle keeps an altitude of min_height in the
+  // metric at P. Splits that make the pair worse but stay thick are what refinement needs:
+  // the swaps that follow improve them.
+  double before = 0.0, after = 0.0, lowest = std::numeric_limits<double>::infinity();
+  for (const std::uint32_t t : {t1, t2}) {
+    if (mesh.in_domain(t)) before = std::max(before, optimize2d_detail::triangle_quality(mesh, t));
+  }
+  const std::uint32_t corners[4][2] = {{p, a}, {b, p}, {q, b}, {a, q}};  // (o, e, P) counter-clockwise
+  const double root_det = std::sqrt(std::max(0.0, metric.determinant()));
+  for (int k = 0; k < 4; ++k) {
+    if (!mesh.in_domain(k < 2 ? t1 : t2)) continue;
+    const Vec2 &o = mesh.point(corners[k][0]), &e = mesh.point(corners[k][1]);
+    after = std::max(after, shape_quality(o, e, at, mesh.metric(corners[k][0]), mesh.metric(corners[k][1]), metric));
+    const double longest = std::max({metric.length(e - o), metric.length(at - e), metric.length(o - at)});
+    lowest = std::min(lowest, root_det * std::fabs(cross(e - o, at - o)) / longest);  // 2 area / base
+  }
+  if (!(after <= std::max(before, options.quality_limit)) && !(lowest >= options.min_height)) return Mesh2::kNone;
   const bool constrained = mesh.is_constrained(h);
   const int edge_ref = mesh.edge_ref(h);
   const std::uint32_t v = mesh.add_vertex(at, metric, constrained ? Mesh2::kOnBoundary : 0);
@@ -83,13 +103,6 @@ std::uint32_t try_split(Mesh2& mesh, std::uint32_t h, const MetricField2& field,
   return v;
 }
 
-static double dbg_minlen(const Mesh2& mesh) {
-  double mn = 1e300; std::uint32_t w = 0;
-  for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) { if (!mesh.in_domain(t)) continue;
-    for (std::uint32_t i = 0; i < 3; ++i) { auto h = Mesh2::half_edge(t,i); double l = edge_length(mesh, mesh.origin(h), mesh.destination(h)); if (l < mn) { mn = l; w = h; } } }
-  if (mn < 1e-3) { auto a = mesh.origin(w), b = mesh.destination(w); std::fprintf(stderr, "short %u (%.17g %.17g) - %u (%.17g %.17g), opposite %u (%g %g) and %u\n", a, mesh.point(a).x, mesh.point(a).y, b, mesh.point(b).x, mesh.point(b).y, mesh.vertex_at(w), mesh.point(mesh.vertex_at(w)).x, mesh.point(mesh.vertex_at(w)).y, mesh.vertex_at(mesh.twin(w))); }
-  return mn;
-}
 SplitPassResult split_pass(Mesh2& mesh, const MetricField2& field, const SplitOptions& options) {
   SplitPassResult result;
   // Longest first; ties by the vertex pair (deterministic).
@@ -129,10 +142,8 @@ SplitPassResult split_pass(Mesh2& mesh, const MetricField2& field, const SplitOp
       break;
     }
     const std::uint32_t v = try_split(mesh, h, field, options);
-    if (v != Mesh2::kNone) std::fprintf(stderr, "split %u-%u -> %u (%.17g %.17g)\n", x, y, v, mesh.point(v).x, mesh.point(v).y);
     if (v == Mesh2::kNone) continue;
     ++result.splits;
-    if (dbg_minlen(mesh) < 1e-3) { std::fprintf(stderr, "DBG split %u-%u len %g -> %u (%g %g) minlen %g\n", x, y, std::get<0>(std::make_tuple(0.0)), v, mesh.point(v).x, mesh.point(v).y, dbg_minlen(mesh)); throw 1; }
     // Swaps on the edges of the new triangles (the ring of v and its spokes).
     mesh.ball(v, ring);
     seeds.clear();
@@ -141,7 +152,6 @@ SplitPassResult split_pass(Mesh2& mesh, const MetricField2& field, const SplitOp
       seeds.push_back(Mesh2::prev(e));
     }
     result.swaps += swap_pass(mesh, options.swap_margin, seeds).swaps;
-    if (dbg_minlen(mesh) < 1e-3) { std::fprintf(stderr, "DBG swaps after split %u-%u -> %u minlen %g\n", x, y, v, dbg_minlen(mesh)); throw 1; }
     mesh.ball(v, ring);
     for (const std::uint32_t e : ring) {
       if (mesh.origin(e) != Mesh2::kInfinite) consider(Mesh2::prev(e));  // v -> origin(e)

@@ -9,8 +9,6 @@
 #include <chrono>
 #include <cmath>
 #include <utility>
-#include <cstdio>
-#include <cstdlib>
 
 #include "algorithms/optimize2d/local.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
@@ -39,13 +37,6 @@ QualitySummary2 summarize_quality(const Mesh2& mesh) {
 }
 
 namespace {
-void dbg(const Mesh2& mesh, const char* what) {
-  if (!std::getenv("OPTDBG")) return;
-  double mn = 1e300; QualitySummary2 q = summarize_quality(mesh);
-  for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) { if (!mesh.in_domain(t)) continue;
-    for (std::uint32_t i = 0; i < 3; ++i) { auto h = Mesh2::half_edge(t,i); mn = std::min(mn, edge_length(mesh, mesh.origin(h), mesh.destination(h))); } }
-  std::fprintf(stderr, "%-10s tri %llu worst %.3g mean %.3g minlen %.3g\n", what, (unsigned long long)q.triangles, q.worst, q.mean, mn);
-}
 
 // The bad triangles, worst first: for each, the operators of its pathology until one applies.
 void treat_bad_triangles(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field,
@@ -119,15 +110,12 @@ Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const 
     ++stats.rounds;
     std::uint64_t size_changes = 0;
     bool limit = false;
-    dbg(mesh, "start");
     treat_bad_triangles(mesh, options, field, stats);
-    dbg(mesh, "bad");
     if (options.collapses) {
       const std::uint64_t c = collapse_pass(mesh, options.collapse);
       stats.collapses += c;
       size_changes += c;
     }
-    dbg(mesh, "collapse");
     if (options.splits) {
       const SplitPassResult r = split_pass(mesh, field, options.split);
       stats.splits += r.splits;
@@ -147,9 +135,7 @@ Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const 
         limit = true;
       }
     };
-    dbg(mesh, "split");
     swaps();
-    dbg(mesh, "swap");
     if (options.relocation) {
       for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
         const std::uint64_t moved = relocate_sweep(mesh, field, options.relocate);
@@ -157,7 +143,6 @@ Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const 
         if (moved == 0) break;
       }
     }
-    dbg(mesh, "relocate");
     if (options.valence) {
       stats.valence_swaps += valence_pass(mesh);
       swaps();

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <tuple>
 #include <vector>
@@ -298,6 +299,19 @@ double longest_interior_edge(const Mesh2& mesh) {
   return longest;
 }
 
+double shortest_edge(const Mesh2& mesh) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) {
+    if (!mesh.in_domain(t)) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = Mesh2::half_edge(t, i);
+      const std::uint32_t a = mesh.origin(h), b = mesh.destination(h);
+      shortest = std::min(shortest, edge_length(mesh.point(a), mesh.metric(a), mesh.point(b), mesh.metric(b)));
+    }
+  }
+  return shortest;
+}
+
 TEST(Optimize2dSplit, PassRefinesTowardUnitEdges) {
   // Boundary edges of length 1 in the metric (size 0.1, sides cut in 10): the interior fills in.
   Mesh2 mesh = square_boundary_mesh(10);
@@ -362,6 +376,23 @@ TEST(Optimize2dStrategy, SizesMoveTowardAUnitMesh) {
   EXPECT_GT(stats.splits, 0u);
   EXPECT_EQ(stats.vertices_after, stats.vertices_before + stats.splits - stats.collapses);
   EXPECT_EQ(mesh.domain().edges.size(), 4u);  // the boundary discretisation is the input's
+  EXPECT_NEAR(domain_area(mesh), 1.0, 1e-12);
+  // Beside the four sides (10 long in the metric, not split) the triangles are flat, but no
+  // split flattened them without end (it once left edges 1e-40 long there).
+  EXPECT_GT(shortest_edge(mesh), 0.2);
+}
+
+TEST(Optimize2dStrategy, BoundarySplitsGiveAUnitMesh) {
+  Mesh2 mesh = mesh2_from_data(unit_square(3), Metric2::isotropic(0.1));
+  const MetricField2 field = [](const Vec2&) { return Metric2::isotropic(0.1); };
+  Optimize2dOptions options;
+  options.split.boundary = true;
+  const Optimize2dStats stats = optimize2d(mesh, options, field);
+  mesh.check();
+  EXPECT_LT(stats.worst_after, 2.0);
+  EXPECT_GT(shortest_edge(mesh), 0.5);
+  EXPECT_LT(longest_interior_edge(mesh), 1.5);
+  for (const auto& e : boundary_of(mesh).edges) EXPECT_EQ(std::get<2>(e), 3);
   EXPECT_NEAR(domain_area(mesh), 1.0, 1e-12);
 }
 
