@@ -4,6 +4,7 @@
 // Delaunay kernel (Frey, Borouchaki, George, CMAME 157, 1998). The front: the edges between a
 // non-accepted domain triangle and an accepted one or a constrained edge; from the shortest, the apex
 // of the unit equilateral triangle, clamped inside the circumcircle, filtered as the edge method does.
+// Ours: a triangle whose front edges all fail is settled, and the front moves past it.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -30,9 +31,6 @@ constexpr double kUnitCircumradius = 0.57735026918962576451;  // 1 / sqrt(3)
 // A clamped point sits this fraction of the way to the far side of the circumcircle, strictly
 // inside it, so that the triangle it was placed for is in conflict with it.
 constexpr double kInsideCircumcircle = 0.98;
-// A point closer to a constrained edge than this share of filter_distance (in the metric at the
-// point) is filtered too: the vertex filter alone lets a clamped point lie on a long boundary edge.
-constexpr double kConstraintFilterShare = 0.5;
 // Heap pops per live vertex before the loop is declared runaway (each insertion pushes the edges
 // of its ball, about 18 half-edges; each wave the whole front once).
 constexpr std::uint64_t kStepsPerVertex = 1024;
@@ -44,8 +42,8 @@ struct FrontEdge {
   std::uint64_t gen;     // that triangle's generation when pushed (stale entries are dropped)
 };
 
-// Shortest first, then by ids: deterministic, and Rebay's order (the small elements of the front
-// are completed first, so fronts close without slivers).
+// Shortest first, then by ids: deterministic, and the finest parts of the front advance first, so
+// that sizes grow outwards from small boundary pieces rather than large fronts overrunning them.
 struct LongerFirst {
   bool operator()(const FrontEdge& x, const FrontEdge& y) const {
     if (x.length != y.length) return x.length > y.length;
@@ -173,6 +171,8 @@ class Front {
   }
 
   // The smallest metric distance (in mp) from p to a constrained edge of t or of its neighbours.
+  // The filter holds it to filter_distance as it holds the nearest vertex: a point clamped inside
+  // a flat circumcircle would otherwise lie next to a long boundary edge, making a sliver on it.
   double nearest_constraint(const Vec2& p, const Metric2& mp, std::uint32_t t) const {
     double best = std::numeric_limits<double>::infinity();
     const auto visit = [&](std::uint32_t u) {
@@ -218,7 +218,7 @@ class Front {
       return false;
     }
     if (kernel_.nearest_cavity_vertex(p, mp) < options_.filter_distance ||
-        nearest_constraint(p, mp, loc.triangle) < kConstraintFilterShare * options_.filter_distance) {
+        nearest_constraint(p, mp, loc.triangle) < options_.filter_distance) {
       ++stats_.filtered;
       return false;
     }
