@@ -34,19 +34,14 @@ struct MeshArgs {
   bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
 };
 
-// A uniform metric: a background of two triangles around the input (the metric is the same at
-// every vertex, so where the walk ends does not matter).
+// A uniform size: the box of the input, enlarged by 1 on each side.
 ControlSpace2 uniform_control_space(const std::vector<Vec2>& points, double h) {
-  double x0 = points.front().x, x1 = x0, y0 = points.front().y, y1 = y0;
+  Vec2 lo = points.front(), hi = lo;
   for (const Vec2& p : points) {
-    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
-  MeshData2 box;
-  box.vertices = {{x0 - 1, y0 - 1}, {x1 + 1, y0 - 1}, {x1 + 1, y1 + 1}, {x0 - 1, y1 + 1}};
-  box.vertex_refs.assign(4, 0);
-  box.triangles = {{0, 1, 2}, {0, 2, 3}};
-  box.triangle_refs.assign(2, 0);
-  return ControlSpace2(box, std::vector<Metric2>(4, Metric2::isotropic(h)));
+  return ControlSpace2::uniform(Metric2::isotropic(h), lo - Vec2{1, 1}, hi + Vec2{1, 1});
 }
 
 std::vector<Metric2> read_metrics(const MeshArgs& args, std::size_t vertex_count, const std::string& against) {

@@ -102,8 +102,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Case c = decode(data, size);
   if (c.points.size() < 3) return 0;
   const dtlab::Mesh2dInput input{c.points, c.segments, c.markers, c.holes, {}};
-  dtlab::MeshData2 box{{{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, {}, {}, {}, {{0, 1, 2}, {0, 2, 3}}, {0, 0}};
-  const dtlab::ControlSpace2 control(box, std::vector<dtlab::Metric2>(4, c.metric));
+  const dtlab::ControlSpace2 control = dtlab::ControlSpace2::uniform(c.metric, {-2, -2}, {2, 2});
   for (const char* method : {"edge", "front"}) {
     dtlab::Mesh2dOptions options;
     options.method = method;

@@ -36,6 +36,15 @@ ControlSpace2::ControlSpace2(Mesh2 background, std::vector<Metric2> metrics, Met
   validate();
 }
 
+ControlSpace2 ControlSpace2::uniform(const Metric2& metric, const Vec2& lo, const Vec2& hi) {
+  MeshData2 box;
+  box.vertices = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+  box.vertex_refs.assign(4, 0);
+  box.triangles = {{0, 1, 2}, {0, 2, 3}};
+  box.triangle_refs.assign(2, 0);
+  return ControlSpace2(box, std::vector<Metric2>(4, metric));
+}
+
 void ControlSpace2::validate() const {
   for (std::uint32_t v = 0; v < mesh_.vertex_capacity(); ++v) {
     if (mesh_.is_dead_vertex(v)) continue;

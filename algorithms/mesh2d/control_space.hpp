@@ -30,6 +30,9 @@ class ControlSpace2 {
   // vertices of the triangle holding p with its barycentric weights. A point outside the
   // background takes the metric at the nearest point of the triangle the walk stopped at.
   static constexpr std::uint32_t kNoHint = 0xFFFFFFFFu;
+  // The same metric everywhere: a background of two triangles over the box [lo, hi] (a point
+  // outside it takes the same metric all the same).
+  static ControlSpace2 uniform(const Metric2& metric, const Vec2& lo, const Vec2& hi);
   Metric2 metric_at(const Vec2& p, std::uint32_t& hint) const;
 
   const Mesh2& background() const noexcept { return mesh_; }

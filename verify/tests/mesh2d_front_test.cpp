@@ -16,59 +16,19 @@
 #include "mesh/mesh2_from_data.hpp"
 #include "mesh/mesh_quality.hpp"
 #include "verify/checks_mesh2d.hpp"
+#include "verify/generators/domains2d.hpp"
 
 namespace dtlab {
 namespace {
 
 using Segment = std::array<std::uint32_t, 2>;
 
-struct Domain {
-  std::vector<Vec2> points;
-  std::vector<Segment> segments;
-  std::vector<int> markers;
-  std::vector<Vec2> holes;
-  Mesh2dInput input() const { return {points, segments, markers, holes, {}}; }
-};
-
-void add_loop(Domain& d, const std::vector<Vec2>& loop, int marker) {
-  const auto first = static_cast<std::uint32_t>(d.points.size());
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    d.points.push_back(loop[i]);
-    d.segments.push_back({first + static_cast<std::uint32_t>(i), first + static_cast<std::uint32_t>((i + 1) % loop.size())});
-    d.markers.push_back(marker);
-  }
-}
-
-std::vector<Vec2> circle(Vec2 c, double r, int n) {
-  std::vector<Vec2> out;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * std::numbers::pi * i / n;
-    out.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
-  }
-  return out;
-}
-
-// The unit square, each side cut into n pieces, minus a disc of radius 0.2 at its centre.
-Domain square_minus_disc(int n) {
-  Domain d;
-  std::vector<Vec2> square;
-  for (int s = 0; s < 4; ++s) {
-    for (int i = 0; i < n; ++i) {
-      const double t = static_cast<double>(i) / n;
-      square.push_back(s == 0 ? Vec2{t, 0} : s == 1 ? Vec2{1, t} : s == 2 ? Vec2{1 - t, 1} : Vec2{0, 1 - t});
-    }
-  }
-  add_loop(d, square, 1);
-  add_loop(d, circle({0.5, 0.5}, 0.2, static_cast<int>(std::ceil(2 * std::numbers::pi * 0.2 * n))), 2);
-  d.holes.push_back({0.5, 0.5});
-  return d;
-}
+using gen::add_loop;
+using gen::square_minus_disc;
+using Domain = gen::Domain2;
 
 // A uniform metric on two triangles around the domain [lo, hi]^2.
-ControlSpace2 uniform_control(double lo, double hi, const Metric2& m) {
-  return ControlSpace2(mesh2_from_data(MeshData2{{{lo, lo}, {hi, lo}, {hi, hi}, {lo, hi}}, {}, {}, {}, {{0, 1, 2}, {0, 2, 3}}, {0, 0}}),
-                       std::vector<Metric2>(4, m));
-}
+ControlSpace2 uniform_control(double lo, double hi, const Metric2& m) { return ControlSpace2::uniform(m, {lo, lo}, {hi, hi}); }
 
 // The front method's own output: optimization off, so that the figures measure the placement.
 Mesh2dOptions front_options(const ControlSpace2* control) {
@@ -112,7 +72,7 @@ TEST(Mesh2dFront, ClassicalSizes) {
     }
   }
   add_loop(d, square, 1);
-  add_loop(d, circle({0.5, 0.5}, 0.1, 64), 2);
+  add_loop(d, gen::circle_polygon({0.5, 0.5}, 0.1, 64), 2);
   d.holes.push_back({0.5, 0.5});
   const Mesh2dResult r = mesh2d(d.input(), front_options(nullptr));
   expect_valid(d, r);
@@ -191,7 +151,7 @@ RC_GTEST_PROP(Mesh2dFrontProperty, RandomPolygonsWithHolesMeshValidly, ()) {
   }
   add_loop(d, outer, 1);
   if (*rc::gen::arbitrary<bool>()) {
-    add_loop(d, circle({0, 0}, 0.2, *rc::gen::inRange(3, 12)), 2);
+    add_loop(d, gen::circle_polygon({0, 0}, 0.2, *rc::gen::inRange(3, 12)), 2);
     d.holes.push_back({0, 0});
   }
   const double h = *rc::gen::inRange(5, 20) / 100.0;

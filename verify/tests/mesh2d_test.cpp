@@ -20,57 +20,16 @@
 #include "mesh/mesh2_from_data.hpp"
 #include "mesh/mesh_quality.hpp"
 #include "verify/checks_mesh2d.hpp"
+#include "verify/generators/domains2d.hpp"
 
 namespace dtlab {
 namespace {
 
 using Segment = std::array<std::uint32_t, 2>;
 
-struct Domain {
-  std::vector<Vec2> points;
-  std::vector<Segment> segments;
-  std::vector<int> markers;
-  std::vector<Vec2> holes;
-  std::vector<RegionSeed2> regions;
-  Mesh2dInput input() const { return {points, segments, markers, holes, regions}; }
-};
-
-// Closes the polygon given by its vertices into segments with one marker.
-void add_loop(Domain& d, const std::vector<Vec2>& loop, int marker) {
-  const auto first = static_cast<std::uint32_t>(d.points.size());
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    d.points.push_back(loop[i]);
-    d.segments.push_back({first + static_cast<std::uint32_t>(i), first + static_cast<std::uint32_t>((i + 1) % loop.size())});
-    d.markers.push_back(marker);
-  }
-}
-
-// The polygon with n vertices on the circle (c, r), counter-clockwise.
-std::vector<Vec2> circle(Vec2 c, double r, int n) {
-  std::vector<Vec2> out;
-  for (int i = 0; i < n; ++i) {
-    const double a = 2 * std::numbers::pi * i / n;
-    out.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
-  }
-  return out;
-}
-
-// The unit square, each side cut into n pieces, minus a disc of radius 0.2 at its centre.
-Domain square_minus_disc(int n) {
-  Domain d;
-  std::vector<Vec2> square;
-  for (int s = 0; s < 4; ++s) {
-    for (int i = 0; i < n; ++i) {
-      const double t = static_cast<double>(i) / n;
-      const Vec2 p = s == 0 ? Vec2{t, 0} : s == 1 ? Vec2{1, t} : s == 2 ? Vec2{1 - t, 1} : Vec2{0, 1 - t};
-      square.push_back(p);
-    }
-  }
-  add_loop(d, square, 1);
-  add_loop(d, circle({0.5, 0.5}, 0.2, static_cast<int>(std::ceil(2 * std::numbers::pi * 0.2 * n))), 2);
-  d.holes.push_back({0.5, 0.5});
-  return d;
-}
+using gen::add_loop;
+using gen::square_minus_disc;
+using Domain = gen::Domain2;
 
 void expect_valid(const Domain& d, const Mesh2dResult& r) {
   r.mesh.check();
@@ -212,7 +171,7 @@ TEST(Mesh2d, ClassicalSizesGradeBetweenFineAndCoarseBoundaries) {
     }
   }
   add_loop(d, square, 1);
-  add_loop(d, circle({0.5, 0.5}, 0.1, 64), 2);
+  add_loop(d, gen::circle_polygon({0.5, 0.5}, 0.1, 64), 2);
   d.holes.push_back({0.5, 0.5});
   const Mesh2dResult r = mesh2d(d.input(), {});
   expect_valid(d, r);
@@ -230,8 +189,7 @@ TEST(Mesh2d, RegionsAndMarkersAreKept) {
   d.markers.push_back(9);
   d.regions = {{{0.5, 0.5}, 10}, {{1.5, 0.5}, 20}};
   Mesh2dOptions options;
-  ControlSpace2 control(mesh2_from_data(MeshData2{{{-1, -1}, {3, -1}, {3, 2}, {-1, 2}}, {}, {}, {}, {{0, 1, 2}, {0, 2, 3}}, {0, 0}}),
-                        std::vector<Metric2>(4, Metric2::isotropic(0.1)));
+  const ControlSpace2 control = ControlSpace2::uniform(Metric2::isotropic(0.1), {-1, -1}, {3, 2});
   options.control = &control;
   const Mesh2dResult r = mesh2d(d.input(), options);
   expect_valid(d, r);
@@ -330,12 +288,11 @@ RC_GTEST_PROP(Mesh2dProperty, RandomPolygonsWithHolesMeshValidly, ()) {
   add_loop(d, outer, 1);
   const bool hole = *rc::gen::arbitrary<bool>();
   if (hole) {
-    add_loop(d, circle({0, 0}, 0.2, *rc::gen::inRange(3, 12)), 2);
+    add_loop(d, gen::circle_polygon({0, 0}, 0.2, *rc::gen::inRange(3, 12)), 2);
     d.holes.push_back({0, 0});
   }
   const double h = *rc::gen::inRange(3, 20) / 100.0;
-  ControlSpace2 control(MeshData2{{{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, {}, {}, {}, {{0, 1, 2}, {0, 2, 3}}, {0, 0}},
-                        std::vector<Metric2>(4, Metric2::isotropic(h)));
+  const ControlSpace2 control = ControlSpace2::uniform(Metric2::isotropic(h), {-2, -2}, {2, 2});
   Mesh2dOptions options;
   options.control = &control;
   const Mesh2dResult r = mesh2d(d.input(), options);

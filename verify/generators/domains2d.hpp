@@ -1,0 +1,30 @@
+// Planar domains for the 2D mesher's tests and fuzzers: loops of segments with markers, holes,
+// regions, and the benchmark's unit square minus a disc.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/mesh2d/mesh2d.hpp"
+
+namespace dtlab::gen {
+
+struct Domain2 {
+  std::vector<Vec2> points;
+  std::vector<std::array<std::uint32_t, 2>> segments;
+  std::vector<int> markers;
+  std::vector<Vec2> holes;
+  std::vector<RegionSeed2> regions;
+  Mesh2dInput input() const { return {points, segments, markers, holes, regions}; }
+};
+
+// Appends the closed polygon `loop` (its vertices in order) as segments with `marker`.
+void add_loop(Domain2& d, const std::vector<Vec2>& loop, int marker);
+// The n vertices of the regular polygon inscribed in the circle (c, r), counter-clockwise.
+std::vector<Vec2> circle_polygon(const Vec2& c, double r, int n);
+// The unit square, each side cut into n pieces (marker 1), minus the disc of radius 0.2 at its
+// centre cut at the same spacing (marker 2, a hole).
+Domain2 square_minus_disc(int n);
+
+}  // namespace dtlab::gen
