@@ -148,7 +148,9 @@ class Mesh3 {
   void ball(std::uint32_t v, std::vector<std::uint32_t>& out) const;
   // The tetrahedra around edge (a, b) in cyclic order (its shell, §8.3.2), ghosts included;
   // returns false when a and b share no edge. `ring` (optional) receives the vertices of the
-  // shell's ring in the same order: ring[k] and ring[k+1] with a, b span shell[k].
+  // shell's ring in the same order: ring[k] and ring[k+1] with a, b span shell[k], cyclically
+  // (ring has out.size() entries; ring[n-1] and ring[0] span shell[n-1]), and (a, b, ring[k],
+  // ring[k+1]) is positive: the ring turns counter-clockwise seen from b towards a.
   bool shell(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& out, std::vector<std::uint32_t>* ring = nullptr) const;
   // A live tetrahedron having edge (a, b), or kNone.
   std::uint32_t find_edge(std::uint32_t a, std::uint32_t b) const;
@@ -164,6 +166,7 @@ class Mesh3 {
     std::uint32_t tetrahedron = kNone;  // the tetrahedron holding p
     std::uint32_t handle = kNone;       // Facet: the facet handle; Vertex: the vertex
     bool blocked = false;
+    std::uint32_t edge_a = kNone, edge_b = kNone;  // Edge: the edge's two vertices
   };
   Location locate(const Vec3& p, std::uint32_t start, bool stop_at_constraints = false) const;
 

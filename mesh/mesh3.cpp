@@ -1,0 +1,476 @@
+// The shared mutable 3D mesh (mesh3.hpp): storage, free lists, navigation (ball, shell), the
+// visibility walk and the exact check, the counterpart of mesh/mesh2.cpp. Operators that change
+// the mesh live in algorithms/ (one a file).
+#include "mesh/mesh3.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <string>
+#include <unordered_set>
+
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+
+namespace dtlab {
+
+namespace {
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) noexcept {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(a) << 32) | b;
+}
+
+struct TripleHash {
+  std::size_t operator()(const std::array<std::uint32_t, 3>& k) const noexcept {
+    std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
+    h ^= (h >> 29) + k[1] * 0xBF58476D1CE4E5B9ull;
+    h ^= (h >> 31) + k[2] * 0x94D049BB133111EBull;
+    return static_cast<std::size_t>(h ^ (h >> 32));
+  }
+};
+
+std::array<std::uint32_t, 3> sorted(std::array<std::uint32_t, 3> v) noexcept {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+// Same three vertices in opposite cyclic order.
+bool reversed_facets(const std::array<std::uint32_t, 3>& f, const std::array<std::uint32_t, 3>& g) noexcept {
+  for (int r = 0; r < 3; ++r)
+    if (f[0] == g[r] && f[1] == g[(r + 2) % 3] && f[2] == g[(r + 1) % 3]) return true;
+  return false;
+}
+
+// Local indices k, l completing i, j so that (i, j, k, l) is an even permutation of (0, 1, 2, 3):
+// (v_i, v_j, v_k, v_l) is then positive like the tetrahedron.
+std::array<std::uint32_t, 2> complete_even(std::uint32_t i, std::uint32_t j) noexcept {
+  std::uint32_t k = 0;
+  while (k == i || k == j) ++k;
+  std::uint32_t l = 6 - i - j - k;
+  // Parity of (i, j, k, l): count inversions.
+  const std::uint32_t p[4] = {i, j, k, l};
+  int inversions = 0;
+  for (int x = 0; x < 4; ++x)
+    for (int y = x + 1; y < 4; ++y) inversions += p[x] > p[y];
+  if (inversions % 2) std::swap(k, l);
+  return {k, l};
+}
+
+// The tetrahedra already seen by a search around a vertex: a linear scan while few, a hash set
+// beyond (balls are small; a degenerate vertex of high valence should not make it quadratic).
+class SeenSet {
+ public:
+  bool insert(std::uint32_t t, const std::vector<std::uint32_t>& list) {
+    if (list.size() < 48) return std::find(list.begin(), list.end(), t) == list.end();
+    if (set_.empty()) set_.insert(list.begin(), list.end());
+    return set_.insert(t).second;
+  }
+
+ private:
+  std::unordered_set<std::uint32_t> set_;
+};
+
+std::string vertex_name(std::uint32_t v) { return v == Mesh3::kInfinite ? std::string("infinite") : std::to_string(v); }
+
+}  // namespace
+
+Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_refs,
+             std::span<const MeshTriangle3> constrained, const Metric3& metric) {
+  const std::size_t n = tet.point_count();
+  const std::size_t nt = tet.tetrahedron_count();
+  if (tetrahedron_refs.size() != nt) {
+    throw InputError("Mesh3: " + std::to_string(tetrahedron_refs.size()) + " tetrahedron references for " +
+                     std::to_string(nt) + " tetrahedra");
+  }
+  points_.assign(tet.points().begin(), tet.points().end());
+  metrics_.assign(n, metric);
+  vertex_flags_.assign(n, kFixed);
+  vertex_tetrahedron_.assign(n, kNone);
+  vertices_.resize(4 * nt);
+  neighbours_.resize(4 * nt);
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    const auto& r = tet.records()[t];
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      vertices_[4 * t + i] = r.vertex[i];
+      neighbours_[4 * t + i] = r.neighbour[i];
+    }
+  }
+  refs_.assign(tetrahedron_refs.begin(), tetrahedron_refs.end());
+  facet_refs_.assign(vertices_.size(), kUnconstrained);
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    if (is_ghost(t)) refs_[t] = kExterior;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t v = vertices_[4 * t + i];
+      if (v != kInfinite && vertex_tetrahedron_[v] == kNone) vertex_tetrahedron_[v] = t;
+    }
+  }
+  // Vertices no tetrahedron uses (duplicates of the input) are dead slots.
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (vertex_tetrahedron_[v] == kNone) {
+      vertex_flags_[v] = kDead;
+      free_vertices_.push_back(v);
+    }
+  }
+  std::reverse(free_vertices_.begin(), free_vertices_.end());
+  if (constrained.empty()) return;
+  std::unordered_map<std::array<std::uint32_t, 3>, std::uint32_t, TripleHash> by_facet;
+  by_facet.reserve(constrained.size() * 2);
+  for (std::uint32_t i = 0; i < constrained.size(); ++i)
+    by_facet.emplace(sorted({constrained[i].a, constrained[i].b, constrained[i].c}), i);
+  std::vector<std::uint8_t> found(constrained.size(), 0);
+  for (std::uint32_t h = 0; h < vertices_.size(); ++h) {
+    if (is_ghost(tetrahedron_of(h)) && index_in_tetrahedron(h) != 0) continue;  // holds kInfinite
+    const auto it = by_facet.find(sorted(facet_vertices(h)));
+    if (it == by_facet.end()) continue;
+    facet_refs_[h] = constrained[it->second].ref;
+    found[it->second] = 1;
+  }
+  for (std::uint32_t i = 0; i < constrained.size(); ++i) {
+    const MeshTriangle3& c = constrained[i];
+    if (!found[i]) {
+      throw InputError("Mesh3: constrained triangle " + std::to_string(i) + " (" + std::to_string(c.a) + ", " +
+                           std::to_string(c.b) + ", " + std::to_string(c.c) + ") is not a facet of the tetrahedralization",
+                       {i});
+    }
+    for (const std::uint32_t v : {c.a, c.b, c.c}) vertex_flags_[v] |= kOnBoundary;
+    set_constrained_edge(c.a, c.b, true);
+    set_constrained_edge(c.b, c.c, true);
+    set_constrained_edge(c.c, c.a, true);
+  }
+}
+
+std::uint32_t Mesh3::add_vertex(const Vec3& p, const Metric3& m, std::uint8_t flags) {
+  DTLAB_ASSERT((flags & kDead) == 0);
+  if (!free_vertices_.empty()) {
+    const std::uint32_t v = free_vertices_.back();
+    free_vertices_.pop_back();
+    points_[v] = p;
+    metrics_[v] = m;
+    vertex_flags_[v] = flags;
+    vertex_tetrahedron_[v] = kNone;
+    return v;
+  }
+  DTLAB_ASSERT(points_.size() < Tetrahedralization3::kMaxPoints);
+  points_.push_back(p);
+  metrics_.push_back(m);
+  vertex_flags_.push_back(flags);
+  vertex_tetrahedron_.push_back(kNone);
+  return static_cast<std::uint32_t>(points_.size() - 1);
+}
+
+void Mesh3::remove_vertex(std::uint32_t v) {
+  DTLAB_ASSERT(v < vertex_capacity() && !is_dead_vertex(v));
+  vertex_flags_[v] = kDead;
+  vertex_tetrahedron_[v] = kNone;
+  free_vertices_.push_back(v);
+}
+
+std::uint32_t Mesh3::add_tetrahedron(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, int r) {
+  DTLAB_ASSERT(b != kInfinite && c != kInfinite && d != kInfinite);
+  DTLAB_ASSERT(a != kNone && a != b && a != c && a != d && b != c && b != d && c != d);
+  std::uint32_t t;
+  if (!free_tetrahedra_.empty()) {
+    t = free_tetrahedra_.back();
+    free_tetrahedra_.pop_back();
+  } else {
+    t = tetrahedron_capacity();
+    DTLAB_ASSERT(t < Tetrahedralization3::kMaxTetrahedra);
+    vertices_.resize(vertices_.size() + 4);
+    neighbours_.resize(neighbours_.size() + 4);
+    facet_refs_.resize(facet_refs_.size() + 4);
+    refs_.push_back(0);
+  }
+  const std::uint32_t v[4] = {a, b, c, d};
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    vertices_[4 * t + i] = v[i];
+    neighbours_[4 * t + i] = kNone;
+    facet_refs_[4 * t + i] = kUnconstrained;
+    if (v[i] != kInfinite) vertex_tetrahedron_[v[i]] = t;
+  }
+  refs_[t] = r;
+  return t;
+}
+
+void Mesh3::remove_tetrahedron(std::uint32_t t) {
+  DTLAB_ASSERT(t < tetrahedron_capacity() && is_alive(t));
+  vertices_[4 * t] = kNone;
+  free_tetrahedra_.push_back(t);
+}
+
+bool Mesh3::is_constrained_edge(std::uint32_t a, std::uint32_t b) const {
+  return constrained_edges_.count(edge_key(a, b)) != 0;
+}
+
+void Mesh3::set_constrained_edge(std::uint32_t a, std::uint32_t b, bool constrained) {
+  DTLAB_ASSERT(a != b && a < kInfinite && b < kInfinite);
+  if (constrained) {
+    constrained_edges_.emplace(edge_key(a, b), 1);
+  } else {
+    constrained_edges_.erase(edge_key(a, b));
+  }
+}
+
+void Mesh3::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  DTLAB_ASSERT(v < vertex_capacity() && !is_dead_vertex(v));
+  const std::uint32_t t0 = vertex_tetrahedron_[v];
+  DTLAB_ASSERT(t0 != kNone && is_alive(t0));
+  // Breadth first across the facets holding v (those opposite the other three vertices): the
+  // order depends only on the structure, so it is deterministic.
+  const std::size_t bound = live_tetrahedron_count();
+  SeenSet seen;
+  out.push_back(t0);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const std::uint32_t t = out[k];
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (vertices_[4 * t + i] == v) continue;
+      const std::uint32_t u = tetrahedron_of(neighbours_[4 * t + i]);
+      if (!seen.insert(u, out)) continue;
+      out.push_back(u);
+      if (out.size() > bound) {
+        throw InternalError("Mesh3::ball: the search around vertex " + std::to_string(v) + " passed " +
+                            std::to_string(bound) + " tetrahedra");
+      }
+    }
+  }
+}
+
+std::uint32_t Mesh3::find_edge(std::uint32_t a, std::uint32_t b) const {
+  if (a == b) return kNone;
+  if (a == kInfinite) std::swap(a, b);
+  if (a >= vertex_capacity() || is_dead_vertex(a)) return kNone;
+  if (b != kInfinite && (b >= vertex_capacity() || is_dead_vertex(b))) return kNone;
+  std::vector<std::uint32_t> around;
+  ball(a, around);
+  for (const std::uint32_t t : around) {
+    for (std::uint32_t i = 0; i < 4; ++i)
+      if (vertices_[4 * t + i] == b) return t;
+  }
+  return kNone;
+}
+
+std::uint32_t Mesh3::find_facet(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
+  if (a == b || b == c || a == c) return kNone;
+  if (a == kInfinite) std::swap(a, b);
+  if (a == kInfinite) std::swap(a, c);
+  if (a >= vertex_capacity() || is_dead_vertex(a)) return kNone;
+  std::vector<std::uint32_t> around;
+  ball(a, around);
+  for (const std::uint32_t t : around) {
+    int hits = 0;
+    std::uint32_t other = 4;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t v = vertices_[4 * t + i];
+      if (v == a || v == b || v == c) {
+        ++hits;
+      } else {
+        other = i;
+      }
+    }
+    if (hits == 3) return 4 * t + other;
+  }
+  return kNone;
+}
+
+bool Mesh3::shell(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& out, std::vector<std::uint32_t>* ring) const {
+  out.clear();
+  if (ring) ring->clear();
+  const std::uint32_t t0 = find_edge(a, b);
+  if (t0 == kNone) return false;
+  auto local = [&](std::uint32_t t, std::uint32_t v) {
+    for (std::uint32_t i = 0; i < 4; ++i)
+      if (vertices_[4 * t + i] == v) return i;
+    throw InternalError("Mesh3::shell: tetrahedron " + std::to_string(t) + " lost vertex " + vertex_name(v));
+  };
+  // In t = (a, b, c, d) positive, the next tetrahedron around the edge is across the facet
+  // (a, b, d) opposite c; its fourth vertex e gives (a, b, d, e) positive again.
+  const std::uint32_t k0 = complete_even(local(t0, a), local(t0, b))[0];
+  std::uint32_t t = t0;
+  std::uint32_t c = vertices_[4 * t0 + k0];
+  const std::size_t bound = live_tetrahedron_count();
+  do {
+    out.push_back(t);
+    if (ring) ring->push_back(c);
+    if (out.size() > bound) {
+      throw InternalError("Mesh3::shell: the tetrahedra around edge (" + vertex_name(a) + ", " + vertex_name(b) +
+                          ") do not close");
+    }
+    const std::uint32_t ic = local(t, c);
+    const std::uint32_t g = neighbours_[4 * t + ic];
+    const auto [k, l] = complete_even(local(t, a), local(t, b));
+    DTLAB_ASSERT(k == ic);
+    c = vertices_[4 * t + l];
+    t = tetrahedron_of(g);
+  } while (t != t0);
+  return true;
+}
+
+Mesh3::Location Mesh3::locate(const Vec3& p, std::uint32_t start, bool stop_at_constraints) const {
+  DTLAB_ASSERT(start < tetrahedron_capacity() && is_alive(start));
+  std::uint32_t t = start;
+  if (is_ghost(t)) t = tetrahedron_of(neighbours_[4 * t]);
+  std::uint64_t rng = 0x9E3779B97F4A7C15ull ^ (static_cast<std::uint64_t>(start) * 0xBF58476D1CE4E5B9ull);
+  const std::uint64_t bound = 64ull * live_tetrahedron_count() + 64;
+  std::uint32_t came_from = kNone;
+  for (std::uint64_t step = 0; step < bound; ++step) {
+    if (is_ghost(t)) return {Where::Outside, t, kNone, false};
+    // Stochastic visibility walk (Devillers, Pion, Teillaud 2002): test the facets from a random
+    // one, step across the first that has p strictly on its far side. Facet i followed by vertex
+    // i is positive, so orient3d(facet, p) < 0 puts p beyond it.
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    const std::uint32_t first = static_cast<std::uint32_t>(rng % 4);
+    bool moved = false;
+    std::uint32_t zero_mask = 0;
+    for (std::uint32_t k = 0; k < 4; ++k) {
+      const std::uint32_t i = (first + k) % 4;
+      const std::uint32_t h = 4 * t + i;
+      if (h == came_from) continue;
+      const auto f = facet_vertices(h);
+      const Sign s = orient3d(points_[f[0]], points_[f[1]], points_[f[2]], p);
+      if (s == Sign::Negative) {
+        if (stop_at_constraints && is_constrained(h)) return {Where::Inside, t, kNone, true};
+        came_from = neighbours_[h];
+        t = tetrahedron_of(came_from);
+        moved = true;
+        break;
+      }
+      if (s == Sign::Zero) zero_mask |= 1u << i;
+    }
+    if (moved) continue;
+    // came_from was skipped: p is not strictly beyond it (we came from there), but it may be on it.
+    if (came_from != kNone) {
+      const auto f = facet_vertices(came_from);
+      if (orient3d(points_[f[0]], points_[f[1]], points_[f[2]], p) == Sign::Zero)
+        zero_mask |= 1u << index_in_tetrahedron(came_from);
+    }
+    const int zeros = std::popcount(zero_mask);
+    if (zeros == 0) return {Where::Inside, t, kNone, false};
+    if (zeros == 1) return {Where::Facet, t, 4 * t + static_cast<std::uint32_t>(std::countr_zero(zero_mask)), false};
+    if (zeros == 2) {
+      // The edge lies on both zero facets: its vertices are the two not opposite them.
+      Location loc{Where::Edge, t, kNone, false};
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        if (zero_mask & (1u << i)) continue;
+        (loc.edge_a == kNone ? loc.edge_a : loc.edge_b) = vertices_[4 * t + i];
+      }
+      return loc;
+    }
+    // Three zero facets meet at the one vertex none of them is opposite: p is that vertex.
+    for (std::uint32_t i = 0; i < 4; ++i)
+      if (!(zero_mask & (1u << i))) return {Where::Vertex, t, vertices_[4 * t + i], false};
+    throw InternalError("Mesh3::locate: p is on all four facets of tetrahedron " + std::to_string(t));
+  }
+  throw InternalError("Mesh3::locate: no tetrahedron found for (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                      ", " + std::to_string(p.z) + ") within the step bound");
+}
+
+void Mesh3::check() const {
+  auto fail = [](const std::string& what) { throw InternalError("Mesh3::check: " + what); };
+  const std::uint32_t nt = tetrahedron_capacity();
+  if (neighbours_.size() != vertices_.size() || facet_refs_.size() != vertices_.size() || refs_.size() != nt)
+    fail("array sizes differ");
+  std::vector<std::uint8_t> free_t(nt, 0);
+  for (const std::uint32_t t : free_tetrahedra_) {
+    if (t >= nt || is_alive(t) || free_t[t]) fail("free tetrahedron list holds " + std::to_string(t));
+    free_t[t] = 1;
+  }
+  std::vector<std::uint8_t> free_v(vertex_capacity(), 0);
+  for (const std::uint32_t v : free_vertices_) {
+    if (v >= vertex_capacity() || !is_dead_vertex(v) || free_v[v]) fail("free vertex list holds " + std::to_string(v));
+    free_v[v] = 1;
+  }
+  for (std::uint32_t v = 0; v < vertex_capacity(); ++v)
+    if (is_dead_vertex(v) && !free_v[v]) fail("dead vertex " + std::to_string(v) + " not in the free list");
+  std::vector<std::uint8_t> used(vertex_capacity(), 0);
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    if (!is_alive(t)) {
+      if (!free_t[t]) fail("dead tetrahedron " + std::to_string(t) + " not in the free list");
+      continue;
+    }
+    const std::string name = "tetrahedron " + std::to_string(t);
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t h = 4 * t + i;
+      const std::uint32_t v = vertices_[h];
+      if (v == kInfinite) {
+        if (i != 0) fail("kInfinite at index " + std::to_string(i) + " of " + name);
+      } else {
+        if (v >= vertex_capacity() || is_dead_vertex(v)) fail(name + " uses dead vertex " + std::to_string(v));
+        used[v] = 1;
+      }
+      for (std::uint32_t j = i + 1; j < 4; ++j)
+        if (vertices_[4 * t + j] == v) fail(name + " repeats vertex " + vertex_name(v));
+      const std::uint32_t g = neighbours_[h];
+      if (g == kNone || g >= vertices_.size() || !is_alive(tetrahedron_of(g)) || tetrahedron_of(g) == t)
+        fail("facet " + std::to_string(h) + " of " + name + " has no live twin");
+      if (neighbours_[g] != h) fail("facet " + std::to_string(h) + " twin not symmetric");
+      if (!reversed_facets(facet_vertices(h), facet_vertices(g)))
+        fail("facet " + std::to_string(h) + " twin is not the same facet in opposite orientation");
+      if (facet_refs_[g] != facet_refs_[h]) fail("facet " + std::to_string(h) + " constrained differently from its twin");
+    }
+    if (!is_ghost(t)) {
+      const auto v = tetrahedron(t);
+      if (orient3d(points_[v[0]], points_[v[1]], points_[v[2]], points_[v[3]]) != Sign::Positive)
+        fail(name + " (" + std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]) + ", " +
+             std::to_string(v[3]) + ") is not positive");
+    } else if (refs_[t] != kExterior) {
+      fail("ghost " + name + " has a reference other than kExterior");
+    }
+  }
+  for (std::uint32_t v = 0; v < vertex_capacity(); ++v) {
+    if (is_dead_vertex(v)) continue;
+    const std::uint32_t t = vertex_tetrahedron_[v];
+    if (t == kNone || t >= nt || !is_alive(t) ||
+        (vertices_[4 * t] != v && vertices_[4 * t + 1] != v && vertices_[4 * t + 2] != v && vertices_[4 * t + 3] != v))
+      fail("vertex_tetrahedron of vertex " + std::to_string(v) + " is stale");
+    if (!used[v]) fail("live vertex " + std::to_string(v) + " is used by no tetrahedron");
+  }
+  // Sorted, so that the first problem named does not depend on the hash table's order.
+  std::vector<std::uint64_t> edges;
+  edges.reserve(constrained_edges_.size());
+  for (const auto& [key, value] : constrained_edges_) edges.push_back(key);
+  std::sort(edges.begin(), edges.end());
+  for (const std::uint64_t key : edges) {
+    const auto a = static_cast<std::uint32_t>(key >> 32), b = static_cast<std::uint32_t>(key);
+    if (find_edge(a, b) == kNone)
+      fail("constrained edge (" + std::to_string(a) + ", " + std::to_string(b) + ") is not an edge of the mesh");
+  }
+}
+
+MeshData3 Mesh3::domain(std::vector<std::uint32_t>* vertex_ids) const {
+  MeshData3 out;
+  std::vector<std::uint32_t> number(vertex_capacity(), kNone);
+  const std::uint32_t nt = tetrahedron_capacity();
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    if (!in_domain(t)) continue;
+    for (std::uint32_t i = 0; i < 4; ++i) number[vertices_[4 * t + i]] = 0;
+  }
+  if (vertex_ids) vertex_ids->clear();
+  for (std::uint32_t v = 0; v < vertex_capacity(); ++v) {
+    if (number[v] == kNone) continue;
+    number[v] = static_cast<std::uint32_t>(out.vertices.size());
+    out.vertices.push_back(points_[v]);
+    out.vertex_refs.push_back(0);
+    if (vertex_ids) vertex_ids->push_back(v);
+  }
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    if (!in_domain(t)) continue;
+    const auto v = tetrahedron(t);
+    out.tetrahedra.push_back({number[v[0]], number[v[1]], number[v[2]], number[v[3]]});
+    out.tetrahedron_refs.push_back(refs_[t]);
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t h = 4 * t + i;
+      if (!is_constrained(h)) continue;
+      const std::uint32_t u = tetrahedron_of(neighbours_[h]);
+      // Each facet once: from the domain side with the smaller slot.
+      if (in_domain(u) && u < t) continue;
+      const auto f = facet_vertices(h);
+      out.triangles.push_back({number[f[0]], number[f[1]], number[f[2]]});
+      out.triangle_refs.push_back(facet_refs_[h]);
+    }
+  }
+  return out;
+}
+
+}  // namespace dtlab

@@ -1,0 +1,486 @@
+// The shared mutable 3D mesh (mesh/mesh3.hpp) and its construction from a neutral mesh
+// (mesh/mesh3_from_data.hpp): built from Delaunay tetrahedralizations (algorithms/delaunay3d)
+// and from hand-made non-convex meshes, check() passes; ball, shell (with its ring's order),
+// find_edge, find_facet and locate agree with brute force on random point sets (RapidCheck),
+// locate's edge, facet and vertex cases on lattice points exactly; domain() round-trips through
+// mesh3_from_data; bad input is refused by name, numbered from 1; check() finds broken meshes.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "algorithms/delaunay3d/delaunay3d.hpp"
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+#include "mesh/mesh3.hpp"
+#include "mesh/mesh3_from_data.hpp"
+
+namespace dtlab {
+namespace {
+
+// A Delaunay mesh of `points`: finite tetrahedra of reference `ref` (or 1 / 2 by the side of
+// x = split when split is given), hull facets constrained with reference 7.
+Mesh3 delaunay_mesh(const std::vector<Vec3>& points, double split = 1e300) {
+  Delaunay3dResult r = delaunay3d(points);
+  EXPECT_TRUE(r.degenerate_message.empty()) << r.degenerate_message;
+  const Tetrahedralization3& tet = r.tetrahedralization;
+  std::vector<int> refs(tet.tetrahedron_count(), Mesh3::kExterior);
+  std::vector<MeshTriangle3> hull;
+  for (std::uint32_t t = 0; t < tet.tetrahedron_count(); ++t) {
+    if (tet.is_ghost(t)) {
+      const auto f = tet.facet_vertices(Tetrahedralization3::facet(t, 0));
+      hull.push_back({f[0], f[1], f[2], 7});
+      continue;
+    }
+    double x = 0;
+    for (std::uint32_t i = 0; i < 4; ++i) x += points[tet.vertex(t, i)].x / 4;
+    refs[t] = x < split ? 1 : 2;
+  }
+  return Mesh3(tet, refs, hull);
+}
+
+std::vector<Vec3> random_points(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> p(n);
+  for (Vec3& q : p) q = {u(rng), u(rng), u(rng)};
+  return p;
+}
+
+// Points on a lattice of spacing 6 (so that edge midpoints and facet centroids are exact).
+std::vector<Vec3> lattice_points(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> u(0, 12);
+  std::set<std::array<int, 3>> seen;
+  std::vector<Vec3> p;
+  while (p.size() < n) {
+    const std::array<int, 3> c{u(rng), u(rng), u(rng)};
+    if (!seen.insert(c).second) continue;
+    p.push_back({6.0 * c[0], 6.0 * c[1], 6.0 * c[2]});
+  }
+  return p;
+}
+
+bool has(const std::array<std::uint32_t, 4>& t, std::uint32_t v) { return std::find(t.begin(), t.end(), v) != t.end(); }
+
+std::vector<std::uint32_t> live_with(const Mesh3& m, std::uint32_t a, std::uint32_t b = Mesh3::kNone) {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t t = 0; t < m.tetrahedron_capacity(); ++t)
+    if (m.is_alive(t) && has(m.tetrahedron(t), a) && (b == Mesh3::kNone || has(m.tetrahedron(t), b))) out.push_back(t);
+  return out;
+}
+
+std::vector<std::uint32_t> sorted_copy(std::vector<std::uint32_t> v) {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+// Ball, shell, ring order, find_edge, find_facet against brute force, for every vertex and the
+// edges of every `stride`-th tetrahedron.
+void check_queries(const Mesh3& m, std::uint32_t stride = 1) {
+  std::vector<std::uint32_t> out, ring, shell;
+  for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) {
+    if (m.is_dead_vertex(v)) continue;
+    m.ball(v, out);
+    ASSERT_EQ(sorted_copy(out), live_with(m, v)) << "ball of " << v;
+  }
+  for (std::uint32_t t = 0; t < m.tetrahedron_capacity(); t += stride) {
+    if (!m.is_alive(t)) continue;
+    const auto tv = m.tetrahedron(t);
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const std::uint32_t a = tv[i], b = tv[j];
+        ASSERT_NE(m.find_edge(a, b), Mesh3::kNone);
+        ASSERT_TRUE(m.shell(a, b, shell, &ring));
+        ASSERT_EQ(shell.size(), ring.size());
+        ASSERT_EQ(sorted_copy(shell), live_with(m, a, b)) << "shell of " << a << "-" << b;
+        const std::size_t n = shell.size();
+        for (std::size_t k = 0; k < n; ++k) {
+          const std::uint32_t c = ring[k], d = ring[(k + 1) % n];
+          const auto s = m.tetrahedron(shell[k]);
+          ASSERT_TRUE(has(s, a) && has(s, b) && has(s, c) && has(s, d));
+          // Consecutive tetrahedra share the facet (a, b, ring[k+1]).
+          const auto s2 = m.tetrahedron(shell[(k + 1) % n]);
+          ASSERT_TRUE(has(s2, d));
+          if (a != Mesh3::kInfinite && b != Mesh3::kInfinite && c != Mesh3::kInfinite && d != Mesh3::kInfinite) {
+            ASSERT_EQ(orient3d(m.point(a), m.point(b), m.point(c), m.point(d)), Sign::Positive);
+          }
+        }
+      }
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const auto f = m.facet_vertices(Mesh3::facet(t, i));
+      const std::uint32_t h = m.find_facet(f[2], f[0], f[1]);
+      ASSERT_NE(h, Mesh3::kNone);
+      ASSERT_TRUE(h == Mesh3::facet(t, i) || h == m.twin(Mesh3::facet(t, i)));
+    }
+  }
+}
+
+TEST(Mesh3, DelaunayMeshChecksAndQueries) {
+  const Mesh3 m = delaunay_mesh(random_points(300, 1));
+  m.check();
+  check_queries(m);
+  EXPECT_EQ(m.live_vertex_count(), 300u);
+  // Hull vertices are on the boundary, hull edges constrained.
+  std::size_t constrained_facets = 0;
+  for (std::uint32_t h = 0; h < 4 * m.tetrahedron_capacity(); ++h) constrained_facets += m.is_constrained(h);
+  EXPECT_GT(constrained_facets, 0u);
+  EXPECT_GT(m.constrained_edge_count(), 0u);
+}
+
+TEST(Mesh3, FindEdgeOfNonEdgeIsNone) {
+  const Mesh3 m = delaunay_mesh(random_points(200, 2));
+  std::vector<std::uint32_t> ball;
+  int tested = 0;
+  for (std::uint32_t a = 0; a < 200 && tested < 50; ++a)
+    for (std::uint32_t b = a + 1; b < 200 && tested < 50; ++b) {
+      if (!live_with(m, a, b).empty()) continue;
+      ++tested;
+      std::vector<std::uint32_t> shell;
+      EXPECT_EQ(m.find_edge(a, b), Mesh3::kNone);
+      EXPECT_FALSE(m.shell(a, b, shell));
+    }
+  EXPECT_EQ(tested, 50);
+}
+
+TEST(Mesh3, LocateFindsTheHoldingTetrahedron) {
+  const std::vector<Vec3> pts = random_points(400, 3);
+  const Mesh3 m = delaunay_mesh(pts);
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  int inside = 0, outside = 0;
+  for (int k = 0; k < 500; ++k) {
+    const Vec3 p{u(rng), u(rng), u(rng)};
+    const std::uint32_t start = static_cast<std::uint32_t>(rng() % m.tetrahedron_capacity());
+    const Mesh3::Location loc = m.locate(p, start);
+    if (loc.where == Mesh3::Where::Outside) {
+      ++outside;
+      ASSERT_TRUE(m.is_ghost(loc.tetrahedron));
+      // Strictly beyond its hull facet: on the side of the ghost's infinite vertex.
+      const auto f = m.facet_vertices(Mesh3::facet(loc.tetrahedron, 0));
+      ASSERT_EQ(orient3d(m.point(f[0]), m.point(f[1]), m.point(f[2]), p), Sign::Positive);
+      continue;
+    }
+    ++inside;
+    ASSERT_EQ(loc.where, Mesh3::Where::Inside);
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const auto f = m.facet_vertices(Mesh3::facet(loc.tetrahedron, i));
+      ASSERT_EQ(orient3d(m.point(f[0]), m.point(f[1]), m.point(f[2]), p), Sign::Positive);
+    }
+  }
+  EXPECT_GT(inside, 50);
+  EXPECT_GT(outside, 50);
+  // Every vertex is found as a vertex.
+  for (std::uint32_t v = 0; v < pts.size(); v += 7) {
+    const Mesh3::Location loc = m.locate(pts[v], 0);
+    EXPECT_EQ(loc.where, Mesh3::Where::Vertex);
+    EXPECT_EQ(loc.handle, v);
+  }
+}
+
+TEST(Mesh3, LocateOnEdgesAndFacetsExactly) {
+  const std::vector<Vec3> pts = lattice_points(120, 5);
+  const Mesh3 m = delaunay_mesh(pts);
+  m.check();
+  int edges = 0, facets = 0;
+  for (std::uint32_t t = 0; t < m.tetrahedron_capacity(); t += 3) {
+    if (m.is_ghost(t)) continue;
+    const auto v = m.tetrahedron(t);
+    const Vec3 mid = 0.5 * (m.point(v[0]) + m.point(v[1]));
+    const Vec3 centroid = (1.0 / 3.0) * (m.point(v[0]) + m.point(v[1]) + m.point(v[2]));
+    const bool mid_is_vertex = std::find(pts.begin(), pts.end(), mid) != pts.end();
+    const Mesh3::Location e = m.locate(mid, t);
+    if (!mid_is_vertex) {
+      // Lattice points can be collinear: the midpoint lies on the edge, which is an edge of the
+      // mesh, unless another vertex lies between the ends (then v0v1 would not be an edge).
+      ASSERT_EQ(e.where, Mesh3::Where::Edge);
+      ASSERT_EQ(std::minmax(e.edge_a, e.edge_b), std::minmax(v[0], v[1]));
+      ++edges;
+    }
+    const Mesh3::Location f = m.locate(centroid, (t * 7) % m.tetrahedron_capacity());
+    if (std::find(pts.begin(), pts.end(), centroid) == pts.end() && f.where == Mesh3::Where::Facet) {
+      auto a = m.facet_vertices(f.handle);
+      std::array<std::uint32_t, 3> b{v[0], v[1], v[2]};
+      std::sort(a.begin(), a.end());
+      std::sort(b.begin(), b.end());
+      ASSERT_EQ(a, b);
+      ++facets;
+    }
+  }
+  EXPECT_GT(edges, 20);
+  EXPECT_GT(facets, 20);
+}
+
+TEST(Mesh3, LocateStopsAtConstraints) {
+  const std::vector<Vec3> pts = random_points(300, 6);
+  // Two regions split at x = 0; constrain the interface by building from the domain.
+  const Mesh3 two = delaunay_mesh(pts, 0.0);
+  const Mesh3 m = mesh3_from_data(two.domain());
+  m.check();
+  int blocked = 0;
+  for (std::uint32_t t = 0; t < m.tetrahedron_capacity(); ++t) {
+    if (!m.in_domain(t) || m.ref(t) != 1) continue;
+    // From a region-1 tetrahedron towards a point deep in region 2.
+    const Mesh3::Location loc = m.locate({0.9, 0.0, 0.0}, t, true);
+    if (loc.blocked) {
+      ++blocked;
+      EXPECT_EQ(m.ref(loc.tetrahedron), 1);
+    }
+  }
+  EXPECT_GT(blocked, 0);
+}
+
+// A Kuhn (Freudenthal) subdivision of unit cubes at the given integer corners: 6 tetrahedra a
+// cube, conforming across cubes.
+MeshData3 cubes(const std::vector<std::array<int, 3>>& corners, int ref_of_second = 0) {
+  MeshData3 d;
+  std::map<std::array<int, 3>, std::uint32_t> id;
+  auto vertex = [&](std::array<int, 3> c) {
+    const auto [it, fresh] = id.emplace(c, static_cast<std::uint32_t>(d.vertices.size()));
+    if (fresh) {
+      d.vertices.push_back({double(c[0]), double(c[1]), double(c[2])});
+      d.vertex_refs.push_back(0);
+    }
+    return it->second;
+  };
+  std::array<int, 3> perm{0, 1, 2};
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    std::sort(perm.begin(), perm.end());
+    do {
+      std::array<int, 3> c = corners[k];
+      std::array<std::uint32_t, 4> t;
+      t[0] = vertex(c);
+      for (int s = 0; s < 3; ++s) {
+        ++c[perm[s]];
+        t[s + 1] = vertex(c);
+      }
+      if (orient3d(d.vertices[t[0]], d.vertices[t[1]], d.vertices[t[2]], d.vertices[t[3]]) == Sign::Negative)
+        std::swap(t[2], t[3]);
+      d.tetrahedra.push_back(t);
+      d.tetrahedron_refs.push_back(k == 1 ? ref_of_second : 0);
+    } while (std::next_permutation(perm.begin(), perm.end()));
+  }
+  return d;
+}
+
+TEST(Mesh3FromData, NonConvexMesh) {
+  // An L of three cubes: not convex, so ghosts close concave boundary facets.
+  const MeshData3 d = cubes({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  const Mesh3 m = mesh3_from_data(d);
+  m.check();
+  check_queries(m);
+  std::uint32_t domain_count = 0;
+  for (std::uint32_t t = 0; t < m.tetrahedron_capacity(); ++t) domain_count += m.in_domain(t);
+  EXPECT_EQ(domain_count, 18u);
+  // 3 cubes: 14 boundary squares = 28 triangles, all constrained with reference 0.
+  const MeshData3 out = m.domain();
+  EXPECT_EQ(out.tetrahedra.size(), 18u);
+  EXPECT_EQ(out.triangles.size(), 28u);
+  // Interior vertex none: all 16 vertices on the boundary, fixed.
+  for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v)
+    EXPECT_EQ(m.flags(v), Mesh3::kFixed | Mesh3::kOnBoundary);
+}
+
+TEST(Mesh3FromData, InterfacesBetweenReferencesAreConstrained) {
+  const MeshData3 d = cubes({{0, 0, 0}, {1, 0, 0}}, 5);
+  const Mesh3 m = mesh3_from_data(d);
+  m.check();
+  // 10 boundary squares + 1 interface square.
+  const MeshData3 out = m.domain();
+  EXPECT_EQ(out.triangles.size(), 22u);
+}
+
+TEST(Mesh3FromData, InteriorVerticesAreFree) {
+  std::vector<std::array<int, 3>> c;
+  for (int x = 0; x < 3; ++x)
+    for (int y = 0; y < 3; ++y)
+      for (int z = 0; z < 3; ++z) c.push_back({x, y, z});
+  const Mesh3 m = mesh3_from_data(cubes(c));
+  m.check();
+  check_queries(m, 5);
+  int free_vertices = 0;
+  for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) {
+    const Vec3& p = m.point(v);
+    const bool inner = p.x > 0 && p.x < 3 && p.y > 0 && p.y < 3 && p.z > 0 && p.z < 3;
+    EXPECT_EQ(m.flags(v) == 0, inner) << v;
+    free_vertices += m.flags(v) == 0;
+  }
+  EXPECT_EQ(free_vertices, 8);
+}
+
+TEST(Mesh3FromData, DomainRoundTrip) {
+  const Mesh3 two = delaunay_mesh(random_points(250, 7), 0.1);
+  const MeshData3 a = two.domain();
+  const Mesh3 m = mesh3_from_data(a);
+  m.check();
+  check_queries(m, 3);
+  const MeshData3 b = m.domain();
+  const Mesh3 m2 = mesh3_from_data(b);
+  EXPECT_EQ(m2.domain(), b);
+  // Hull facets keep their reference 7, the interface gets 0.
+  std::set<int> refs(b.triangle_refs.begin(), b.triangle_refs.end());
+  EXPECT_EQ(refs, (std::set<int>{0, 7}));
+  // Listed triangles keep their own reference and orientation need not match.
+  MeshData3 c = b;
+  for (auto& t : c.triangles) std::swap(t[0], t[1]);
+  EXPECT_EQ(mesh3_from_data(c).domain().triangles.size(), b.triangles.size());
+}
+
+template <typename F>
+std::string input_error(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(Mesh3FromData, Refusals) {
+  const MeshData3 good = cubes({{0, 0, 0}});
+  {
+    MeshData3 d = good;
+    std::swap(d.tetrahedra[1][0], d.tetrahedra[1][1]);
+    EXPECT_NE(input_error([&] { mesh3_from_data(d); }).find("tetrahedron 2 is not positive"), std::string::npos);
+  }
+  {
+    MeshData3 d = good;
+    d.tetrahedra[2][3] = 99;
+    EXPECT_NE(input_error([&] { mesh3_from_data(d); }).find("tetrahedron 3 uses vertex 100"), std::string::npos);
+  }
+  {
+    // A facet in three tetrahedra: a third apex beside a cube's facet, on the side of one of
+    // the two tetrahedra there.
+    MeshData3 d;
+    d.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}, {0.1, 0.1, 2}};
+    d.tetrahedra = {{0, 1, 2, 3}, {0, 2, 1, 4}, {0, 1, 2, 5}};
+    EXPECT_NE(input_error([&] { mesh3_from_data(d); }).find("shared by 3 tetrahedra"), std::string::npos);
+  }
+  {
+    MeshData3 d = good;
+    d.triangles = {{0, 1, 2}, {0, 1, 7}};  // vertex 7 is the cube's far corner
+    d.triangle_refs = {1, 1};
+    const std::string e = input_error([&] { mesh3_from_data(d); });
+    EXPECT_TRUE(e.find("triangle 1 ") != std::string::npos || e.find("triangle 2 ") != std::string::npos) << e;
+    EXPECT_NE(e.find("is not a facet"), std::string::npos) << e;
+  }
+  {
+    // Two tetrahedra touching at one vertex: the boundary pinches there.
+    MeshData3 d;
+    d.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+    d.tetrahedra = {{0, 1, 2, 3}, {0, 4, 6, 5}};
+    if (orient3d(d.vertices[0], d.vertices[4], d.vertices[6], d.vertices[5]) != Sign::Positive)
+      std::swap(d.tetrahedra[1][2], d.tetrahedra[1][3]);
+    EXPECT_NE(input_error([&] { mesh3_from_data(d); }).find("vertex 1"), std::string::npos);
+  }
+  {
+    MeshData3 d = good;
+    // Vertices 0 (0,0,0), 1 (1,0,0), 7 (0,0,1): 0-7 and 0-1 are cube edges, 1-7 crosses the
+    // face diagonal 0-(1,0,1).
+    d.edges = {{0, 7}, {0, 1}, {1, 7}};
+    d.edge_refs = {0, 0, 0};
+    EXPECT_NE(input_error([&] { mesh3_from_data(d); }).find("edge 3 (2, 8) is not an edge"), std::string::npos);
+    d.edges.pop_back();
+    d.edge_refs.pop_back();
+    const Mesh3 m = mesh3_from_data(d);
+    EXPECT_TRUE(m.is_constrained_edge(7, 0));
+  }
+}
+
+TEST(Mesh3, ConstructorRefusesAConstraintThatIsNoFacet) {
+  const std::vector<Vec3> pts = random_points(50, 8);
+  Delaunay3dResult r = delaunay3d(pts);
+  std::vector<int> refs(r.tetrahedralization.tetrahedron_count(), 1);
+  std::vector<MeshTriangle3> c;
+  // Find three vertices that are not a facet.
+  for (std::uint32_t a = 1; a < 50 && c.empty(); ++a) {
+    const Mesh3 m(r.tetrahedralization, refs, {});
+    if (m.find_facet(0, a, a + 1) == Mesh3::kNone) c.push_back({0, a, a + 1, 3});
+  }
+  ASSERT_FALSE(c.empty());
+  EXPECT_THROW(Mesh3(r.tetrahedralization, refs, c), InputError);
+}
+
+TEST(Mesh3, FreeListsAndCheckFindsBreakage) {
+  Mesh3 m = mesh3_from_data(cubes({{0, 0, 0}, {1, 0, 0}}));
+  m.check();
+  const std::uint32_t cap = m.tetrahedron_capacity();
+  // Remove a tetrahedron and re-add it: same slot, links restored by hand.
+  const auto v = m.tetrahedron(3);
+  std::array<std::uint32_t, 4> twins;
+  std::array<int, 4> frefs;
+  std::array<bool, 4> cons;
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    twins[i] = m.twin(Mesh3::facet(3, i));
+    frefs[i] = m.facet_ref(Mesh3::facet(3, i));
+    cons[i] = m.is_constrained(Mesh3::facet(3, i));
+  }
+  const int r = m.ref(3);
+  m.remove_tetrahedron(3);
+  EXPECT_THROW(m.check(), InternalError);
+  const std::uint32_t t = m.add_tetrahedron(v[0], v[1], v[2], v[3], r);
+  EXPECT_EQ(t, 3u);
+  EXPECT_EQ(m.tetrahedron_capacity(), cap);
+  EXPECT_THROW(m.check(), InternalError);  // not linked yet
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    m.link(Mesh3::facet(t, i), twins[i]);
+    m.set_facet(Mesh3::facet(t, i), cons[i], frefs[i]);
+  }
+  m.check();
+  // A vertex moved across a facet inverts a tetrahedron.
+  const Vec3 old = m.point(v[0]);
+  m.set_point(v[0], {5, 5, 5});
+  EXPECT_THROW(m.check(), InternalError);
+  m.set_point(v[0], old);
+  m.check();
+  // A constraint on one side only.
+  const std::uint32_t h = Mesh3::facet(0, 0);
+  const bool was = m.is_constrained(h);
+  const int was_ref = m.facet_ref(h);
+  m.set_facet(h, !was, 0);
+  EXPECT_THROW(m.check(), InternalError);
+  m.set_facet(h, was, was_ref);
+  m.check();
+  // A constrained edge that is no edge.
+  m.set_constrained_edge(0, 11, true);
+  if (m.find_edge(0, 11) == Mesh3::kNone) {
+    EXPECT_THROW(m.check(), InternalError);
+  }
+  m.set_constrained_edge(0, 11, false);
+  m.check();
+  // Vertex slots are reused.
+  const std::uint32_t extra = m.add_vertex({9, 9, 9}, {});
+  EXPECT_THROW(m.check(), InternalError);  // live but used by no tetrahedron
+  m.remove_vertex(extra);
+  m.check();
+  EXPECT_EQ(m.add_vertex({9, 9, 9}, {}), extra);
+}
+
+RC_GTEST_PROP(Mesh3Properties, QueriesAgreeWithBruteForce, ()) {
+  const auto n = *rc::gen::inRange<std::size_t>(5, 120);
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  const bool lattice = *rc::gen::arbitrary<bool>();
+  const std::vector<Vec3> pts = lattice ? lattice_points(n, seed) : random_points(n, seed);
+  Delaunay3dResult r = delaunay3d(pts);
+  RC_PRE(r.degenerate_message.empty());
+  const Mesh3 m = delaunay_mesh(pts, 0.0);
+  m.check();
+  check_queries(m);
+  RC_ASSERT(!::testing::Test::HasFailure());
+  const MeshData3 d = m.domain();
+  const Mesh3 m2 = mesh3_from_data(d);
+  m2.check();
+  check_queries(m2);
+  RC_ASSERT(!::testing::Test::HasFailure());
+  RC_ASSERT(m2.domain().tetrahedra == d.tetrahedra);
+}
+
+}  // namespace
+}  // namespace dtlab
