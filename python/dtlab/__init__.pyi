@@ -1,0 +1,59 @@
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from . import predicates as predicates
+
+class Error(Exception): ...
+class InputError(Error, ValueError):
+    items: list[int]
+class ParseError(Error, ValueError):
+    file: str
+    line: int
+class InternalError(Error, RuntimeError): ...
+
+class Mesh:
+    points: npt.NDArray[np.float64]
+    cells: npt.NDArray[np.uint32]
+    cell_refs: npt.NDArray[np.int32]
+    boundary_cells: npt.NDArray[np.uint32]
+    boundary_refs: npt.NDArray[np.int32]
+    point_data: dict[str, np.ndarray]
+    stats: dict[str, Any]
+    def __init__(self, points: npt.ArrayLike, cells: npt.ArrayLike, cell_refs: npt.ArrayLike | None = ...,
+                 boundary_cells: npt.ArrayLike | None = ..., boundary_refs: npt.ArrayLike | None = ...,
+                 stats: dict[str, Any] | None = ..., point_data: dict[str, np.ndarray] | None = ...) -> None: ...
+    @property
+    def dim(self) -> int: ...
+    @property
+    def cell_type(self) -> str: ...
+    def quality(self, metric: npt.ArrayLike | str | None = ...) -> dict[str, Any]: ...
+    def to_meshio(self, ref_name: str = ...) -> Any: ...
+    @classmethod
+    def from_meshio(cls, m: Any, ref_name: str | None = ...) -> Mesh: ...
+    def write(self, path: str, point_refs: npt.ArrayLike | None = ...) -> None: ...
+
+def variants() -> dict[str, list[tuple[str, str]]]: ...
+def delaunay(points: npt.ArrayLike, algo: str = ..., threads: int = ..., *, seed: int | None = ...,
+             verify: bool = ..., canonical: bool = ...) -> Mesh: ...
+def constrain(points: npt.ArrayLike, segments: npt.ArrayLike | None = ..., *, triangles: npt.ArrayLike | None = ...,
+              markers: npt.ArrayLike | None = ..., holes: npt.ArrayLike | None = ..., regions: npt.ArrayLike | None = ...,
+              method: str | None = ..., keep_exterior: bool = ..., random_swaps: bool = ...,
+              remove_cavities: bool = ..., verify: bool = ...) -> Mesh: ...
+def mesh(points: npt.ArrayLike, segments: npt.ArrayLike, *, markers: npt.ArrayLike | None = ...,
+         holes: npt.ArrayLike | None = ..., regions: npt.ArrayLike | None = ..., size: float | npt.ArrayLike | None = ...,
+         metric: npt.ArrayLike | None = ..., background: tuple[npt.ArrayLike, npt.ArrayLike] | None = ...,
+         method: str = ..., interpolation: str = ..., optimize: bool = ..., resample_boundary: bool = ...,
+         verify: bool = ...) -> Mesh: ...
+def optimize(mesh_or_points: Mesh | npt.ArrayLike, cells: npt.ArrayLike | None = ..., *,
+             cell_refs: npt.ArrayLike | None = ..., boundary_cells: npt.ArrayLike | None = ...,
+             boundary_refs: npt.ArrayLike | None = ..., size: float | npt.ArrayLike | None = ...,
+             metric: npt.ArrayLike | None = ..., max_rounds: int = ..., shape_only: bool = ...,
+             boundary_splits: bool = ..., valence: bool = ...) -> Mesh: ...
+def quality(mesh_or_points: Mesh | npt.ArrayLike, cells: npt.ArrayLike | None = ..., *,
+            metric: npt.ArrayLike | None = ...) -> dict[str, Any]: ...
+def element_quality(mesh_or_points: Mesh | npt.ArrayLike, cells: npt.ArrayLike | None = ...) -> npt.NDArray[np.float64]: ...
+def verify(mesh_or_points: Mesh | npt.ArrayLike, cells: npt.ArrayLike | None = ..., *,
+           duplicates: npt.ArrayLike | None = ...) -> dict[str, Any]: ...
+def read_medit(path: str) -> Mesh: ...
