@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   dtlab::cli::add_constrain(app);
   dtlab::cli::add_optimize(app);
   dtlab::cli::add_mesh(app);
+  dtlab::cli::add_convert(app);
   dtlab::cli::add_quality(app);
   dtlab::cli::add_selfcheck(app);
   try {

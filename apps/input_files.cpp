@@ -7,6 +7,9 @@
 #include "kernel/error.hpp"
 #include "mesh/io/medit.hpp"
 #include "mesh/io/medit3.hpp"
+#include "mesh/io/gmsh_format.hpp"
+#include "mesh/io/medit_binary.hpp"
+#include "mesh/io/planar_mesh.hpp"
 #include "mesh/io/tetgen_format.hpp"
 #include "mesh/io/point_file.hpp"
 #include "mesh/io/triangle_format.hpp"
@@ -22,6 +25,8 @@ std::string without_extension(const std::string& path) {
 
 int input_dimension(const std::string& path) {
   const std::string ext = extension_of(path);
+  if (ext == "meshb") return medit_binary_dimension(path);
+  if (ext == "msh") return is_planar(read_gmsh(path).mesh) ? 2 : 3;
   if (ext != "node" && ext != "mesh" && ext != "poly") return point_file_dimension(path);
   std::ifstream in(path);
   if (!in) throw InputError("cannot open '" + path + "'");
@@ -47,26 +52,32 @@ std::vector<Vec2> read_points2(const std::string& path) {
   const std::string ext = extension_of(path);
   if (ext == "node") return read_triangle_node(path).points;
   if (ext == "mesh") return read_medit2(path).vertices;
+  if (ext == "meshb" || ext == "msh") return read_mesh2(path).vertices;
   return read_point_file2(path);
 }
 
 MeshData2 read_mesh2(const std::string& path) {
   const std::string ext = extension_of(path);
   if (ext == "mesh") return read_medit2(path);
+  if (ext == "meshb") return read_meshb2(path);
+  if (ext == "msh") return planar_to_mesh2(read_gmsh(path).mesh, path);
   if (ext == "ele" || ext == "node") return read_triangle_mesh(without_extension(path));
-  throw InputError("cannot read a mesh from '" + path + "': supported are .mesh (Medit) and .ele (Triangle)");
+  throw InputError("cannot read a mesh from '" + path + "': supported are .mesh, .meshb (Medit), .msh (Gmsh) and .ele (Triangle)");
 }
 
 void write_mesh2(const std::string& path, const MeshData2& mesh) {
   const std::string ext = extension_of(path);
   if (ext == "mesh") return write_medit2(path, mesh);
+  if (ext == "meshb") return write_meshb2(path, mesh);
+  if (ext == "msh") return write_gmsh(path, planar_to_mesh3(mesh), {});
   if (ext == "ele" || ext == "node") return write_triangle_mesh(without_extension(path), mesh);
-  throw InputError("cannot write '" + path + "': supported outputs are .mesh (Medit) and .ele (Triangle .node + .ele)");
+  throw InputError("cannot write '" + path + "': supported outputs are .mesh, .meshb (Medit), .msh (Gmsh) and .ele (Triangle .node + .ele)");
 }
 
 std::vector<Vec3> read_points3(const std::string& path) {
   const std::string ext = extension_of(path);
   if (ext == "mesh") return read_medit3(path).vertices;
+  if (ext == "meshb" || ext == "msh") return read_mesh3(path).vertices;
   if (ext == "node") return read_tetgen_node(path).points;
   return read_point_file3(path);
 }
@@ -74,16 +85,20 @@ std::vector<Vec3> read_points3(const std::string& path) {
 MeshData3 read_mesh3(const std::string& path) {
   const std::string ext = extension_of(path);
   if (ext == "mesh") return read_medit3(path);
+  if (ext == "meshb") return read_meshb3(path);
+  if (ext == "msh") return read_gmsh(path).mesh;
   if (ext == "ele" || ext == "node") return read_tetgen_mesh(without_extension(path));
-  throw InputError("cannot read a 3D mesh from '" + path + "': supported are .mesh (Medit) and .ele (TetGen)");
+  throw InputError("cannot read a 3D mesh from '" + path + "': supported are .mesh, .meshb (Medit), .msh (Gmsh) and .ele (TetGen)");
 }
 
 void write_mesh3(const std::string& path, const MeshData3& mesh) {
   const std::string ext = extension_of(path);
   if (ext == "mesh") return write_medit3(path, mesh);
+  if (ext == "meshb") return write_meshb3(path, mesh);
+  if (ext == "msh") return write_gmsh(path, mesh, {});
   if (ext == "ele" || ext == "node") return write_tetgen_mesh(without_extension(path), mesh);
   throw InputError("cannot write '" + path +
-                   "': supported 3D outputs are .mesh (Medit) and .ele (TetGen .node + .ele)");
+                   "': supported 3D outputs are .mesh, .meshb (Medit), .msh (Gmsh) and .ele (TetGen .node + .ele)");
 }
 
 }  // namespace dtlab::cli

@@ -10,6 +10,9 @@
 
 namespace dtlab::cli {
 
+// Medit binary .meshb and Gmsh .msh (a 2D mesh: no tetrahedra, every z = 0) are read and written
+// beside the formats below, for 2D and 3D alike.
+//
 // 2 or 3: the dimension of a point or mesh input: a .mesh file's Dimension keyword, a .node or
 // .poly file's header (Triangle's 2 or TetGen's 3), the numbers per line of a plain point file.
 int input_dimension(const std::string& path);

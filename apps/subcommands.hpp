@@ -18,5 +18,6 @@ void add_constrain(CLI::App& app);
 void add_optimize(CLI::App& app);
 void add_quality(CLI::App& app);
 void add_mesh(CLI::App& app);
+void add_convert(CLI::App& app);
 
 }  // namespace dtlab::cli

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "kernel/error.hpp"
+#include "mesh/io/binary_input.hpp"
 #include "mesh/io/text_input.hpp"
 #include "mesh/io/text_output.hpp"
 
@@ -167,13 +168,13 @@ std::string keyword_name(std::int64_t code) {
 
 class BinarySolReader {
  public:
-  BinarySolReader(std::string_view bytes, const std::string& name) : bytes_(bytes), file_(name) {}
+  BinarySolReader(std::string_view bytes, const std::string& name) : bytes_(bytes), in_(bytes, name) {}
 
   SolData read() {
     need(0, 8, "the header (endianness word and version)");
     const std::uint32_t code = load(0, 4);
     if (code != 1) {
-      swap_ = true;
+      in_.set_swapped(true);
       if (load(0, 4) != 1) fail(0, "first word " + std::to_string(code) + " is not 1: not a binary Medit file");
     }
     const std::int64_t version = signed32(4);
@@ -252,8 +253,7 @@ class BinarySolReader {
     }
     sol_.values.resize(static_cast<std::size_t>(count) * per);
     for (std::size_t i = 0; i < sol_.values.size(); ++i) {
-      const double v = real_bytes_ == 4 ? static_cast<double>(std::bit_cast<float>(static_cast<std::uint32_t>(load(at, 4))))
-                                        : std::bit_cast<double>(load(at, 8));
+      const double v = in_.real(at, real_bytes_);
       if (!std::isfinite(v)) {
         fail(at, "vertex " + std::to_string(i / per + 1) + " " + value_name(sol_.kind, i % per) +
                      " is not finite");
@@ -264,31 +264,13 @@ class BinarySolReader {
     return at;
   }
 
-  // The n-byte (4 or 8) word at `at`, in the file's byte order.
-  std::uint64_t load(std::size_t at, std::size_t n) const {
-    std::uint64_t v = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      const auto byte = static_cast<std::uint64_t>(static_cast<unsigned char>(bytes_[at + k]));
-      v |= byte << (8 * (swap_ ? n - 1 - k : k));
-    }
-    return v;
-  }
-
-  std::int64_t signed32(std::size_t at) const {
-    return static_cast<std::int32_t>(static_cast<std::uint32_t>(load(at, 4)));
-  }
-
-  void need(std::size_t at, std::size_t n, const std::string& what) const {
-    if (bytes_.size() < at || bytes_.size() - at < n) fail(at, "file ends in " + what + " (truncated?)");
-  }
-
-  [[noreturn]] void fail(std::size_t at, const std::string& reason) const {
-    throw ParseError(file_, at, "at byte " + std::to_string(at) + ": " + reason);
-  }
+  std::uint64_t load(std::size_t at, std::size_t n) const { return in_.load(at, n); }
+  std::int64_t signed32(std::size_t at) const { return in_.signed32(at); }
+  void need(std::size_t at, std::size_t n, const std::string& what) const { in_.need(at, n, what); }
+  [[noreturn]] void fail(std::size_t at, const std::string& reason) const { in_.fail(at, reason); }
 
   std::string_view bytes_;
-  const std::string& file_;
-  bool swap_ = false;
+  io::BinaryInput in_;
   std::size_t position_bytes_ = 4;
   std::size_t count_bytes_ = 4;
   std::size_t real_bytes_ = 8;
@@ -328,9 +310,7 @@ void write_ascii(std::ostream& out, const SolData& sol) {
   out << text;
 }
 
-void store(std::string& out, std::uint64_t v, std::size_t n) {
-  for (std::size_t k = 0; k < n; ++k) out += static_cast<char>((v >> (8 * k)) & 0xff);
-}
+void store(std::string& out, std::uint64_t v, std::size_t n) { io::store_le(out, v, n); }
 
 void write_binary(std::ostream& out, const SolData& sol, int version) {
   if (version < 2 || version > 4) {
@@ -471,6 +451,11 @@ SolData sol_from_metrics(std::span<const Metric2> metrics) { return sol_from<Met
 SolData sol_from_metrics(std::span<const Metric3> metrics) { return sol_from<Metric3, 3>(metrics); }
 
 void check_sol_matches(const SolData& sol, std::size_t vertex_count, const std::string& file) {
+  // vertex_count() rounds down: a partial vertex would otherwise pass for the one before it.
+  if (sol.values.size() % sol.values_per_vertex() != 0) {
+    throw InputError(file + ": " + std::to_string(sol.values.size()) + " values are not a whole number of vertices (" +
+                     std::to_string(sol.values_per_vertex()) + " per vertex)");
+  }
   if (sol.vertex_count() != vertex_count) {
     throw InputError(file + " has a solution at " + std::to_string(sol.vertex_count()) + " vertices, but the mesh has " +
                      std::to_string(vertex_count));

@@ -69,40 +69,44 @@ void LineTokenizer::fail_at(std::uint64_t line, const std::string& reason) const
   throw ParseError(file_, line, reason);
 }
 
-double LineTokenizer::real(std::size_t k, std::string_view what) const {
-  if (k >= tokens_.size()) fail("missing " + std::string(what));
-  std::string_view t = tokens_[k];
+std::string parse_real(std::string_view t, double& v) {
   // from_chars refuses a leading '+', which C and every mesh writer accept.
   std::string_view digits = t;
   if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+') {
     digits.remove_prefix(1);
   }
-  if (names_non_finite(digits)) fail(std::string(what) + " is not finite: " + quote(t));
-  double v = 0.0;
+  if (names_non_finite(digits)) return " is not finite: " + quote(t);
+  v = 0.0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-  if (ec == std::errc::result_out_of_range) {
-    fail(std::string(what) + " " + quote(t) + " is out of the range of a double");
+  if (ec == std::errc::result_out_of_range) return " " + quote(t) + " is out of the range of a double";
+  if (ec != std::errc() || end != digits.data() + digits.size()) return " is not a number: " + quote(t);
+  if (!std::isfinite(v)) return " is not finite: " + quote(t);
+  return {};
+}
+
+std::string parse_integer(std::string_view t, std::int64_t& v) {
+  std::string_view digits = t;
+  if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+') {
+    digits.remove_prefix(1);
   }
-  if (ec != std::errc() || end != digits.data() + digits.size()) {
-    fail(std::string(what) + " is not a number: " + quote(t));
-  }
-  if (!std::isfinite(v)) fail(std::string(what) + " is not finite: " + quote(t));
+  v = 0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (ec == std::errc::result_out_of_range) return " " + quote(t) + " is too large";
+  if (ec != std::errc() || end != digits.data() + digits.size()) return " is not an integer: " + quote(t);
+  return {};
+}
+
+double LineTokenizer::real(std::size_t k, std::string_view what) const {
+  if (k >= tokens_.size()) fail("missing " + std::string(what));
+  double v = 0.0;
+  if (const std::string problem = parse_real(tokens_[k], v); !problem.empty()) fail(std::string(what) + problem);
   return v;
 }
 
 std::int64_t LineTokenizer::integer(std::size_t k, std::string_view what) const {
   if (k >= tokens_.size()) fail("missing " + std::string(what));
-  std::string_view t = tokens_[k];
-  std::string_view digits = t;
-  if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+') {
-    digits.remove_prefix(1);
-  }
   std::int64_t v = 0;
-  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-  if (ec == std::errc::result_out_of_range) fail(std::string(what) + " " + quote(t) + " is too large");
-  if (ec != std::errc() || end != digits.data() + digits.size()) {
-    fail(std::string(what) + " is not an integer: " + quote(t));
-  }
+  if (const std::string problem = parse_integer(tokens_[k], v); !problem.empty()) fail(std::string(what) + problem);
   return v;
 }
 

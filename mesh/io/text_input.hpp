@@ -52,6 +52,12 @@ class LineTokenizer {
 // A token quoted for an error message: non-printable bytes escaped, long tokens shortened.
 std::string quote(std::string_view token);
 
+// The number syntax of LineTokenizer::real and integer, for readers with their own tokens: ""
+// when `token` is a number in full, else the problem, to follow the field's name in a message
+// (" is not a number: 'x'", " is not finite: 'nan'", " '1e999' is out of the range of a double").
+std::string parse_real(std::string_view token, double& v);
+std::string parse_integer(std::string_view token, std::int64_t& v);
+
 // Checks a coordinate read at the tokenizer's current line against coordinate_range.hpp.
 void check_coordinate(const LineTokenizer& in, double v, std::string_view what);
 
