@@ -1,0 +1,162 @@
+// Shared pieces of the 3D optimization operators (local.hpp): quality and length in the vertex
+// metrics, the locks that keep operators off the boundary and the exterior, and the replacement
+// of a set of tetrahedra ("simulation, then effective application" of book §8.6.1: callers
+// decide on coordinates and exact orientation, this routine only rewires).
+#include "algorithms/optimize3d/local.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "kernel/error.hpp"
+#include "kernel/metric.hpp"
+#include "kernel/predicates.hpp"
+#include "kernel/quality.hpp"
+
+namespace dtlab::optimize3d_detail {
+
+bool positive(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) noexcept {
+  return orient3d(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d)) == Sign::Positive;
+}
+
+double quality(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) noexcept {
+  if (!positive(mesh, a, b, c, d)) return std::numeric_limits<double>::infinity();
+  return shape_quality(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d), mesh.metric(a), mesh.metric(b),
+                       mesh.metric(c), mesh.metric(d));
+}
+
+double tetrahedron_quality(const Mesh3& mesh, std::uint32_t t) noexcept {
+  const auto v = mesh.tetrahedron(t);
+  return shape_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), mesh.metric(v[0]),
+                       mesh.metric(v[1]), mesh.metric(v[2]), mesh.metric(v[3]));
+}
+
+double edge_length(const Mesh3& mesh, std::uint32_t u, std::uint32_t v) noexcept {
+  return dtlab::edge_length(mesh.point(u), mesh.metric(u), mesh.point(v), mesh.metric(v));
+}
+
+bool is_locked_facet(const Mesh3& mesh, std::uint32_t h) noexcept {
+  if (mesh.is_constrained(h)) return true;
+  const std::uint32_t t = Mesh3::tetrahedron_of(h), u = Mesh3::tetrahedron_of(mesh.twin(h));
+  return !mesh.in_domain(t) || !mesh.in_domain(u) || mesh.ref(t) != mesh.ref(u);
+}
+
+bool is_free_edge(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& shell,
+                  std::vector<std::uint32_t>& ring) {
+  if (a == Mesh3::kInfinite || b == Mesh3::kInfinite || mesh.is_constrained_edge(a, b)) return false;
+  if (!mesh.shell(a, b, shell, &ring)) return false;
+  const int r = mesh.ref(shell.front());
+  for (std::size_t k = 0; k < shell.size(); ++k) {
+    const std::uint32_t t = shell[k];
+    if (!mesh.in_domain(t) || mesh.ref(t) != r) return false;
+    // The facet (a, b, ring[k+1]) between shell[k] and shell[k+1] lies opposite ring[k] in t.
+    for (std::uint32_t i = 0; i < 4; ++i)
+      if (mesh.vertex(t, i) == ring[k] && mesh.is_constrained(Mesh3::facet(t, i))) return false;
+  }
+  return true;
+}
+
+bool is_free_vertex(const Mesh3& mesh, std::uint32_t v, std::vector<std::uint32_t>& ball) {
+  if (v >= mesh.vertex_capacity() || mesh.is_dead_vertex(v)) return false;
+  if ((mesh.flags(v) & (Mesh3::kFixed | Mesh3::kOnBoundary)) != 0) return false;
+  mesh.ball(v, ball);
+  const int r = mesh.ref(ball.front());
+  for (const std::uint32_t t : ball) {
+    if (!mesh.in_domain(t) || mesh.ref(t) != r) return false;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t w = mesh.vertex(t, i);
+      if (w == v) continue;
+      if (mesh.is_constrained(Mesh3::facet(t, i)) || mesh.is_constrained_edge(v, w)) return false;
+    }
+  }
+  return true;
+}
+
+double worst_quality(const Mesh3& mesh, std::span<const std::uint32_t> tetrahedra) noexcept {
+  double worst = 0.0;
+  for (const std::uint32_t t : tetrahedra) worst = std::max(worst, tetrahedron_quality(mesh, t));
+  return worst;
+}
+
+double worst_quality(const Mesh3& mesh, std::span<const NewTetrahedron> tetrahedra) noexcept {
+  double worst = 0.0;
+  for (const NewTetrahedron& n : tetrahedra) worst = std::max(worst, quality(mesh, n.v[0], n.v[1], n.v[2], n.v[3]));
+  return worst;
+}
+
+namespace {
+
+std::array<std::uint32_t, 3> sorted(std::array<std::uint32_t, 3> v) noexcept {
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+}  // namespace
+
+void replace_tetrahedra(Mesh3& mesh, std::span<const std::uint32_t> old_tetrahedra,
+                        std::span<const NewTetrahedron> new_tetrahedra, std::vector<std::uint32_t>& slots) {
+  struct Outer {
+    std::array<std::uint32_t, 3> key;
+    std::uint32_t twin;
+    bool constrained;
+    int ref;
+    bool used;
+  };
+  std::vector<Outer> outer;
+  auto is_old = [&](std::uint32_t t) {
+    return std::find(old_tetrahedra.begin(), old_tetrahedra.end(), t) != old_tetrahedra.end();
+  };
+  for (const std::uint32_t t : old_tetrahedra) {
+    DTLAB_ASSERT(mesh.is_alive(t));
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t h = Mesh3::facet(t, i);
+      const std::uint32_t g = mesh.twin(h);
+      if (is_old(Mesh3::tetrahedron_of(g))) continue;
+      outer.push_back({sorted(mesh.facet_vertices(h)), g, mesh.is_constrained(h), mesh.facet_ref(h), false});
+    }
+  }
+  for (const std::uint32_t t : old_tetrahedra) mesh.remove_tetrahedron(t);
+  slots.clear();
+  for (const NewTetrahedron& n : new_tetrahedra) slots.push_back(mesh.add_tetrahedron(n.v[0], n.v[1], n.v[2], n.v[3], n.ref));
+  // The sets are a few dozen tetrahedra: quadratic matching is fine.
+  for (std::size_t k = 0; k < slots.size(); ++k) {
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t h = Mesh3::facet(slots[k], i);
+      if (mesh.twin(h) != Mesh3::kNone) continue;
+      const auto key = sorted(mesh.facet_vertices(h));
+      bool linked = false;
+      for (Outer& o : outer) {
+        if (o.used || o.key != key) continue;
+        mesh.link(h, o.twin);
+        mesh.set_facet(h, o.constrained, o.ref);
+        o.used = true;
+        linked = true;
+        break;
+      }
+      for (std::size_t m = k + 1; !linked && m < slots.size(); ++m) {
+        for (std::uint32_t j = 0; j < 4 && !linked; ++j) {
+          const std::uint32_t g = Mesh3::facet(slots[m], j);
+          if (mesh.twin(g) != Mesh3::kNone || sorted(mesh.facet_vertices(g)) != key) continue;
+          mesh.link(h, g);
+          mesh.set_facet_both(h, false);
+          linked = true;
+        }
+      }
+      if (!linked) {
+        throw InternalError("optimize3d: new facet (" + std::to_string(key[0]) + ", " + std::to_string(key[1]) + ", " +
+                            std::to_string(key[2]) + ") matches neither the outer boundary nor another new tetrahedron");
+      }
+    }
+  }
+  for (const Outer& o : outer) {
+    if (!o.used) {
+      throw InternalError("optimize3d: outer facet (" + std::to_string(o.key[0]) + ", " + std::to_string(o.key[1]) + ", " +
+                          std::to_string(o.key[2]) + ") is left without a tetrahedron");
+    }
+  }
+  // vertex_tetrahedron of the boundary's vertices: add_tetrahedron set it for every vertex of a
+  // new tetrahedron, and every outer facet's vertices are in one.
+}
+
+}  // namespace dtlab::optimize3d_detail

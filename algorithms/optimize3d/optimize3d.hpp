@@ -1,0 +1,71 @@
+// 3D mesh optimization (book §8): the strategy of §8.6 over the local operators of
+// operators.hpp, on the shared mesh (mesh/mesh3.hpp), in the metric of its vertices.
+//
+//   Optimize3dStats s = optimize3d(mesh, {}, [&](const Vec3& p) { return control.metric_at(p); });
+//
+// Each round: the tetrahedra are classified by Q_K and the bad ones (Q_K > bad_quality) treated
+// worst first with the operators that fit their pathology (face swaps, shell transformations of
+// their edges, relocation of their free vertices, collapse of their shortest edge: a sliver with
+// four vertices near one plane is undone by a swap or a move, a needle or a cap by the collapse);
+// then the whole mesh: collapses of short edges and splits of long ones (toward unit edges in the
+// metric), the swap pass, relocation sweeps. Rounds repeat while the worst or the mean Q_K
+// improves by `round_improvement` (relative) or sizes still change, at most max_rounds.
+// Deterministic: the same mesh, options and field give the same result, bit for bit.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "algorithms/optimize3d/operators.hpp"
+#include "mesh/mesh3.hpp"
+
+namespace dtlab {
+
+struct Optimize3dOptions {
+  std::uint32_t max_rounds = 6;
+  double round_improvement = 1e-3;
+  // Tetrahedra worse than this are treated one by one, worst first, at the start of each round.
+  double bad_quality = 3.0;
+  bool swaps = true;
+  // The swap pass starts from the tetrahedra worse than this (the others are reached as
+  // neighbours of changed ones): a pass over all of them costs much and changes little.
+  double swap_threshold = 1.5;
+  bool relocation = true;
+  std::uint32_t relocation_sweeps = 2;  // per round
+  bool collapses = true;
+  bool splits = true;
+  double margin = kImprovementMargin3;
+  Relocate3Options relocate{};
+  Collapse3Options collapse{};
+  Split3Options split{};
+};
+
+struct Optimize3dStats {
+  std::uint64_t face_swaps = 0;
+  std::uint64_t shell_transformations = 0;  // n -> 2n - 4, 3 -> 2 and 4 -> 4 included
+  std::uint64_t relocations = 0;
+  std::uint64_t collapses = 0;
+  std::uint64_t splits = 0;
+  std::uint32_t rounds = 0;
+  double worst_before = 0.0, mean_before = 0.0;
+  double worst_after = 0.0, mean_after = 0.0;
+  std::uint64_t tetrahedra_before = 0, tetrahedra_after = 0;  // in the domain
+  std::uint64_t vertices_before = 0, vertices_after = 0;      // live
+  // "converged", "max_rounds", "swap_limit" or "vertex_limit".
+  std::string stopped_by;
+  double seconds = 0.0;
+};
+
+struct QualitySummary3 {
+  double worst = 0.0;
+  double mean = 0.0;  // over the finite values
+  std::uint64_t tetrahedra = 0;
+};
+QualitySummary3 summarize_quality(const Mesh3& mesh);
+
+// Optimizes `mesh` in place; `field` is the control space (empty: vertices keep their metrics,
+// new vertices interpolate them). The mesh passes Mesh3::check() afterwards; no constrained facet
+// or edge, kFixed or kOnBoundary vertex or reference changes.
+Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options = {}, const MetricField3& field = {});
+
+}  // namespace dtlab

@@ -1,0 +1,124 @@
+// Vertex relocation of book §8.4 in 3D: the optimal point P* of the ball of P ("optimal shape
+// relocation", (8.17)) is the mean of the ideal points I_j of the ball's boundary facets, each
+// I_j the apex of the regular tetrahedron on the facet in the facet's metric, weighted by the
+// current Q_Kj (a_j = Q_Kj: the worse tetrahedra pull harder). The sub-relaxation (8.13)
+// P' = (1 - w) P + w P* tries w = 1, 1/2, ... and keeps the first P' whose ball is valid (exact
+// orient3d) and better (worst Q_K, in the metric at P').
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include "algorithms/optimize3d/local.hpp"
+#include "algorithms/optimize3d/operators.hpp"
+#include "kernel/predicates.hpp"
+#include "kernel/quality.hpp"
+
+namespace dtlab {
+
+using namespace optimize3d_detail;
+
+namespace {
+
+// A weight beyond this (a flat tetrahedron has Q_K = +inf) would swamp the mean.
+constexpr double kMaxWeight = 1e6;
+constexpr double kRegularHeight = 0.81649658092772603273;  // sqrt(2/3): height / edge
+
+// The facet opposite v in tetrahedron t, in kFacetVertex order: (f0, f1, f2, v) is positive.
+std::array<std::uint32_t, 3> opposite_facet(const Mesh3& mesh, std::uint32_t t, std::uint32_t v) {
+  for (std::uint32_t i = 0; i < 4; ++i)
+    if (mesh.vertex(t, i) == v) return mesh.facet_vertices(Mesh3::facet(t, i));
+  return {Mesh3::kNone, Mesh3::kNone, Mesh3::kNone};
+}
+
+// The apex, on the positive side of (a, b, c), of the regular tetrahedron on the facet in m (its
+// edge the mean of the facet's three in m): in the space where m is the identity.
+Vec3 ideal_apex(const Vec3& a, const Vec3& b, const Vec3& c, const Metric3& m) {
+  const Metric3 root = power(m, 0.5);
+  const Metric3 inverse_root = power(m, -0.5);
+  const Vec3 x = transform(root, a), y = transform(root, b), z = transform(root, c);
+  const Vec3 n = cross(y - x, z - x);
+  const double area2 = norm(n);
+  const double edge = (norm(y - x) + norm(z - y) + norm(x - z)) / 3.0;
+  const Vec3 centre = (1.0 / 3.0) * (x + y + z);
+  if (!(area2 > 0.0)) return transform(inverse_root, centre);
+  return transform(inverse_root, centre + (kRegularHeight * edge / area2) * n);
+}
+
+Metric3 mean_metric(const Metric3& a, const Metric3& b, const Metric3& c) {
+  Metric3 m;
+  for (int i = 0; i < 6; ++i) m.m[i] = (a.m[i] + b.m[i] + c.m[i]) / 3.0;
+  return m;
+}
+
+}  // namespace
+
+Vec3 optimal_point(const Mesh3& mesh, std::uint32_t v, std::span<const std::uint32_t> ball) {
+  Vec3 sum{0.0, 0.0, 0.0};
+  double weights = 0.0;
+  for (const std::uint32_t t : ball) {
+    const auto f = opposite_facet(mesh, t, v);
+    const double w = std::min(tetrahedron_quality(mesh, t), kMaxWeight);
+    const Metric3 m = mean_metric(mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]));
+    sum = sum + w * ideal_apex(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), m);
+    weights += w;
+  }
+  if (!(weights > 0.0)) return mesh.point(v);
+  return (1.0 / weights) * sum;
+}
+
+bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options) {
+  std::vector<std::uint32_t> ball;
+  if (!is_free_vertex(mesh, v, ball)) return false;
+  const Vec3 p = mesh.point(v);
+  const double before = worst_quality(mesh, ball);
+  const Vec3 target = optimal_point(mesh, v, ball);
+  if (!std::isfinite(target.x) || !std::isfinite(target.y) || !std::isfinite(target.z)) return false;
+  std::vector<std::array<std::uint32_t, 3>> facets;
+  facets.reserve(ball.size());
+  for (const std::uint32_t t : ball) facets.push_back(opposite_facet(mesh, t, v));
+  double w = 1.0;
+  for (std::uint32_t k = 0; k < options.tries; ++k, w *= 0.5) {
+    const Vec3 moved = (1.0 - w) * p + w * target;
+    if (moved == p) break;
+    bool valid = true;
+    for (const auto& f : facets) {
+      if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved) != Sign::Positive) {
+        valid = false;
+        break;
+      }
+    }
+    if (!valid) continue;
+    const Metric3 metric = field ? field(moved) : mesh.metric(v);
+    double after = 0.0;
+    for (const auto& f : facets) {
+      after = std::max(after, shape_quality(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved,
+                                            mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]), metric));
+      if (!(after < before * (1.0 - options.margin))) break;
+    }
+    if (after < before * (1.0 - options.margin)) {
+      mesh.set_point(v, moved);
+      mesh.set_metric(v, metric);
+      return true;
+    }
+  }
+  return false;
+}
+
+std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relocate3Options& options) {
+  // Worst ball first (ties by vertex id): the classification of §8.6.
+  std::vector<std::pair<double, std::uint32_t>> order;
+  std::vector<std::uint32_t> ball;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
+    if (!is_free_vertex(mesh, v, ball)) continue;
+    order.emplace_back(worst_quality(mesh, ball), v);
+  }
+  std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) {
+    return x.first > y.first || (x.first == y.first && x.second < y.second);
+  });
+  std::uint64_t moved = 0;
+  for (const auto& entry : order) moved += try_relocate3(mesh, entry.second, field, options) ? 1 : 0;
+  return moved;
+}
+
+}  // namespace dtlab

@@ -1,0 +1,162 @@
+// The optimization strategy of book §8.6 in 3D: classify the tetrahedra by Q_K, treat the bad
+// ones worst first with the operators their pathology calls for (slivers, caps, needles, wedges:
+// swaps first, then moving their vertices, then collapsing their shortest edge), then apply each
+// operator to the whole mesh (sizes by collapse and split toward a unit mesh, the swap pass,
+// relocation sweeps), and repeat while a round still improves the worst or the mean quality.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <utility>
+
+#include "algorithms/optimize3d/local.hpp"
+#include "algorithms/optimize3d/optimize3d.hpp"
+
+namespace dtlab {
+
+using optimize3d_detail::edge_length;
+using optimize3d_detail::tetrahedron_quality;
+
+QualitySummary3 summarize_quality(const Mesh3& mesh) {
+  QualitySummary3 s;
+  double sum = 0.0;
+  std::uint64_t finite = 0;
+  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+    if (!mesh.in_domain(t)) continue;
+    const double q = tetrahedron_quality(mesh, t);
+    ++s.tetrahedra;
+    s.worst = std::max(s.worst, q);
+    if (std::isfinite(q)) {
+      sum += q;
+      ++finite;
+    }
+  }
+  s.mean = finite > 0 ? sum / static_cast<double>(finite) : 0.0;
+  return s;
+}
+
+namespace {
+
+constexpr std::array<std::array<std::uint32_t, 2>, 6> kEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
+
+void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field,
+                          Optimize3dStats& stats) {
+  struct Bad {
+    double quality;
+    std::uint32_t t;
+    std::array<std::uint32_t, 4> v;
+  };
+  std::vector<Bad> bad;
+  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+    if (!mesh.in_domain(t)) continue;
+    const double q = tetrahedron_quality(mesh, t);
+    if (q > options.bad_quality) bad.push_back({q, t, mesh.tetrahedron(t)});
+  }
+  std::sort(bad.begin(), bad.end(),
+            [](const Bad& x, const Bad& y) { return x.quality > y.quality || (x.quality == y.quality && x.t < y.t); });
+  for (const Bad& b : bad) {
+    if (!mesh.in_domain(b.t) || mesh.tetrahedron(b.t) != b.v) continue;  // changed by an earlier one
+    bool done = false;
+    if (options.swaps) {
+      for (std::uint32_t i = 0; i < 4 && !done; ++i)
+        if (try_face_swap(mesh, Mesh3::facet(b.t, i), options.margin)) {
+          ++stats.face_swaps;
+          done = true;
+        }
+      for (std::uint32_t k = 0; k < 6 && !done; ++k)
+        if (try_shell_transformation(mesh, b.v[kEdges[k][0]], b.v[kEdges[k][1]], options.margin)) {
+          ++stats.shell_transformations;
+          done = true;
+        }
+    }
+    if (done) continue;
+    if (options.relocation) {
+      for (const std::uint32_t v : b.v)
+        if (!mesh.is_dead_vertex(v) && try_relocate3(mesh, v, field, options.relocate)) {
+          ++stats.relocations;
+          done = true;
+        }
+    }
+    if (done || !options.collapses) continue;
+    // The shortest edge first.
+    std::array<std::pair<double, std::uint32_t>, 6> edges;
+    for (std::uint32_t k = 0; k < 6; ++k) edges[k] = {edge_length(mesh, b.v[kEdges[k][0]], b.v[kEdges[k][1]]), k};
+    std::sort(edges.begin(), edges.end());
+    for (const auto& [l, k] : edges) {
+      if (try_collapse3(mesh, b.v[kEdges[k][0]], b.v[kEdges[k][1]], options.collapse, Collapse3Criterion::Improve)) {
+        ++stats.collapses;
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field) {
+  const auto start = std::chrono::steady_clock::now();
+  Optimize3dStats stats;
+  const QualitySummary3 before = summarize_quality(mesh);
+  stats.worst_before = before.worst;
+  stats.mean_before = before.mean;
+  stats.tetrahedra_before = before.tetrahedra;
+  stats.vertices_before = mesh.live_vertex_count();
+  QualitySummary3 last = before;
+  stats.stopped_by = "max_rounds";
+  for (std::uint32_t round = 0; round < options.max_rounds; ++round) {
+    ++stats.rounds;
+    std::uint64_t size_changes = 0;
+    bool limit = false;
+    treat_bad_tetrahedra(mesh, options, field, stats);
+    if (options.collapses) {
+      const std::uint64_t c = collapse_pass3(mesh, options.collapse);
+      stats.collapses += c;
+      size_changes += c;
+    }
+    if (options.splits) {
+      Split3Options split = options.split;
+      split.margin = options.margin;
+      const SplitPass3Result r = split_pass3(mesh, field, split);
+      stats.splits += r.splits;
+      stats.face_swaps += r.swaps;  // counted together: split_pass3 does not tell them apart
+      size_changes += r.splits;
+      if (r.limit_reached) {
+        stats.stopped_by = "vertex_limit";
+        limit = true;
+      }
+    }
+    if (options.swaps) {
+      const SwapPass3Result r = swap_pass3(mesh, options.margin, {}, options.swap_threshold);
+      stats.face_swaps += r.face_swaps;
+      stats.shell_transformations += r.shell_transformations;
+      if (r.limit_reached) {
+        stats.stopped_by = "swap_limit";
+        limit = true;
+      }
+    }
+    if (options.relocation) {
+      for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
+        const std::uint64_t moved = relocate_sweep3(mesh, field, options.relocate);
+        stats.relocations += moved;
+        if (moved == 0) break;
+      }
+    }
+    const QualitySummary3 now = summarize_quality(mesh);
+    const double keep = 1.0 - options.round_improvement;
+    const bool improved = now.worst < last.worst * keep || now.mean < last.mean * keep;
+    last = now;
+    if (limit) break;
+    if (!improved && size_changes == 0) {
+      stats.stopped_by = "converged";
+      break;
+    }
+  }
+  stats.worst_after = last.worst;
+  stats.mean_after = last.mean;
+  stats.tetrahedra_after = last.tetrahedra;
+  stats.vertices_after = mesh.live_vertex_count();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+}  // namespace dtlab
