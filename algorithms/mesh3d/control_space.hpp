@@ -1,0 +1,71 @@
+// The control space of book §7.4 (and §5): a background tetrahedral mesh with a metric at each of
+// its vertices, interpolated (on the sizes, kernel/metric.hpp) at any point of the domain. One
+// code path for the book's three cases: classical (sizes from the surface discretisation,
+// interpolated P1 on the empty mesh), isotropic (a size map h^-2 I) and anisotropic (a metric
+// map), the last two read from Medit .sol on a background mesh.
+//
+// The background is held as flat arrays (4 vertices and 4 neighbours per tetrahedron, kNone on
+// the background's boundary), built from any list of positive tetrahedra: a background from a
+// file need not be convex nor closed by ghosts.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "kernel/metric.hpp"
+#include "kernel/vec.hpp"
+#include "mesh/io/mesh_data3.hpp"
+
+namespace dtlab {
+
+class Mesh3;
+
+class ControlSpace3 {
+ public:
+  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+  // Start a walk anywhere.
+  static constexpr std::uint32_t kNoHint = 0xFFFFFFFFu;
+
+  // A background mesh (its tetrahedra, positive) and one metric per vertex. Throws InputError
+  // when the background has no tetrahedron, when the counts differ, naming a tetrahedron with a
+  // vertex out of range or not positive (exact orient3d), or the vertex whose metric is not
+  // positive definite (numbered from 1 in the message, 0-based in items()).
+  ControlSpace3(const MeshData3& background, std::vector<Metric3> metrics,
+                MetricInterpolation mode = MetricInterpolation::Sizes);
+  // The finite live tetrahedra of a Mesh3 (the empty mesh, exterior included, in the classical
+  // case) with one metric per vertex slot.
+  ControlSpace3(const Mesh3& background, std::vector<Metric3> metrics,
+                MetricInterpolation mode = MetricInterpolation::Sizes);
+
+  // The same metric everywhere: a background of six tetrahedra over the box [lo, hi] (a point
+  // outside it takes the same metric all the same).
+  static ControlSpace3 uniform(const Metric3& metric, const Vec3& lo, const Vec3& hi);
+
+  // The metric at p: located by a visibility walk (exact orient3d) from `hint` (a background
+  // tetrahedron, updated to where p was found), interpolated from the vertices of the
+  // tetrahedron holding p with its barycentric weights. A point outside the background (or past
+  // the walk's bound in a non-convex background) takes the metric at the nearest point, up to
+  // clamping, of the tetrahedron the walk stopped at.
+  Metric3 metric_at(const Vec3& p, std::uint32_t& hint) const;
+
+  std::uint32_t tetrahedron_count() const noexcept { return static_cast<std::uint32_t>(tets_.size()); }
+  const std::vector<Vec3>& points() const noexcept { return points_; }
+  const std::vector<Metric3>& vertex_metrics() const noexcept { return metrics_; }
+  // The largest size (h = lambda_min^-1/2) over the vertex metrics' median: a typical length of
+  // the space, for grids.
+  double median_largest_size() const;
+
+ private:
+  void build(MetricInterpolation mode);
+  std::uint32_t walk(const Vec3& p, std::uint32_t start) const;
+
+  std::vector<Vec3> points_;
+  std::vector<Metric3> metrics_;
+  std::vector<std::array<std::uint32_t, 4>> tets_;
+  std::vector<std::array<std::uint32_t, 4>> neighbours_;  // tetrahedron across facet i, or kNone
+  std::vector<std::uint8_t> uniform_;                     // per tetrahedron: its four metrics equal
+  MetricInterpolation mode_ = MetricInterpolation::Sizes;
+};
+
+}  // namespace dtlab

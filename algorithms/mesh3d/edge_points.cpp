@@ -1,0 +1,180 @@
+// Field points by the edge method in 3D (book §7.5-§7.7: "the required algorithm is similar to
+// its two-dimensional counterpart"; Borouchaki, George, Hecht, Laug, Saltel 1997, part I, §4):
+// every internal edge longer than split_length in the metric is cut into n = round(l) sub-edges
+// of metric length close to 1, the sizes progressing geometrically from one end to the other
+// (algorithms/mesh2d/edge_cuts.hpp, shared with 2D). Each candidate is filtered "by simply using a
+// grid" (§7.5): it is dropped when a vertex lies closer than filter_distance to it in the metric
+// at the candidate; otherwise it is inserted at once by the Delaunay kernel (§7.9) and joins the
+// grid. Passes repeat over the new mesh until no candidate is accepted (saturation), bounded.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+#include "algorithms/mesh2d/edge_cuts.hpp"
+#include "algorithms/mesh3d/delaunay_kernel.hpp"
+#include "algorithms/mesh3d/mesh3d.hpp"
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+namespace {
+
+struct Candidate {
+  double length;
+  std::uint32_t a, b;
+};
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+}
+
+// The vertices bucketed in cubic cells of side `cell`, each cell a singly linked list through
+// `next_` (vertex ids). Only insertion: the edge method never removes a vertex.
+class VertexGrid {
+ public:
+  VertexGrid(const Vec3& origin, double cell) : origin_(origin), cell_(cell) {}
+
+  void insert(std::uint32_t v, const Vec3& p) {
+    if (next_.size() <= v) next_.resize(std::max<std::size_t>(v + 1, next_.size() * 3 / 2), kEnd);
+    const auto [it, fresh] = head_.try_emplace(key(coordinate(p.x - origin_.x), coordinate(p.y - origin_.y),
+                                                   coordinate(p.z - origin_.z)),
+                                               kEnd);
+    next_[v] = it->second;
+    it->second = v;
+  }
+
+  // Whether a vertex lies closer than `distance` to p in the metric m, whose largest size is
+  // h_max (so that the Euclidean search radius is distance * h_max).
+  bool any_closer(const Vec3& p, const Metric3& m, double h_max, double distance, std::span<const Vec3> points) const {
+    const double r = distance * h_max;
+    const std::int64_t x0 = coordinate(p.x - r - origin_.x), x1 = coordinate(p.x + r - origin_.x);
+    const std::int64_t y0 = coordinate(p.y - r - origin_.y), y1 = coordinate(p.y + r - origin_.y);
+    const std::int64_t z0 = coordinate(p.z - r - origin_.z), z1 = coordinate(p.z + r - origin_.z);
+    for (std::int64_t x = x0; x <= x1; ++x)
+      for (std::int64_t y = y0; y <= y1; ++y)
+        for (std::int64_t z = z0; z <= z1; ++z) {
+          const auto it = head_.find(key(x, y, z));
+          if (it == head_.end()) continue;
+          for (std::uint32_t v = it->second; v != kEnd; v = next_[v]) {
+            if (m.length(points[v] - p) < distance) return true;
+          }
+        }
+    return false;
+  }
+
+ private:
+  static constexpr std::uint32_t kEnd = 0xFFFFFFFFu;
+  std::int64_t coordinate(double d) const { return static_cast<std::int64_t>(std::floor(d / cell_)); }
+  // Cells far apart may share a key: their lists merge, which only adds vertices to look at.
+  static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z) {
+    return (static_cast<std::uint64_t>(x) * 73856093u) ^ (static_cast<std::uint64_t>(y) * 19349663u * 1000003u) ^
+           (static_cast<std::uint64_t>(z) * 83492791u * 998244353u);
+  }
+
+  Vec3 origin_;
+  double cell_;
+  std::unordered_map<std::uint64_t, std::uint32_t> head_;
+  std::vector<std::uint32_t> next_;
+};
+
+double largest_size(const Metric3& m) {
+  const bool iso = m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[2] == m.m[5];
+  return iso ? 1.0 / std::sqrt(m.m[0]) : sizes(m)[0];
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dOptions& options, Mesh3dStats& stats) {
+  DelaunayKernel3 kernel(mesh);
+  std::uint32_t first_live = 0;
+  while (first_live < mesh.vertex_capacity() && mesh.is_dead_vertex(first_live)) ++first_live;
+  DTLAB_ASSERT(first_live < mesh.vertex_capacity());
+  VertexGrid grid(mesh.point(first_live), options.filter_distance * control.median_largest_size());
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
+    if (!mesh.is_dead_vertex(v)) grid.insert(v, mesh.point(v));
+  }
+  std::vector<std::uint64_t> edges;
+  std::vector<Candidate> candidates;
+  std::vector<double> cuts;
+  std::uint32_t hint = ControlSpace3::kNoHint;
+  for (std::uint32_t pass = 0;; ++pass) {
+    if (pass == options.max_passes) {
+      throw InputError("mesh3d: the edge method did not saturate within " + std::to_string(options.max_passes) +
+                       " passes (" + std::to_string(stats.field_points) + " field points so far)");
+    }
+    edges.clear();
+    for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+      if (!mesh.in_domain(t)) continue;
+      for (std::uint32_t i = 0; i < 4; ++i)
+        for (std::uint32_t j = i + 1; j < 4; ++j) edges.push_back(edge_key(mesh.vertex(t, i), mesh.vertex(t, j)));
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    candidates.clear();
+    for (const std::uint64_t k : edges) {
+      const std::uint32_t a = static_cast<std::uint32_t>(k >> 32), b = static_cast<std::uint32_t>(k);
+      if (mesh.is_constrained_edge(a, b)) continue;
+      const double l = edge_length(mesh.point(a), mesh.metric(a), mesh.point(b), mesh.metric(b));
+      if (l > options.split_length) candidates.push_back({l, a, b});
+    }
+    if (candidates.empty()) break;
+    // Longest first, ties by vertex ids: deterministic, and long edges shape the mesh first.
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+      if (x.length != y.length) return x.length > y.length;
+      if (x.a != y.a) return x.a < y.a;
+      return x.b < y.b;
+    });
+    std::uint64_t inserted = 0;
+    for (const Candidate& c : candidates) {
+      const Vec3 pa = mesh.point(c.a), pb = mesh.point(c.b);
+      const Vec3 ab = pb - pa;
+      const double la = mesh.metric(c.a).length(ab), lb = mesh.metric(c.b).length(ab);
+      const double euclid = norm(ab);
+      const std::uint32_t n = static_cast<std::uint32_t>(std::max(1.0, std::round(c.length)));
+      cut_points(euclid / la, euclid / lb, n, cuts);
+      for (const double s : cuts) {
+        const Vec3 p = pa + s * ab;
+        const Metric3 mp = control.metric_at(p, hint);
+        if (grid.any_closer(p, mp, largest_size(mp), options.filter_distance, mesh.points())) {
+          ++stats.filtered;
+          continue;
+        }
+        // p lies on an edge that was internal when the pass began, so in the domain; the walk
+        // may pass through the exterior.
+        std::uint32_t start = mesh.vertex_tetrahedron(c.a);
+        if (mesh.is_ghost(start)) start = mesh.adjacent(start, 0);
+        const Mesh3::Location loc = mesh.locate(p, start);
+        if (loc.where == Mesh3::Where::Outside || loc.where == Mesh3::Where::Vertex || !mesh.in_domain(loc.tetrahedron)) {
+          ++stats.not_inserted;
+          continue;
+        }
+        const auto insertion = std::chrono::steady_clock::now();
+        if (!kernel.find_cavity(p, mp, loc.tetrahedron)) {
+          ++stats.not_inserted;
+          stats.seconds_insertion += seconds_since(insertion);
+          continue;
+        }
+        if (mesh.live_vertex_count() >= options.max_vertices) {
+          throw InputError("mesh3d: the mesh reached the vertex bound of " + std::to_string(options.max_vertices) +
+                           " (max_vertices; is the size far smaller than the domain?)");
+        }
+        const std::uint32_t v = kernel.commit(p, mp);
+        stats.seconds_insertion += seconds_since(insertion);
+        grid.insert(v, p);
+        ++inserted;
+      }
+    }
+    stats.field_points += inserted;
+    stats.passes = pass + 1;
+    if (inserted == 0) break;
+  }
+  stats.cavity_corrections += kernel.corrections();
+}
+
+}  // namespace dtlab

@@ -1,0 +1,83 @@
+// The 3D mesher's pipeline (mesh3d.hpp, book §7.12): empty mesh, control space, field points,
+// domain output.
+#include "algorithms/mesh3d/mesh3d.hpp"
+
+#include <chrono>
+#include <memory>
+#include <string>
+
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (options.method == "front") {
+    throw InputError("mesh3d: the advancing-front method (book §7.8) is not implemented in 3D yet (use edge)");
+  }
+  if (options.method != "edge") throw InputError("unknown field point method '" + options.method + "' (edge)");
+  if (!(options.filter_distance > 0.0 && options.filter_distance < 1.0)) {
+    throw InputError("mesh3d: filter_distance must lie in (0, 1)");
+  }
+  if (options.optimize) {
+    // algorithms/optimize3d (optimize3d(Mesh3&, ...)) is another helper's and not in the tree
+    // yet: refuse rather than pretend to optimize.
+    throw InputError("mesh3d: the 3D optimization (algorithms/optimize3d) is not available yet: run without optimize");
+  }
+  Mesh3dResult result;
+  result.stats.input_points = input.points.size();
+  result.stats.input_triangles = input.triangles.size();
+
+  // 1. Empty mesh: boundary recovery with the fewest Steiner points; the whole tetrahedralization
+  //    comes back in `tetrahedralization`, the domain's tetrahedra with their regions.
+  auto phase = std::chrono::steady_clock::now();
+  {
+    Constrained3dOptions recovery;
+    recovery.method = "recover";
+    recovery.keep_exterior = false;  // the exterior is told apart by what is not kept
+    recovery.steiner_limit_factor = options.steiner_limit_factor;
+    const Constrained3dResult r = constrained3d(input, recovery);
+    result.messages = r.messages;
+    if (r.tetrahedra.empty()) {
+      throw InputError("mesh3d: the domain has no tetrahedron: the surface encloses no region, or the holes remove "
+                       "every region");
+    }
+    result.stats.steiner_points = r.steiner_points.total();
+    result.stats.empty_mesh_tetrahedra = r.tetrahedra.size();
+    result.mesh = empty_mesh(r);
+  }
+  result.stats.seconds_empty_mesh = seconds_since(phase);
+
+  // 2. Control space: the given one, or the classical sizes on the empty mesh (a frozen copy).
+  phase = std::chrono::steady_clock::now();
+  std::unique_ptr<ControlSpace3> classical;
+  if (!options.control) classical = std::make_unique<ControlSpace3>(classical_control_space(result.mesh));
+  const ControlSpace3& control = options.control ? *options.control : *classical;
+  std::uint32_t hint = ControlSpace3::kNoHint;
+  for (std::uint32_t v = 0; v < result.mesh.vertex_capacity(); ++v) {
+    if (!result.mesh.is_dead_vertex(v)) result.mesh.set_metric(v, control.metric_at(result.mesh.point(v), hint));
+  }
+  result.stats.seconds_control_space = seconds_since(phase);
+
+  // 3.+4. Field points and their insertion.
+  phase = std::chrono::steady_clock::now();
+  insert_edge_points(result.mesh, control, options, result.stats);
+  result.stats.seconds_field_points = seconds_since(phase);
+
+  // 5. The domain (exterior dropped), regions and boundary triangles with their references.
+  result.output = result.mesh.domain(&result.output_vertex_ids);
+  result.output_metrics.reserve(result.output_vertex_ids.size());
+  for (const std::uint32_t v : result.output_vertex_ids) result.output_metrics.push_back(result.mesh.metric(v));
+  result.stats.seconds = seconds_since(start);
+  return result;
+}
+
+}  // namespace dtlab

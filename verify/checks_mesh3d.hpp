@@ -1,0 +1,45 @@
+// Exact checks of a 3D mesher's output (algorithms/mesh3d), library code for the tests, the
+// benchmark and `dtlab mesh --verify`. Independent of the generator: it reads the output arrays
+// and recomputes the input's recovered tetrahedralization.
+//  - validity: every vertex distinct, every tetrahedron positive (exact orient3d);
+//  - conformity: every facet in one or two tetrahedra, two with opposite orientations; every
+//    facet in one tetrahedron (the domain's boundary) and every facet between two references is
+//    an output triangle, and every output triangle is a facet of the tetrahedra;
+//  - the boundary: every output triangle is an input triangle (the same three points) with its
+//    reference, or lies exactly in one (orient3d zero, inside by exact orientations in its plane)
+//    with its reference: the pieces of recovery's Steiner points; for every input triangle beside
+//    the domain, the areas of its pieces sum to its area (relative 1e-9: sums in doubles);
+//  - regions: the volume of each reference equals that region's volume in the input's recovered
+//    tetrahedralization (relative 1e-9 of the whole volume: sums in doubles; exact coverage
+//    follows from conformity with the boundary identical), the same set of references;
+//  - statistics recomputed from the output (mesh/mesh_quality.hpp).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "algorithms/mesh3d/mesh3d.hpp"
+#include "mesh/mesh_quality.hpp"
+#include "verify/problem_report.hpp"
+
+namespace dtlab {
+
+struct MeshCheckReport3 : ProblemReport {
+  std::size_t vertices = 0, tetrahedra = 0, triangles = 0, interior_facets = 0, boundary_facets = 0;
+  std::size_t identical_triangles = 0;  // output triangles equal to an input triangle
+  std::size_t piece_triangles = 0;      // output triangles strictly inside one (Steiner points)
+  std::size_t regions = 0;
+  double volume = 0.0, domain_volume = 0.0;
+  QualityReport quality;  // recomputed from the output (with `metrics` when given)
+};
+
+// `metrics`: empty, or one per output vertex (the quality is then measured in them).
+// `first_number`: how messages number items (Medit: 1).
+MeshCheckReport3 check_mesh3d(const Mesh3dInput& input, const MeshData3& output, std::span<const Metric3> metrics = {},
+                              std::uint32_t first_number = 1);
+
+std::string to_json(const MeshCheckReport3& report);
+std::string to_text(const MeshCheckReport3& report);
+
+}  // namespace dtlab
