@@ -57,11 +57,8 @@ py::object vectorised(const std::array<py::handle, N>& args, F f) {
       throw InputError(std::string(names[k]) + ": shape (n, " + std::to_string(dim) + ") or (" + std::to_string(dim) + ",) expected");
     }
     data[k] = reinterpret_cast<const V*>(a.data());
-    try {
-      check_coordinates(std::span<const V>(data[k], single[k] ? 1 : static_cast<std::size_t>(a.shape(0))), std::string(names[k]) + " point");
-    } catch (const InputError& e) {
-      throw InputError(std::string(names[k]) + ": " + e.what(), e.items());
-    }
+    check_coordinates(std::span<const V>(data[k], single[k] ? 1 : static_cast<std::size_t>(a.shape(0))),
+                      std::string("argument ") + names[k] + ", point");
   }
   const bool scalar = n < 0;
   if (scalar) n = 1;

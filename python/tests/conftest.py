@@ -1,0 +1,35 @@
+"""Shared set-up of the Python tests: the dtlab command (DTLAB_CLI, set by ctest; else the
+build trees' binary) and a deterministic Hypothesis profile (fixed derandomized examples, no
+example database in the source tree), so that a run is reproducible and stays short."""
+
+import os
+import pathlib
+import shutil
+
+import pytest
+from hypothesis import HealthCheck, settings
+
+settings.register_profile(
+    "dtlab", derandomize=True, database=None, deadline=None, max_examples=60,
+    suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile(os.environ.get("DTLAB_HYPOTHESIS_PROFILE", "dtlab"))
+
+SOURCE_DIR = pathlib.Path(os.environ.get("DTLAB_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
+
+
+@pytest.fixture(scope="session")
+def cli():
+    """The path of the built `dtlab` command."""
+    candidates = [os.environ.get("DTLAB_CLI")]
+    import dtlab
+    build = pathlib.Path(dtlab.__file__).resolve().parents[2]  # <build>/python/dtlab/__init__.py
+    candidates += [str(build / "dtlab"), shutil.which("dtlab")]
+    for c in candidates:
+        if c and os.access(c, os.X_OK):
+            return c
+    pytest.skip("the dtlab command is not built")
+
+
+@pytest.fixture(scope="session")
+def source_dir():
+    return SOURCE_DIR
