@@ -20,7 +20,12 @@ SOURCE_DIR = pathlib.Path(os.environ.get("DTLAB_SOURCE_DIR", pathlib.Path(__file
 @pytest.fixture(scope="session")
 def cli():
     """The path of the built `dtlab` command."""
-    candidates = [os.environ.get("DTLAB_CLI")]
+    given = os.environ.get("DTLAB_CLI")
+    if given:  # ctest names the built binary: missing means the build failed, not a skip
+        if not os.access(given, os.X_OK):
+            pytest.fail(f"DTLAB_CLI={given} is not an executable")
+        return given
+    candidates = []
     import dtlab
     build = pathlib.Path(dtlab.__file__).resolve().parents[2]  # <build>/python/dtlab/__init__.py
     candidates += [str(build / "dtlab"), shutil.which("dtlab")]
