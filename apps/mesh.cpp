@@ -13,6 +13,8 @@
 
 #include "algorithms/mesh2d/mesh2d.hpp"
 #include "apps/cli_util.hpp"
+#include "apps/constrain3d.hpp"
+#include "apps/mesh3.hpp"
 #include "apps/graph_input.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
@@ -32,6 +34,7 @@ struct MeshArgs {
   std::string method = "edge";
   std::string interpolation = "sizes";
   bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
+  bool remove_cavities = false;  // surfaces only (apps/mesh3.cpp)
 };
 
 // A uniform size: the box of the input, enlarged by 1 on each side.
@@ -57,6 +60,13 @@ std::vector<Metric2> read_metrics(const MeshArgs& args, std::size_t vertex_count
 }
 
 int run_mesh(const MeshArgs& args) {
+  if (is_surface_input(args.input)) {  // a closed surface: the 3D mesher (apps/mesh3.cpp)
+    return run_mesh3({.input = args.input, .output = args.output, .output_metric = args.output_metric, .size = args.size,
+                      .size_map = args.size_map, .metric = args.metric, .background = args.background,
+                      .method = args.method, .interpolation = args.interpolation, .no_optimize = args.no_optimize,
+                      .stats = args.stats, .verify = args.verify, .resample_boundary = args.resample_boundary,
+                      .remove_cavities = args.remove_cavities});
+  }
   const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
   if (given > 1) throw InputError("give one of --size, --size-map, --metric");
   if (!args.background.empty() && args.size_map.empty() && args.metric.empty())
@@ -141,7 +151,8 @@ int run_mesh(const MeshArgs& args) {
 
 void add_mesh(CLI::App& app) {
   auto args = std::make_shared<MeshArgs>();
-  CLI::App* cmd = app.add_subcommand("mesh", "2D mesh generation governed by sizes or a metric (book chapter 5)");
+  CLI::App* cmd = app.add_subcommand(
+      "mesh", "Mesh generation governed by sizes or a metric: 2D domains (book chapter 5), closed surfaces (chapter 7)");
   cmd->add_option("input", args->input,
                   "Domain: Triangle .poly (vertices, segments with markers, holes, regions) or Medit .mesh (Vertices, "
                   "Edges with references); the segments are the boundary discretisation")
@@ -161,6 +172,8 @@ void add_mesh(CLI::App& app) {
   cmd->add_flag("--resample-boundary", args->resample_boundary,
                 "Cut the input segments anew in the size or metric given (default: they are the boundary discretisation)");
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the optimization step");
+  cmd->add_flag("--remove-cavities", args->remove_cavities,
+                "Closed surfaces: drop the regions bounded only by shells nested inside another (a cube minus a ball)");
   cmd->add_flag("--stats", args->stats, "Print the quality table and one JSON object (counts, phases, quality) last");
   cmd->add_flag("--verify", args->verify,
                 "Check the output exactly (validity, segments as chains, regions, area); exit 3 if it fails");

@@ -77,7 +77,8 @@ bool less_points(const PointTriple& x, const PointTriple& y) {
 }  // namespace
 
 MeshCheckReport3 check_mesh3d(const Mesh3dInput& input, const MeshData3& out, std::span<const Metric3> metrics,
-                              std::uint32_t first_number) {
+                              const MeshCheckOptions3& options) {
+  const std::uint32_t first_number = options.first_number;
   MeshCheckReport3 r;
   r.vertices = out.vertices.size();
   r.tetrahedra = out.tetrahedra.size();
@@ -221,6 +222,7 @@ MeshCheckReport3 check_mesh3d(const Mesh3dInput& input, const MeshData3& out, st
   try {
     Constrained3dOptions recovery;
     recovery.method = "recover";
+    recovery.remove_cavities = options.remove_cavities;
     const Constrained3dResult cdt = constrained3d(input, recovery);
     std::map<int, double> expected;
     for (std::size_t t = 0; t < cdt.tetrahedra.size(); ++t) {

@@ -34,10 +34,14 @@ struct MeshCheckReport3 : ProblemReport {
   QualityReport quality;  // recomputed from the output (with `metrics` when given)
 };
 
+struct MeshCheckOptions3 {
+  bool remove_cavities = false;   // as the mesher was told (Mesh3dOptions::remove_cavities)
+  std::uint32_t first_number = 1;  // how messages number items (Medit: 1)
+};
+
 // `metrics`: empty, or one per output vertex (the quality is then measured in them).
-// `first_number`: how messages number items (Medit: 1).
 MeshCheckReport3 check_mesh3d(const Mesh3dInput& input, const MeshData3& output, std::span<const Metric3> metrics = {},
-                              std::uint32_t first_number = 1);
+                              const MeshCheckOptions3& options = {});
 
 std::string to_json(const MeshCheckReport3& report);
 std::string to_text(const MeshCheckReport3& report);

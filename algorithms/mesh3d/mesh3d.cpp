@@ -1,5 +1,5 @@
 // The 3D mesher's pipeline (mesh3d.hpp, book §7.12): empty mesh, control space, field points,
-// domain output.
+// optimization, domain output.
 #include "algorithms/mesh3d/mesh3d.hpp"
 
 #include <chrono>
@@ -27,11 +27,6 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   if (!(options.filter_distance > 0.0 && options.filter_distance < 1.0)) {
     throw InputError("mesh3d: filter_distance must lie in (0, 1)");
   }
-  if (options.optimize) {
-    // algorithms/optimize3d (optimize3d(Mesh3&, ...)) is another helper's and not in the tree
-    // yet: refuse rather than pretend to optimize.
-    throw InputError("mesh3d: the 3D optimization (algorithms/optimize3d) is not available yet: run without optimize");
-  }
   Mesh3dResult result;
   result.stats.input_points = input.points.size();
   result.stats.input_triangles = input.triangles.size();
@@ -43,6 +38,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
     Constrained3dOptions recovery;
     recovery.method = "recover";
     recovery.keep_exterior = false;  // the exterior is told apart by what is not kept
+    recovery.remove_cavities = options.remove_cavities;
     recovery.steiner_limit_factor = options.steiner_limit_factor;
     const Constrained3dResult r = constrained3d(input, recovery);
     result.messages = r.messages;
@@ -72,7 +68,23 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   insert_edge_points(result.mesh, control, options, result.stats);
   result.stats.seconds_field_points = seconds_since(phase);
 
-  // 5. The domain (exterior dropped), regions and boundary triangles with their references.
+  // 5. Optimization.
+  phase = std::chrono::steady_clock::now();
+  if (options.optimize) {
+    std::uint32_t field_hint = ControlSpace3::kNoHint;
+    const MetricField3 field = [&control, &field_hint](const Vec3& p) { return control.metric_at(p, field_hint); };
+    const Optimize3dStats o = optimize3d(result.mesh, options.optimization, field);
+    result.stats.face_swaps = o.face_swaps;
+    result.stats.shell_transformations = o.shell_transformations;
+    result.stats.relocations = o.relocations;
+    result.stats.collapses = o.collapses;
+    result.stats.splits = o.splits;
+    result.stats.optimization_rounds = o.rounds;
+    result.stats.optimization_stopped_by = o.stopped_by;
+  }
+  result.stats.seconds_optimization = seconds_since(phase);
+
+  // The domain (exterior dropped), regions and boundary triangles with their references.
   result.output = result.mesh.domain(&result.output_vertex_ids);
   result.output_metrics.reserve(result.output_vertex_ids.size());
   for (const std::uint32_t v : result.output_vertex_ids) result.output_metrics.push_back(result.mesh.metric(v));

@@ -9,7 +9,8 @@
 //      saturation (edge_points.cpp);
 //   4. insertion by the constrained, possibly anisotropic Delaunay kernel (§7.9-§7.10,
 //      delaunay_kernel.hpp);
-//   5. the exterior removed, regions written with their references (Mesh3::domain).
+//   5. optimization (algorithms/optimize3d), then the exterior removed, regions written with
+//      their references (Mesh3::domain).
 //
 //   dtlab::Mesh3dResult r = dtlab::mesh3d({.points = pts, .triangles = tris}, {});
 //   write_mesh3("out.mesh", r.output);
@@ -21,6 +22,7 @@
 
 #include "algorithms/constrained3d/constrained3d.hpp"
 #include "algorithms/mesh3d/control_space.hpp"
+#include "algorithms/optimize3d/optimize3d.hpp"
 #include "kernel/metric.hpp"
 #include "mesh/io/mesh_data3.hpp"
 #include "mesh/mesh3.hpp"
@@ -36,10 +38,13 @@ struct Mesh3dOptions {
   std::string method = "edge";
   // The size specification; null: the classical case (sizes from the surface discretisation).
   const ControlSpace3* control = nullptr;
-  // Step 5's optimization (algorithms/optimize3d) is not called yet: it is not in the tree when
-  // this was written. The option is kept so that callers (`dtlab mesh --no-optimize`) need not
-  // change; mesh3d refuses `true` rather than pretend (see mesh3d.cpp).
-  bool optimize = false;
+  // Step 5: the 3D optimization (algorithms/optimize3d, book §8.6's strategy), governed by the
+  // control space (moved and new points take their metric from it).
+  bool optimize = true;
+  Optimize3dOptions optimization;
+  // Drop the cavities: regions bounded only by shells nested inside another (a cube minus a
+  // ball: the ball's inside), as Constrained3dOptions::remove_cavities.
+  bool remove_cavities = false;
   // A field point closer than this (metric length, in the metric at the point) to a vertex is
   // filtered out.
   double filter_distance = 0.7;
@@ -64,6 +69,10 @@ struct Mesh3dStats {
   std::uint64_t input_points = 0, input_triangles = 0;
   std::uint64_t steiner_points = 0;  // added by the boundary recovery
   std::uint64_t empty_mesh_tetrahedra = 0;
+  // Optimization counts (algorithms/optimize3d), filled when it ran.
+  std::uint64_t face_swaps = 0, shell_transformations = 0, relocations = 0, collapses = 0, splits = 0;
+  std::uint32_t optimization_rounds = 0;
+  std::string optimization_stopped_by;
 };
 
 struct Mesh3dResult {

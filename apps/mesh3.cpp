@@ -1,0 +1,188 @@
+// `dtlab mesh` for volumes: 3D mesh generation governed by a control space (algorithms/mesh3d,
+// book §7): the domain is a closed surface (several shells allowed) read as `dtlab constrain`
+// reads it (mesh/io/surface_input.hpp; polygonal facets triangulated in their planes); the sizes
+// are classical (from the surface discretisation), a uniform --size, a size map (--size-map
+// S.sol, scalars) or a metric map (--metric M.sol, symmetric tensors) at the vertices of
+// --background (a tetrahedral Medit mesh). Output: Medit .mesh with Tetrahedra (region
+// references) and the boundary Triangles (input references). --stats prints the book's Table 7.1
+// and 7.2 columns (ne, np, target, Q_M, % in [1,2], time, elements per minute, share of time in
+// point insertion) with the quality report (dihedral angles, unit edges) and one JSON object.
+#include "apps/mesh3.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+#include "algorithms/constrained3d/facet_triangulation.hpp"
+#include "algorithms/mesh3d/mesh3d.hpp"
+#include "apps/cli_util.hpp"
+#include "apps/input_files.hpp"
+#include "kernel/error.hpp"
+#include "kernel/quality.hpp"
+#include "mesh/io/medit3.hpp"
+#include "mesh/io/medit_sol.hpp"
+#include "mesh/io/surface_input.hpp"
+#include "mesh/mesh_quality.hpp"
+#include "verify/checks_mesh3d.hpp"
+
+namespace dtlab::cli {
+
+namespace {
+
+// The best Q_K of a tetrahedron on triangle (a, b, c) (book §7.13's "target"): the apex on the
+// normal through the centroid, its height found by a golden-section search (Q_K is unimodal in it).
+double best_quality_on(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = cross(b - a, c - a);
+  const double nn = norm(n);
+  if (!(nn > 0.0)) return std::numeric_limits<double>::infinity();
+  const Vec3 unit = (1.0 / nn) * n;
+  const Vec3 g = (1.0 / 3.0) * (a + b + c);
+  const double l = std::max({norm(b - a), norm(c - b), norm(a - c)});
+  const auto q = [&](double t) { return shape_quality(a, b, c, g + (t * l) * unit); };
+  double lo = 0.01, hi = 3.0;
+  const double phi = 0.6180339887498949;
+  double x1 = hi - phi * (hi - lo), x2 = lo + phi * (hi - lo), f1 = q(x1), f2 = q(x2);
+  for (int k = 0; k < 60; ++k) {
+    if (f1 < f2) {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - phi * (hi - lo), f1 = q(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + phi * (hi - lo), f2 = q(x2);
+    }
+  }
+  return std::min(f1, f2);
+}
+
+double quality_target(const MeshData3& mesh) {
+  double target = 1.0;
+  for (const auto& f : mesh.triangles)
+    target = std::max(target, best_quality_on(mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]]));
+  return target;
+}
+
+std::vector<Metric3> read_metrics3(const Mesh3CliArgs& args, std::size_t vertex_count) {
+  const std::string& file = args.size_map.empty() ? args.metric : args.size_map;
+  const SolData sol = read_medit_sol(file);
+  if (sol.dimension != 3) throw InputError(file + ": a " + std::to_string(sol.dimension) + "D solution for a 3D domain");
+  if (!args.size_map.empty() && sol.kind != SolData::Kind::Scalar)
+    throw InputError(file + ": --size-map wants scalar sizes; this file holds tensors (use --metric)");
+  if (!args.metric.empty() && sol.kind != SolData::Kind::Tensor)
+    throw InputError(file + ": --metric wants symmetric tensors; this file holds scalar sizes (use --size-map)");
+  check_sol_matches(sol, vertex_count, file + " (against " + args.background + ")");
+  return metrics3_from_sol(sol, file);
+}
+
+}  // namespace
+
+int run_mesh3(const Mesh3CliArgs& args) {
+  const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
+  if (given > 1) throw InputError("give one of --size, --size-map, --metric");
+  if (!args.background.empty() && args.size_map.empty() && args.metric.empty())
+    throw InputError("--background needs --size-map or --metric (the file of values at its vertices)");
+  if ((!args.size_map.empty() || !args.metric.empty()) && args.background.empty())
+    throw InputError("for a volume, --size-map and --metric need --background B.mesh (a tetrahedral mesh holding their "
+                     "vertices)");
+  if (args.resample_boundary)
+    throw InputError("--resample-boundary is for 2D domains: a surface is meshed as given");
+
+  const SurfaceInput in = read_surface(args.input);
+  FacetTriangulation facets;
+  try {
+    facets = triangulate_facets(in.plc, {.facet_name = [&in](std::size_t f) { return in.facet_name(f); },
+                                         .first_vertex_number = in.first_vertex_number});
+  } catch (const InputError& e) {
+    throw InputError(args.input + ": " + e.what(), e.items());
+  }
+  for (const std::string& m : facets.messages) std::cerr << "dtlab: " << m << "\n";
+  std::vector<RegionSeed3> seeds;
+  for (const PlcRegion3& r : in.plc.regions) seeds.push_back({r.point, static_cast<int>(r.attribute)});
+  const Mesh3dInput input{.points = in.plc.vertices,
+                          .triangles = facets.triangles,
+                          .triangle_refs = facets.triangle_refs,
+                          .holes = in.plc.holes,
+                          .regions = seeds,
+                          .triangle_name = [&](std::uint32_t t) { return in.facet_name(facets.triangle_facet[t]); }};
+  Mesh3dOptions options;
+  options.method = args.method;
+  options.optimize = !args.no_optimize;
+  options.remove_cavities = args.remove_cavities;
+  const MetricInterpolation mode =
+      args.interpolation == "log-euclidean" ? MetricInterpolation::LogEuclidean : MetricInterpolation::Sizes;
+  std::optional<ControlSpace3> control;
+  if (args.size > 0) {
+    Vec3 lo = input.points.front(), hi = lo;
+    for (const Vec3& p : input.points) {
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    control.emplace(ControlSpace3::uniform(Metric3::isotropic(args.size), lo - Vec3{1, 1, 1}, hi + Vec3{1, 1, 1}));
+  } else if (given == 1) {
+    const MeshData3 background = read_medit3(args.background);
+    try {
+      control.emplace(background, read_metrics3(args, background.vertices.size()), mode);
+    } catch (const InputError& e) {
+      throw InputError(args.background + ": " + e.what(), e.items());
+    }
+  }
+  if (control) options.control = &*control;
+
+  Mesh3dResult result;
+  try {
+    result = mesh3d(input, options);
+  } catch (const InputError& e) {
+    throw InputError(args.input + ": " + e.what(), e.items());
+  }
+  const double peak_mb = peak_rss_mb();
+  for (const std::string& m : result.messages) std::cerr << "dtlab: " << m << "\n";
+
+  bool ok = true;
+  if (args.verify) {
+    const MeshCheckReport3 report = check_mesh3d(input, result.output, result.output_metrics, {.remove_cavities = args.remove_cavities});
+    std::cout << to_text(report);
+    ok = report.ok;
+  }
+  if (!args.output.empty()) write_mesh3(args.output, result.output);
+  if (!args.output_metric.empty()) write_medit_sol(args.output_metric, sol_from_metrics(result.output_metrics));
+  if (args.stats) {
+    const QualityReport quality = measure_quality(result.output.vertices, result.output.tetrahedra, result.output_metrics);
+    const Mesh3dStats& s = result.stats;
+    const double ne = static_cast<double>(result.output.tetrahedra.size());
+    const double per_second = s.seconds > 0 ? ne / s.seconds : 0.0;
+    const double target = quality_target(result.output);
+    const double insertion_share = s.seconds > 0 ? s.seconds_insertion / s.seconds : 0.0;
+    std::cout << quality_table(quality);
+    std::ostringstream table;
+    table << "Table 7.1: ne " << result.output.tetrahedra.size() << ", np " << quality.vertices << ", target "
+          << json_number(target) << ", Q_M " << json_number(quality.quality_worst) << ", 1-2 "
+          << json_number(100.0 * quality.quality_shares[0]) << " %, t " << json_number(s.seconds) << " s\n"
+          << "Table 7.2: v " << json_number(per_second * 60.0) << " elements per minute (" << json_number(per_second)
+          << " per second), Del " << json_number(100.0 * insertion_share) << " % of the time in point insertion\n";
+    std::cout << table.str();
+    std::ostringstream json;
+    json << "{\"input\":" << json_string(args.input) << ",\"dim\":3,\"method\":" << json_string(args.method)
+         << ",\"points\":" << s.input_points << ",\"input_triangles\":" << s.input_triangles
+         << ",\"steiner_points\":" << s.steiner_points << ",\"empty_mesh_tetrahedra\":" << s.empty_mesh_tetrahedra
+         << ",\"vertices\":" << result.output.vertices.size() << ",\"tetrahedra\":" << result.output.tetrahedra.size()
+         << ",\"triangles\":" << result.output.triangles.size() << ",\"field_points\":" << s.field_points
+         << ",\"filtered\":" << s.filtered << ",\"not_inserted\":" << s.not_inserted << ",\"passes\":" << s.passes
+         << ",\"cavity_corrections\":" << s.cavity_corrections << ",\"optimized\":" << (options.optimize ? "true" : "false")
+         << ",\"face_swaps\":" << s.face_swaps << ",\"shell_transformations\":" << s.shell_transformations
+         << ",\"relocations\":" << s.relocations << ",\"collapses\":" << s.collapses << ",\"splits\":" << s.splits
+         << ",\"optimization_rounds\":" << s.optimization_rounds
+         << ",\"target\":" << json_number(target) << ",\"seconds\":" << json_number(s.seconds)
+         << ",\"seconds_empty_mesh\":" << json_number(s.seconds_empty_mesh)
+         << ",\"seconds_control_space\":" << json_number(s.seconds_control_space)
+         << ",\"seconds_field_points\":" << json_number(s.seconds_field_points)
+         << ",\"seconds_insertion\":" << json_number(s.seconds_insertion)
+         << ",\"seconds_optimization\":" << json_number(s.seconds_optimization)
+         << ",\"tetrahedra_per_second\":" << json_number(per_second)
+         << ",\"tetrahedra_per_minute\":" << json_number(per_second * 60.0)
+         << ",\"insertion_share\":" << json_number(insertion_share) << ",\"peak_rss_mb\":" << json_number(peak_mb)
+         << ",\"quality\":" << quality_json(quality) << "}";
+    std::cout << json.str() << "\n";
+  }
+  return ok ? 0 : 3;
+}
+
+}  // namespace dtlab::cli

@@ -1,0 +1,22 @@
+// The 3D path of `dtlab mesh` (apps/mesh.cpp hands over surface inputs: OFF, OBJ, STL, TetGen
+// .poly/.smesh with dimension 3, Medit .mesh with Dimension 3 and triangles only).
+#pragma once
+
+#include <string>
+
+namespace dtlab::cli {
+
+struct Mesh3CliArgs {
+  std::string input, output, output_metric;
+  double size = 0.0;  // 0: not given
+  std::string size_map, metric, background;
+  std::string method = "edge";
+  std::string interpolation = "sizes";
+  bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
+  bool remove_cavities = false;  // Mesh3dOptions::remove_cavities
+};
+
+// Returns the exit status: 0 success, 3 --verify failed. Throws InputError for bad input.
+int run_mesh3(const Mesh3CliArgs& args);
+
+}  // namespace dtlab::cli
