@@ -12,6 +12,8 @@ from hypothesis import HealthCheck, settings
 settings.register_profile(
     "dtlab", derandomize=True, database=None, deadline=None, max_examples=60,
     suppress_health_check=[HealthCheck.too_slow])
+# DTLAB_HYPOTHESIS_PROFILE=long: many more examples, for a search rather than a check.
+settings.register_profile("long", settings.get_profile("dtlab"), max_examples=2000)
 settings.load_profile(os.environ.get("DTLAB_HYPOTHESIS_PROFILE", "dtlab"))
 
 SOURCE_DIR = pathlib.Path(os.environ.get("DTLAB_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
