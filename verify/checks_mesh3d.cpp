@@ -9,6 +9,7 @@
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/tetrahedralization3.hpp"
+#include "verify/checks_constrained3d.hpp"
 
 namespace dtlab {
 
@@ -28,7 +29,6 @@ ReportCounts counts_of(const MeshCheckReport3& r) {
 }
 
 double volume6(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return dot(b - a, cross(c - a, d - a)); }
-double area(const Vec3& a, const Vec3& b, const Vec3& c) { return 0.5 * norm(cross(b - a, c - a)); }
 
 // Sorted vertex triple with the parity of the sort (true: an odd permutation of the given order).
 std::pair<std::array<std::uint32_t, 3>, bool> sorted_facet(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
@@ -38,26 +38,6 @@ std::pair<std::array<std::uint32_t, 3>, bool> sorted_facet(std::uint32_t a, std:
   if (f[1] > f[2]) std::swap(f[1], f[2]), odd = !odd;
   if (f[0] > f[1]) std::swap(f[0], f[1]), odd = !odd;
   return {f, odd};
-}
-
-Vec2 drop(const Vec3& p, int axis) {
-  if (axis == 0) return {p.y, p.z};
-  if (axis == 1) return {p.z, p.x};
-  return {p.x, p.y};
-}
-
-// Whether q lies in the closed triangle (a, b, c), exactly (q, a, b, c coplanar is checked too).
-bool in_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& q) {
-  if (orient3d(a, b, c, q) != Sign::Zero) return false;
-  for (int axis = 0; axis < 3; ++axis) {
-    const Vec2 pa = drop(a, axis), pb = drop(b, axis), pc = drop(c, axis), pq = drop(q, axis);
-    const Sign s = orient2d(pa, pb, pc);
-    if (s == Sign::Zero) continue;
-    const Sign s1 = orient2d(pa, pb, pq), s2 = orient2d(pb, pc, pq), s3 = orient2d(pc, pa, pq);
-    const auto ok = [s](Sign x) { return x == s || x == Sign::Zero; };
-    return ok(s1) && ok(s2) && ok(s3);
-  }
-  return false;  // a flat input triangle: check_plc refuses them
 }
 
 using PointTriple = std::array<Vec3, 3>;
@@ -168,62 +148,78 @@ MeshCheckReport3 check_mesh3d(const Mesh3dInput& input, const MeshData3& out, st
     if (it == facets.end() || it->v != key) r.add_problem("triangle " + name(k) + " is not a facet of the tetrahedra");
   }
 
-  // The boundary against the input triangles.
-  std::vector<std::pair<PointTriple, std::uint32_t>> input_keys;
-  for (std::uint32_t t = 0; t < input.triangles.size(); ++t) {
-    const auto& f = input.triangles[t];
-    input_keys.push_back({sorted_points(input.points[f[0]], input.points[f[1]], input.points[f[2]]), t});
-  }
-  std::sort(input_keys.begin(), input_keys.end(), [](const auto& x, const auto& y) {
-    return less_points(x.first, y.first) || (!less_points(y.first, x.first) && x.second < y.second);
-  });
-  const auto input_ref = [&](std::uint32_t t) { return input.triangle_refs.empty() ? 0 : input.triangle_refs[t]; };
-  std::vector<double> covered(input.triangles.size(), 0.0);
-  for (const auto& [key, k] : triangle_keys) {
-    const auto& f = out.triangles[k];
-    const Vec3 &a = out.vertices[f[0]], &b = out.vertices[f[1]], &c = out.vertices[f[2]];
-    const int ref = out.triangle_refs.empty() ? 0 : out.triangle_refs[k];
-    const PointTriple pts = sorted_points(a, b, c);
-    const auto it = std::lower_bound(input_keys.begin(), input_keys.end(), pts,
-                                     [](const auto& x, const PointTriple& y) { return less_points(x.first, y); });
-    if (it != input_keys.end() && !less_points(pts, it->first)) {
-      ++r.identical_triangles;
-      covered[it->second] += area(a, b, c);
-      if (input_ref(it->second) != ref)
-        r.add_problem("triangle " + name(k) + " has reference " + std::to_string(ref) + ", its input triangle " +
-                      name(it->second) + " " + std::to_string(input_ref(it->second)));
-      continue;
-    }
-    // A piece: in an input triangle (a Steiner point of the recovery).
-    bool found = false;
-    for (std::uint32_t t = 0; t < input.triangles.size() && !found; ++t) {
-      const auto& g = input.triangles[t];
-      const Vec3 &p = input.points[g[0]], &q = input.points[g[1]], &s = input.points[g[2]];
-      if (!in_triangle(p, q, s, a) || !in_triangle(p, q, s, b) || !in_triangle(p, q, s, c)) continue;
-      found = true;
-      ++r.piece_triangles;
-      covered[t] += area(a, b, c);
-      if (input_ref(t) != ref)
-        r.add_problem("triangle " + name(k) + " has reference " + std::to_string(ref) + ", the input triangle " + name(t) +
-                      " it lies in " + std::to_string(input_ref(t)));
-    }
-    if (!found) r.add_problem("triangle " + name(k) + " lies in no input triangle");
-  }
-  for (std::uint32_t t = 0; t < input.triangles.size(); ++t) {
-    if (covered[t] == 0.0) continue;  // beside no domain tetrahedron (outside the domain)
-    const auto& g = input.triangles[t];
-    const double whole = area(input.points[g[0]], input.points[g[1]], input.points[g[2]]);
-    if (std::fabs(covered[t] - whole) > 1e-9 * whole)
-      r.add_problem("input triangle " + name(t) + " is covered by pieces of area " + std::to_string(covered[t]) + " of " +
-                    std::to_string(whole));
-  }
-
-  // Regions against the recovered tetrahedralization of the input.
+  // The recovered tetrahedralization of the input, itself checked exactly (its pieces an exact
+  // subdivision of the input triangles, its Steiner points within their rounding bounds).
+  Constrained3dResult cdt;
   try {
     Constrained3dOptions recovery;
     recovery.method = "recover";
     recovery.remove_cavities = options.remove_cavities;
-    const Constrained3dResult cdt = constrained3d(input, recovery);
+    cdt = constrained3d(input, recovery);
+  } catch (const InputError& e) {
+    r.add_problem(std::string("the input's recovered tetrahedralization failed: ") + e.what());
+    r.ok = false;
+    return r;
+  }
+  {
+    const ConstrainedCheckReport3 c =
+        check_constrained3d(input, cdt, {.method = "recover", .first_number = first_number});
+    r.add_problems(c, " (in the input's recovered tetrahedralization)");
+  }
+
+  // The boundary: every output triangle is a piece of the recovery (the same three points) with
+  // its reference; every piece beside the domain is an output triangle.
+  std::vector<std::pair<PointTriple, std::uint32_t>> piece_keys;
+  for (std::uint32_t k = 0; k < cdt.triangles.size(); ++k) {
+    const auto& f = cdt.triangles[k];
+    piece_keys.push_back({sorted_points(cdt.vertices[f[0]], cdt.vertices[f[1]], cdt.vertices[f[2]]), k});
+  }
+  std::sort(piece_keys.begin(), piece_keys.end(), [](const auto& x, const auto& y) {
+    return less_points(x.first, y.first) || (!less_points(y.first, x.first) && x.second < y.second);
+  });
+  const auto find_piece = [&](const PointTriple& pts) -> std::uint32_t {
+    const auto it = std::lower_bound(piece_keys.begin(), piece_keys.end(), pts,
+                                     [](const auto& x, const PointTriple& y) { return less_points(x.first, y); });
+    return it != piece_keys.end() && !less_points(pts, it->first) ? it->second : 0xFFFFFFFFu;
+  };
+  std::vector<std::uint8_t> piece_seen(cdt.triangles.size(), 0);
+  for (const auto& [key, k] : triangle_keys) {
+    const auto& f = out.triangles[k];
+    const int ref = out.triangle_refs.empty() ? 0 : out.triangle_refs[k];
+    const std::uint32_t piece = find_piece(sorted_points(out.vertices[f[0]], out.vertices[f[1]], out.vertices[f[2]]));
+    if (piece == 0xFFFFFFFFu) {
+      r.add_problem("triangle " + name(k) + " is no input triangle nor a piece of one");
+      continue;
+    }
+    piece_seen[piece] = 1;
+    const std::uint32_t face = cdt.triangle_face[piece];
+    const auto& g = input.triangles[face];
+    const bool whole = sorted_points(input.points[g[0]], input.points[g[1]], input.points[g[2]]) ==
+                       sorted_points(out.vertices[f[0]], out.vertices[f[1]], out.vertices[f[2]]);
+    ++(whole ? r.identical_triangles : r.piece_triangles);
+    if (cdt.triangle_refs[piece] != ref)
+      r.add_problem("triangle " + name(k) + " has reference " + std::to_string(ref) + ", its input triangle " + name(face) +
+                    " " + std::to_string(cdt.triangle_refs[piece]));
+  }
+  {
+    // The pieces beside a domain tetrahedron of the recovery.
+    std::vector<std::array<std::uint32_t, 3>> domain_facets;
+    for (const auto& v : cdt.tetrahedra)
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        const auto& f = kFacetVertex[i];
+        domain_facets.push_back(sorted_facet(v[f[0]], v[f[1]], v[f[2]]).first);
+      }
+    std::sort(domain_facets.begin(), domain_facets.end());
+    for (std::uint32_t k = 0; k < cdt.triangles.size(); ++k) {
+      if (piece_seen[k]) continue;
+      const auto& f = cdt.triangles[k];
+      if (std::binary_search(domain_facets.begin(), domain_facets.end(), sorted_facet(f[0], f[1], f[2]).first))
+        r.add_problem("piece " + name(k) + " of input triangle " + name(cdt.triangle_face[k]) + " is not an output triangle");
+    }
+  }
+
+  // Regions against the recovery's.
+  {
     std::map<int, double> expected;
     for (std::size_t t = 0; t < cdt.tetrahedra.size(); ++t) {
       const auto& v = cdt.tetrahedra[t];
@@ -241,8 +237,6 @@ MeshCheckReport3 check_mesh3d(const Mesh3dInput& input, const MeshData3& out, st
     }
     for (const auto& [ref, vol] : volume_of)
       if (!expected.count(ref)) r.add_problem("reference " + std::to_string(ref) + " is no region of the domain");
-  } catch (const InputError& e) {
-    r.add_problem(std::string("the input's recovered tetrahedralization failed: ") + e.what());
   }
   if (r.problem_count == 0) {
     try {

@@ -5,10 +5,11 @@
 //  - conformity: every facet in one or two tetrahedra, two with opposite orientations; every
 //    facet in one tetrahedron (the domain's boundary) and every facet between two references is
 //    an output triangle, and every output triangle is a facet of the tetrahedra;
-//  - the boundary: every output triangle is an input triangle (the same three points) with its
-//    reference, or lies exactly in one (orient3d zero, inside by exact orientations in its plane)
-//    with its reference: the pieces of recovery's Steiner points; for every input triangle beside
-//    the domain, the areas of its pieces sum to its area (relative 1e-9: sums in doubles);
+//  - the boundary: the input's recovered tetrahedralization (the empty mesh) is recomputed and
+//    checked exactly (verify/checks_constrained3d.hpp: its pieces triangulate the input triangles
+//    exactly, its Steiner points within their rounding bounds); every output triangle is one of
+//    its pieces (the same three points: the input triangle itself, or a piece where recovery put
+//    Steiner points) with its reference, and every piece beside the domain is an output triangle;
 //  - regions: the volume of each reference equals that region's volume in the input's recovered
 //    tetrahedralization (relative 1e-9 of the whole volume: sums in doubles; exact coverage
 //    follows from conformity with the boundary identical), the same set of references;
