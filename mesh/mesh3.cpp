@@ -277,6 +277,15 @@ bool Mesh3::shell(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& 
   if (ring) ring->clear();
   const std::uint32_t t0 = find_edge(a, b);
   if (t0 == kNone) return false;
+  shell_at(t0, a, b, out, ring);
+  return true;
+}
+
+void Mesh3::shell_at(std::uint32_t t0, std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& out,
+                     std::vector<std::uint32_t>* ring) const {
+  out.clear();
+  if (ring) ring->clear();
+  DTLAB_ASSERT(t0 < tetrahedron_capacity() && is_alive(t0));
   auto local = [&](std::uint32_t t, std::uint32_t v) {
     for (std::uint32_t i = 0; i < 4; ++i)
       if (vertices_[4 * t + i] == v) return i;
@@ -302,7 +311,6 @@ bool Mesh3::shell(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& 
     c = vertices_[4 * t + l];
     t = tetrahedron_of(g);
   } while (t != t0);
-  return true;
 }
 
 Mesh3::Location Mesh3::locate(const Vec3& p, std::uint32_t start, bool stop_at_constraints) const {

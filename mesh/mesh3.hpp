@@ -152,6 +152,10 @@ class Mesh3 {
   // (ring has out.size() entries; ring[n-1] and ring[0] span shell[n-1]), and (a, b, ring[k],
   // ring[k+1]) is positive: the ring turns counter-clockwise seen from b towards a.
   bool shell(std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& out, std::vector<std::uint32_t>* ring = nullptr) const;
+  // The same, starting from t, a live tetrahedron that has edge (a, b) (no search for one):
+  // shell[0] is t.
+  void shell_at(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& out,
+                std::vector<std::uint32_t>* ring = nullptr) const;
   // A live tetrahedron having edge (a, b), or kNone.
   std::uint32_t find_edge(std::uint32_t a, std::uint32_t b) const;
   // The facet handle of triangle (a, b, c) (any order) in a live tetrahedron, or kNone.

@@ -20,16 +20,47 @@ bool positive(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t
   return orient3d(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d)) == Sign::Positive;
 }
 
+namespace {
+
+bool isotropic(const Metric3& m) noexcept {
+  return m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[0] == m.m[5];
+}
+
+}  // namespace
+
+double quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma, const Metric3& mb,
+                  const Metric3& mc, const Metric3& md) noexcept {
+  if (isotropic(ma) && isotropic(mb) && isotropic(mc) && isotropic(md)) return shape_quality(a, b, c, d);
+  return shape_quality(a, b, c, d, ma, mb, mc, md);
+}
+
 double quality(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) noexcept {
   if (!positive(mesh, a, b, c, d)) return std::numeric_limits<double>::infinity();
-  return shape_quality(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d), mesh.metric(a), mesh.metric(b),
-                       mesh.metric(c), mesh.metric(d));
+  return quality_in(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d), mesh.metric(a), mesh.metric(b),
+                    mesh.metric(c), mesh.metric(d));
+}
+
+double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
+                     double bound) noexcept {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  if (!positive(mesh, a, b, c, d)) return kInf;
+  const Vec3 &pa = mesh.point(a), &pb = mesh.point(b), &pc = mesh.point(c), &pd = mesh.point(d);
+  if (isotropic(mesh.metric(a)) && isotropic(mesh.metric(b)) && isotropic(mesh.metric(c)) && isotropic(mesh.metric(d))) {
+    const double q = shape_quality(pa, pb, pc, pd);
+    return q < bound ? q : kInf;
+  }
+  double worst = 0.0;
+  for (const std::uint32_t v : {a, b, c, d}) {
+    worst = std::max(worst, shape_quality(pa, pb, pc, pd, mesh.metric(v)));
+    if (!(worst < bound)) return kInf;
+  }
+  return worst;
 }
 
 double tetrahedron_quality(const Mesh3& mesh, std::uint32_t t) noexcept {
   const auto v = mesh.tetrahedron(t);
-  return shape_quality(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), mesh.metric(v[0]),
-                       mesh.metric(v[1]), mesh.metric(v[2]), mesh.metric(v[3]));
+  return quality_in(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), mesh.metric(v[0]),
+                    mesh.metric(v[1]), mesh.metric(v[2]), mesh.metric(v[3]));
 }
 
 double edge_length(const Mesh3& mesh, std::uint32_t u, std::uint32_t v) noexcept {
@@ -43,9 +74,13 @@ bool is_locked_facet(const Mesh3& mesh, std::uint32_t h) noexcept {
 }
 
 bool is_free_edge(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& shell,
-                  std::vector<std::uint32_t>& ring) {
+                  std::vector<std::uint32_t>& ring, std::uint32_t hint) {
   if (a == Mesh3::kInfinite || b == Mesh3::kInfinite || mesh.is_constrained_edge(a, b)) return false;
-  if (!mesh.shell(a, b, shell, &ring)) return false;
+  if (hint != Mesh3::kNone) {
+    mesh.shell_at(hint, a, b, shell, &ring);
+  } else if (!mesh.shell(a, b, shell, &ring)) {
+    return false;
+  }
   const int r = mesh.ref(shell.front());
   for (std::size_t k = 0; k < shell.size(); ++k) {
     const std::uint32_t t = shell[k];
@@ -66,8 +101,7 @@ bool is_free_vertex(const Mesh3& mesh, std::uint32_t v, std::vector<std::uint32_
     if (!mesh.in_domain(t) || mesh.ref(t) != r) return false;
     for (std::uint32_t i = 0; i < 4; ++i) {
       const std::uint32_t w = mesh.vertex(t, i);
-      if (w == v) continue;
-      if (mesh.is_constrained(Mesh3::facet(t, i)) || mesh.is_constrained_edge(v, w)) return false;
+      if (w != v && mesh.is_constrained(Mesh3::facet(t, i))) return false;
     }
   }
   return true;

@@ -13,9 +13,18 @@
 
 namespace dtlab::optimize3d_detail {
 
+// Q_K (kernel/quality.hpp) of the tetrahedron (a, b, c, d) of points, in the four metrics (the
+// worst). Q_K is invariant under scaling, so in isotropic metrics (h^-2 I, whatever h) it is the
+// Euclidean Q_K: computed once instead of four times.
+double quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma, const Metric3& mb,
+                  const Metric3& mc, const Metric3& md) noexcept;
 // Q_K (kernel/quality.hpp) of the tetrahedron (a, b, c, d) of vertex ids, in their metrics
 // (the worst over the four); +infinity when it is not positive (exact orient3d).
 double quality(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) noexcept;
+// quality(), or +infinity as soon as one vertex metric's value reaches `bound` (a candidate that
+// cannot be accepted costs one metric instead of four).
+double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
+                     double bound) noexcept;
 // Q_K of the live finite tetrahedron t.
 double tetrahedron_quality(const Mesh3& mesh, std::uint32_t t) noexcept;
 // Metric length of the edge uv (kernel/metric.hpp edge_length).
@@ -29,11 +38,12 @@ bool is_locked_facet(const Mesh3& mesh, std::uint32_t h) noexcept;
 // Whether edge ab may be removed (its shell retriangulated, split or collapsed): not a
 // constrained edge, every tetrahedron of its shell in the domain with one reference, no facet
 // of the shell (those holding ab) constrained. `shell` and `ring` receive Mesh3::shell's output.
+// `hint`: a live tetrahedron with edge ab (saves the search for one), or kNone.
 bool is_free_edge(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& shell,
-                  std::vector<std::uint32_t>& ring);
+                  std::vector<std::uint32_t>& ring, std::uint32_t hint = Mesh3::kNone);
 // Whether v may be moved or removed: live, neither kFixed nor kOnBoundary, every tetrahedron
-// around it in the domain with one reference, no constrained facet or edge at it. `ball`
-// receives Mesh3::ball when true.
+// around it in the domain with one reference, no constrained facet at it (a constrained edge at
+// v would make it kOnBoundary: mesh3.hpp). `ball` receives Mesh3::ball when true.
 bool is_free_vertex(const Mesh3& mesh, std::uint32_t v, std::vector<std::uint32_t>& ball);
 
 // A tetrahedron to create: positive, finite, with its reference.

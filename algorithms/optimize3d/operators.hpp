@@ -59,8 +59,9 @@ bool try_face_swap(Mesh3& mesh, std::uint32_t h, double margin = kImprovementMar
 // new worst is below the shell's (margin). False when ab is no free edge (constrained, a shell
 // facet constrained, the shell leaving the domain or crossing regions) or no triangulation is
 // valid and better.
+// `hint`: a live tetrahedron with edge ab, or kNone.
 bool try_shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin = kImprovementMargin3,
-                              std::vector<std::uint32_t>* created = nullptr);
+                              std::vector<std::uint32_t>* created = nullptr, std::uint32_t hint = Mesh3::kNone);
 
 struct SwapPass3Result {
   std::uint64_t face_swaps = 0;

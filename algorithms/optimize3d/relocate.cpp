@@ -92,7 +92,7 @@ bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, cons
     const Metric3 metric = field ? field(moved) : mesh.metric(v);
     double after = 0.0;
     for (const auto& f : facets) {
-      after = std::max(after, shape_quality(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved,
+      after = std::max(after, quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved,
                                             mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]), metric));
       if (!(after < before * (1.0 - options.margin))) break;
     }

@@ -20,9 +20,9 @@ namespace dtlab {
 using namespace optimize3d_detail;
 
 bool try_shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin,
-                              std::vector<std::uint32_t>* created) {
+                              std::vector<std::uint32_t>* created, std::uint32_t hint) {
   std::vector<std::uint32_t> shell, ring;
-  if (!is_free_edge(mesh, a, b, shell, ring)) return false;
+  if (!is_free_edge(mesh, a, b, shell, ring, hint)) return false;
   const std::uint32_t n = static_cast<std::uint32_t>(ring.size());
   if (n < 3 || n > kMaxShellSize) return false;
   const double before = worst_quality(mesh, shell);
@@ -31,10 +31,9 @@ bool try_shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, dou
   // The ring turns counter-clockwise seen from b: for i < j < k, (r_i, r_j, r_k, b) and
   // (r_i, r_k, r_j, a) are the two tetrahedra on triangle ijk.
   auto cost = [&](std::uint32_t i, std::uint32_t j, std::uint32_t k) {
-    const double qb = quality(mesh, ring[i], ring[j], ring[k], b);
+    const double qb = quality_below(mesh, ring[i], ring[j], ring[k], b, bound);
     if (!(qb < bound)) return kInf;
-    const double qa = quality(mesh, ring[i], ring[k], ring[j], a);
-    return qa < bound ? std::max(qa, qb) : kInf;
+    return std::max(qb, quality_below(mesh, ring[i], ring[k], ring[j], a, bound));
   };
   // best[i][k]: the min-max over triangulations of the sub-polygon r_i .. r_k; split[i][k] its apex.
   std::array<std::array<double, kMaxShellSize>, kMaxShellSize> best{};

@@ -45,9 +45,9 @@ std::uint32_t try_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const Me
         orient3d(mesh.point(a), m, mesh.point(c), mesh.point(d)) != Sign::Positive)
       return Mesh3::kNone;
     after = std::max({after,
-                      shape_quality(m, mesh.point(b), mesh.point(c), mesh.point(d), mm, mesh.metric(b), mesh.metric(c),
+                      quality_in(m, mesh.point(b), mesh.point(c), mesh.point(d), mm, mesh.metric(b), mesh.metric(c),
                                     mesh.metric(d)),
-                      shape_quality(mesh.point(a), m, mesh.point(c), mesh.point(d), mesh.metric(a), mm, mesh.metric(c),
+                      quality_in(mesh.point(a), m, mesh.point(c), mesh.point(d), mesh.metric(a), mm, mesh.metric(c),
                                     mesh.metric(d))});
   }
   if (after > std::max(before, options.quality_limit)) return Mesh3::kNone;

@@ -64,7 +64,7 @@ void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const M
           done = true;
         }
       for (std::uint32_t k = 0; k < 6 && !done; ++k)
-        if (try_shell_transformation(mesh, b.v[kEdges[k][0]], b.v[kEdges[k][1]], options.margin)) {
+        if (try_shell_transformation(mesh, b.v[kEdges[k][0]], b.v[kEdges[k][1]], options.margin, nullptr, b.t)) {
           ++stats.shell_transformations;
           done = true;
         }

@@ -61,7 +61,7 @@ SwapPass3Result swap_pass3(Mesh3& mesh, double margin, std::span<const std::uint
       }
     }
     for (std::uint32_t k = 0; k < 6 && !changed; ++k) {
-      if (try_shell_transformation(mesh, e.v[kEdges[k][0]], e.v[kEdges[k][1]], margin, &created)) {
+      if (try_shell_transformation(mesh, e.v[kEdges[k][0]], e.v[kEdges[k][1]], margin, &created, e.t)) {
         ++result.shell_transformations;
         changed = true;
       }
