@@ -68,6 +68,28 @@ def test_constrain_3d_cube(method):
     assert dtlab.quality(m)["volume"] == pytest.approx(1.0)
 
 
+@pytest.mark.parametrize("method", [name for name, _ in dtlab.variants()["constrained2d"]])
+def test_constrain_2d_same_bytes_as_cli(cli, tmp_path, method):
+    write_poly(tmp_path / "in.poly", POINTS, SEGMENTS, MARKERS, HOLES)
+    subprocess.run([cli, "constrain", str(tmp_path / "in.poly"), "--method", method, "-o", str(tmp_path / "cli.mesh")],
+                   check=True, capture_output=True)
+    dtlab.constrain(POINTS, SEGMENTS, markers=MARKERS, holes=HOLES, method=method).write(tmp_path / "py.mesh")
+    assert (tmp_path / "py.mesh").read_bytes() == (tmp_path / "cli.mesh").read_bytes()
+
+
+@pytest.mark.parametrize("method", [name for name, _ in dtlab.variants()["constrained3d"]])
+def test_constrain_3d_same_bytes_as_cli(cli, tmp_path, method):
+    inner = CUBE * 0.5 + 0.25 + np.array([0.01, 0.02, 0.03])
+    points, triangles = np.vstack([CUBE, inner]), np.vstack([CUBE_TRIANGLES, CUBE_TRIANGLES + 8])
+    refs = np.repeat([1, 2], 12)
+    # The surface as a Medit file (no tetrahedra): the CLI's input.
+    dtlab.Mesh(points, np.zeros((0, 4), np.uint32), None, triangles, refs).write(tmp_path / "surface.mesh")
+    subprocess.run([cli, "constrain", str(tmp_path / "surface.mesh"), "--method", method, "-o", str(tmp_path / "cli.mesh")],
+                   check=True, capture_output=True)
+    dtlab.constrain(points, triangles=triangles, markers=refs, method=method).write(tmp_path / "py.mesh")
+    assert (tmp_path / "py.mesh").read_bytes() == (tmp_path / "cli.mesh").read_bytes()
+
+
 def write_poly(path, points, segments, markers, holes):
     lines = [f"{len(points)} 2 0 0"] + [f"{i} {x!r} {y!r}" for i, (x, y) in enumerate(points.tolist())]
     lines += [f"{len(segments)} 1"] + [f"{i} {a} {b} {k}" for i, ((a, b), k) in enumerate(zip(segments.tolist(), markers))]
