@@ -1,11 +1,15 @@
-// `dtlab optimize MESH -o OUT [--metric M.sol | --size H] [--stats]`: 2D mesh optimization
-// (algorithms/optimize2d, book §8) of a Medit .mesh or Triangle .ele: swaps, relocation,
-// collapses and splits toward a unit mesh in the metric, the boundary (the file's boundary edges
-// and Edges entries, constrained) kept as it is. The metric: H^-2 I (--size), one per vertex
-// from a .sol (--metric; the input mesh is its background, interpolated at moved and new
-// points), or, with neither, the mesh's own sizes (each vertex: the mean length of its edges), so
-// that only the shapes change. Prints the quality tables (mesh/mesh_quality.hpp) before and
-// after; --stats adds one JSON line with the operation counts and both reports.
+// `dtlab optimize MESH -o OUT [--metric M.sol | --size H] [--stats]`: mesh optimization (book
+// §8) of a 2D mesh (Medit .mesh or Triangle .ele: algorithms/optimize2d) or a 3D one (Medit .mesh
+// with Tetrahedra or TetGen .ele with its .node and .face: algorithms/optimize3d): swaps (face
+// swaps and shell transformations in 3D), relocation, collapses and splits toward a unit mesh in
+// the metric, the boundary (the file's boundary edges / triangles and its Edges / Triangles
+// entries, constrained) kept as it is. The metric: H^-2 I (--size), one per vertex from a .sol
+// (--metric; in 2D the input mesh is its background, interpolated at moved and new points; in 3D
+// moved points keep theirs and new ones interpolate), or, with neither, the mesh's own sizes
+// (each vertex: the mean length of its edges), so that mostly the shapes change. Prints the
+// quality tables (mesh/mesh_quality.hpp) before and after; --stats adds one JSON line with the
+// operation counts and both reports.
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -17,12 +21,14 @@
 
 #include "algorithms/mesh2d/control_space.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
+#include "algorithms/optimize3d/optimize3d.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/input_files.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit_sol.hpp"
 #include "mesh/mesh2_from_data.hpp"
+#include "mesh/mesh3_from_data.hpp"
 #include "mesh/mesh_quality.hpp"
 
 namespace dtlab::cli {
@@ -92,12 +98,115 @@ Snapshot snapshot(const Mesh2& mesh, const MeshData2& input) {
   return s;
 }
 
+// Each vertex's size in 3D: the mean Euclidean length of the tetrahedron edges at it.
+std::vector<Metric3> implied_metrics3(const MeshData3& data) {
+  std::vector<double> sum(data.vertices.size(), 0.0);
+  std::vector<std::uint32_t> count(data.vertices.size(), 0);
+  for (const auto& t : data.tetrahedra) {
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const std::uint32_t a = t[i], b = t[j];
+        if (a >= data.vertices.size() || b >= data.vertices.size()) continue;  // mesh3_from_data names it
+        const double l = norm(data.vertices[b] - data.vertices[a]);
+        sum[a] += l;
+        sum[b] += l;
+        ++count[a];
+        ++count[b];
+      }
+  }
+  std::vector<Metric3> metrics(data.vertices.size());
+  for (std::size_t v = 0; v < metrics.size(); ++v)
+    if (count[v] > 0 && sum[v] > 0.0) metrics[v] = Metric3::isotropic(sum[v] / count[v]);
+  return metrics;
+}
+
+struct Snapshot3 {
+  MeshData3 data;
+  std::vector<Metric3> metrics;
+};
+
+Snapshot3 snapshot3(const Mesh3& mesh, const MeshData3& input) {
+  Snapshot3 s;
+  std::vector<std::uint32_t> ids;
+  s.data = mesh.domain(&ids);
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    s.metrics.push_back(mesh.metric(ids[i]));
+    const std::uint32_t v = ids[i];
+    if (v < input.vertex_refs.size() && (mesh.flags(v) & Mesh3::kOnBoundary) != 0) s.data.vertex_refs[i] = input.vertex_refs[v];
+  }
+  // The input's Edges (ridges) that are still edges, with their references.
+  for (std::size_t e = 0; e < input.edges.size(); ++e) {
+    const auto [a, b] = input.edges[e];
+    const auto ia = std::lower_bound(ids.begin(), ids.end(), a), ib = std::lower_bound(ids.begin(), ids.end(), b);
+    if (ia == ids.end() || *ia != a || ib == ids.end() || *ib != b) continue;
+    s.data.edges.push_back({static_cast<std::uint32_t>(ia - ids.begin()), static_cast<std::uint32_t>(ib - ids.begin())});
+    s.data.edge_refs.push_back(input.edge_refs.empty() ? 0 : input.edge_refs[e]);
+  }
+  return s;
+}
+
+int run_optimize3(const OptimizeArgs& args) {
+  const MeshData3 input = read_mesh3(args.input);
+  std::vector<Metric3> metrics;
+  if (args.size_given) {
+    metrics.assign(input.vertices.size(), Metric3::isotropic(parse_size(args.size)));
+  } else if (!args.metric.empty()) {
+    const SolData sol = read_medit_sol(args.metric);
+    check_sol_matches(sol, input.vertices.size(), args.metric);
+    metrics = metrics3_from_sol(sol, args.metric);
+  } else {
+    metrics = implied_metrics3(input);
+  }
+  Mesh3 mesh;
+  try {
+    mesh = mesh3_from_data(input);
+  } catch (const InputError& e) {
+    throw InputError(args.input + ": " + e.what(), e.items());
+  }
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v)
+    if (!mesh.is_dead_vertex(v)) mesh.set_metric(v, metrics[v]);
+  MetricField3 field;
+  if (args.size_given) {
+    const Metric3 m = metrics.front();
+    field = [m](const Vec3&) { return m; };
+  }
+
+  const Snapshot3 before = snapshot3(mesh, input);
+  const QualityReport report_before = measure_quality(before.data.vertices, before.data.tetrahedra, before.metrics);
+  Optimize3dOptions options;
+  options.max_rounds = args.rounds;
+  options.collapses = options.splits = !args.shape_only;
+  const Optimize3dStats stats = optimize3d(mesh, options, field);
+  const Snapshot3 after = snapshot3(mesh, input);
+  const QualityReport report_after = measure_quality(after.data.vertices, after.data.tetrahedra, after.metrics);
+  if (!args.output.empty()) write_mesh3(args.output, after.data);
+
+  std::cout << "before:\n" << quality_table(report_before) << "after:\n" << quality_table(report_after);
+  std::cout << "operations: " << stats.face_swaps << " face swaps, " << stats.shell_transformations
+            << " shell transformations, " << stats.relocations << " relocations, " << stats.collapses << " collapses, "
+            << stats.splits << " splits in " << stats.rounds << " rounds (" << stats.stopped_by << "), "
+            << json_number(stats.seconds) << " s\n";
+  if (args.stats) {
+    std::ostringstream json;
+    json << "{\"input\":" << json_string(args.input) << ",\"face_swaps\":" << stats.face_swaps
+         << ",\"shell_transformations\":" << stats.shell_transformations << ",\"relocations\":" << stats.relocations
+         << ",\"collapses\":" << stats.collapses << ",\"splits\":" << stats.splits << ",\"rounds\":" << stats.rounds
+         << ",\"stopped_by\":" << json_string(stats.stopped_by) << ",\"worst_before\":" << json_number(stats.worst_before)
+         << ",\"mean_before\":" << json_number(stats.mean_before) << ",\"worst_after\":" << json_number(stats.worst_after)
+         << ",\"mean_after\":" << json_number(stats.mean_after) << ",\"tetrahedra_before\":" << stats.tetrahedra_before
+         << ",\"tetrahedra_after\":" << stats.tetrahedra_after << ",\"seconds\":" << json_number(stats.seconds)
+         << ",\"peak_rss_mb\":" << json_number(peak_rss_mb()) << ",\"before\":" << quality_json(report_before)
+         << ",\"after\":" << quality_json(report_after) << "}";
+    std::cout << json.str() << "\n";
+  }
+  return 0;
+}
+
 int run_optimize(const OptimizeArgs& args) {
-  if (args.input.empty()) throw InputError("give a MESH file (Medit .mesh, Triangle .ele)");
+  if (args.input.empty()) throw InputError("give a MESH file (Medit .mesh, Triangle .ele, TetGen .ele)");
   if (args.size_given && !args.metric.empty())
     throw InputError("--size " + args.size + ": give either --size or --metric");
-  if (input_dimension(args.input) != 2)
-    throw InputError(args.input + ": a 3D mesh; dtlab optimize works on 2D triangle meshes");
+  if (input_dimension(args.input) == 3) return run_optimize3(args);
   const MeshData2 input = read_mesh2(args.input);
   std::vector<Metric2> metrics;
   if (args.size_given) {
@@ -168,17 +277,19 @@ void add_optimize(CLI::App& app) {
   auto args = std::make_shared<OptimizeArgs>();
   CLI::App* cmd = app.add_subcommand(
       "optimize",
-      "Optimize a 2D triangle mesh in a metric (book §8): swaps, relocation, collapses and splits toward unit edges; "
-      "the boundary is kept");
-  cmd->add_option("mesh", args->input, "The mesh: Medit .mesh (Edges: its constrained edges) or Triangle .ele");
-  cmd->add_option("-o,--output", args->output, "Write the optimized mesh (Medit .mesh, or Triangle .ele/.node)");
+      "Optimize a triangle or tetrahedral mesh in a metric (book §8): swaps, relocation, collapses and splits toward "
+      "unit edges; the boundary is kept");
+  cmd->add_option("mesh", args->input,
+                  "The mesh: Medit .mesh (2D: Edges, its constrained edges; 3D: Tetrahedra, with Triangles its "
+                  "constrained faces), Triangle .ele (2D) or TetGen .ele (3D, with .node and .face)");
+  cmd->add_option("-o,--output", args->output, "Write the optimized mesh (Medit .mesh, or Triangle / TetGen .ele/.node)");
   cmd->add_option("--metric", args->metric, "Medit .sol with the metric (or size) at the mesh's vertices");
   CLI::Option* size = cmd->add_option("--size", args->size, "Optimize toward the isotropic size H (the metric H^-2 I)");
   cmd->add_option("--rounds", args->rounds, "At most this many rounds of the strategy (default 8)")
       ->check(CLI::Range(0u, 1000u));
   cmd->add_flag("--shape-only", args->shape_only, "No collapses or splits: swaps and relocation only");
   cmd->add_flag("--split-boundary", args->boundary_splits,
-                "Split long boundary edges too (the new points lie on them, their references kept)");
+                "Split long boundary edges too (2D only: the new points lie on them, their references kept)");
   cmd->add_flag("--valence", args->valence, "Add valence relaxation (degrees toward 6)");
   cmd->add_flag("--stats", args->stats, "Print one JSON object with the counts and both quality reports as the last line");
   cmd->callback([args, size] {

@@ -1,7 +1,7 @@
 # CTest tests of `dtlab optimize`: a mesh made by `dtlab constrain data/square_with_hole.poly` is
 # optimized toward a size (its boundary kept, or split with --split-boundary, references kept),
 # with its own sizes, and with a .sol metric; bad input (missing file, clockwise triangle,
-# non-manifold edge, bad --size, a .sol of the wrong count, a 3D mesh) fails with a message
+# non-manifold edge, bad --size, a .sol of the wrong count, a negative 3D tetrahedron) fails with a message
 # naming the file and the item. Each case runs cli/optimize_check.cmake in a scratch directory.
 if(NOT TARGET dtlab_cli)
   return()

@@ -141,11 +141,12 @@ elseif(CASE STREQUAL "bad_input")
   expect_failure("--size -1")
   run(optimize x.mesh -o y.mesh --size 1 --metric m.sol)
   expect_failure("either --size or --metric")
+  # A 3D mesh goes to the 3D optimizer (cli_optimize3d.cmake): a negative tetrahedron is refused there.
   file(WRITE "${WORK}/tet.mesh"
        "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
-       "Tetrahedra\n1\n1 2 3 4 0\nEnd\n")
+       "Tetrahedra\n1\n1 3 2 4 0\nEnd\n")
   run(optimize tet.mesh -o y.mesh)
-  expect_failure("tet\\.mesh" "3D")
+  expect_failure("tet\\.mesh")
 
 else()
   message(FATAL_ERROR "unknown CASE ${CASE}")
