@@ -166,13 +166,14 @@ VtuField quality_field(const MeshData3& m, int dimension) {
   return f;
 }
 
+// `path`: where to write (a scratch folder); args.out names the output in messages.
 void write_any(const std::string& path, const AnyMesh& m, const ConvertArgs& args) {
   const std::string ext = extension_of(path);
   if (args.binary && ext != "msh" && ext != "stl") {
-    throw InputError("--binary applies to .msh and .stl outputs (Medit binary is .meshb), not '" + path + "'");
+    throw InputError("--binary applies to .msh and .stl outputs (Medit binary is .meshb), not '" + args.out + "'");
   }
   if ((!args.sol.empty() || args.quality) && ext != "vtu") {
-    throw InputError("--sol and --quality add fields to a .vtu output, not to '" + path + "'");
+    throw InputError("--sol and --quality add fields to a .vtu output, not to '" + args.out + "'");
   }
   if (ext == "mesh" || ext == "meshb") {
     warn_names(m, ext == "mesh" ? "Medit .mesh" : "Medit .meshb");
@@ -225,7 +226,7 @@ void write_any(const std::string& path, const AnyMesh& m, const ConvertArgs& arg
     if (ext == "off") return write_off(path, s);
     return write_stl(path, s, args.binary ? StlEncoding::Binary : StlEncoding::Ascii);
   }
-  throw InputError("cannot write '" + path +
+  throw InputError("cannot write '" + args.out +
                    "': supported outputs are .mesh, .meshb (Medit), .msh (Gmsh 4.1), .vtu (VTK), .ele/.node "
                    "(Triangle, TetGen), .off, .stl");
 }

@@ -11,6 +11,7 @@ packages=(
   libtbb-dev libeigen3-dev libcli11-dev
   tetgen                               # peer in bench/ (Debian binary)
   libcgal-demo                         # real scanned point clouds and surfaces for tests
+  python3-meshio                       # reads what `dtlab convert` writes (cli_convert_read_by_meshio)
   # the Python module (python/) and its tests; they use Debian's /usr/bin/python3, not a pyenv one
   python3-dev pybind11-dev python3-numpy python3-pytest python3-hypothesis python3-scipy python3-meshio
 )
