@@ -5,7 +5,7 @@
 // (algorithms/mesh2d/edge_cuts.hpp, shared with 2D). Each candidate is filtered "by simply using a
 // grid" (§7.5): it is dropped when a vertex lies closer than filter_distance to it in the metric
 // at the candidate; otherwise it is inserted at once by the Delaunay kernel (§7.9) and joins the
-// grid. Passes repeat over the new mesh until no candidate is accepted (saturation), bounded.
+// grid. Passes repeat over the new tetrahedra until no candidate is accepted (saturation), bounded.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -100,6 +100,7 @@ void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dO
     if (!mesh.is_dead_vertex(v)) grid.insert(v, mesh.point(v));
   }
   std::vector<std::uint64_t> edges;
+  std::vector<std::uint32_t> born;  // per tetrahedron slot: 1 + the pass that made it (0: the empty mesh's)
   std::vector<Candidate> candidates;
   std::vector<double> cuts;
   std::uint32_t hint = ControlSpace3::kNoHint;
@@ -108,9 +109,13 @@ void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dO
       throw InputError("mesh3d: the edge method did not saturate within " + std::to_string(options.max_passes) +
                        " passes (" + std::to_string(stats.field_points) + " field points so far)");
     }
+    // Pass k > 0 looks only at the tetrahedra made in pass k - 1: an older edge was looked at
+    // before, and each of its candidates was filtered (the filter only grows stricter as vertices
+    // are added; the candidates depend on the edge's ends alone) or could not be inserted.
     edges.clear();
+    born.resize(mesh.tetrahedron_capacity(), 0);
     for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
-      if (!mesh.in_domain(t)) continue;
+      if (!mesh.in_domain(t) || (pass > 0 && born[t] != pass)) continue;
       for (std::uint32_t i = 0; i < 4; ++i)
         for (std::uint32_t j = i + 1; j < 4; ++j) edges.push_back(edge_key(mesh.vertex(t, i), mesh.vertex(t, j)));
     }
@@ -165,6 +170,8 @@ void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dO
                            " (max_vertices; is the size far smaller than the domain?)");
         }
         const std::uint32_t v = kernel.commit(p, mp);
+        born.resize(mesh.tetrahedron_capacity(), 0);
+        for (const std::uint32_t t : kernel.ball()) born[t] = pass + 1;
         stats.seconds_insertion += seconds_since(insertion);
         grid.insert(v, p);
         ++inserted;
