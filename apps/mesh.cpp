@@ -155,7 +155,8 @@ void add_mesh(CLI::App& app) {
       "mesh", "Mesh generation governed by sizes or a metric: 2D domains (book chapter 5), closed surfaces (chapter 7)");
   cmd->add_option("input", args->input,
                   "Domain: Triangle .poly (vertices, segments with markers, holes, regions) or Medit .mesh (Vertices, "
-                  "Edges with references); the segments are the boundary discretisation")
+                  "Edges with references); the segments are the boundary discretisation. A closed surface (.off .obj "
+                  ".stl .smesh, TetGen .poly or Medit .mesh in 3D) is meshed in volume (apps/mesh3.cpp)")
       ->required();
   cmd->add_option("-o,--output", args->output, "Write OUT.mesh (Medit): Vertices, Edges with markers, Triangles with regions");
   cmd->add_option("--size", args->size, "Uniform target size H (> 0)")->check(CLI::PositiveNumber);
