@@ -21,6 +21,39 @@ ReportCounts counts_of(const MeshCheckReport2& r) {
           {"exterior_segments", r.exterior_segments}};
 }
 
+// The triangle of `empty` whose interior meets the interior of the ccw triangle abc next to a,
+// just counter-clockwise of the direction ab; kNone where that is outside the hull. Exact
+// orient2d only: no point is constructed, so a sliver whose centroid would round across a
+// constrained edge (crossings of a segment soup round within ulps of each other) is placed
+// right. Once the output's edges follow the constrained ones, the interior of abc lies in one
+// region, and any triangle that meets it tells which.
+std::uint32_t triangle_beside(const Mesh2& empty, const Vec2& a, const Vec2& b, const Vec2& c, std::uint32_t& hint) {
+  const Mesh2::Location loc = empty.locate(a, hint);
+  if (loc.where == Mesh2::Where::Outside) return Mesh2::kNone;
+  if (loc.where == Mesh2::Where::Triangle) return loc.triangle;
+  if (loc.where == Mesh2::Where::Edge) {
+    // a inside the edge pq, whose triangle (left of p -> q) is triangle_of(h): abc lies on the
+    // side of c (b may lie on the edge's line; c cannot as well, abc being ccw).
+    const std::uint32_t h = loc.handle;
+    const Vec2 &p = empty.point(empty.origin(h)), &q = empty.point(empty.destination(h));
+    Sign side = orient2d(p, q, b);
+    if (side == Sign::Zero) side = orient2d(p, q, c);
+    const std::uint32_t t = side == Sign::Positive ? Mesh2::triangle_of(h) : Mesh2::triangle_of(empty.twin(h));
+    return empty.is_ghost(t) ? Mesh2::kNone : t;
+  }
+  // a at a vertex: the triangle (a, p, q) around it whose angle holds the direction ab, from ap
+  // included to aq excluded (each angle is below pi, so the two signs decide).
+  std::vector<std::uint32_t> ring;
+  empty.ball(loc.handle, ring);
+  for (const std::uint32_t h : ring) {
+    const std::uint32_t t = Mesh2::triangle_of(h);
+    if (empty.is_ghost(t)) continue;
+    const Vec2 &p = empty.point(empty.origin(h)), &q = empty.point(empty.destination(h));
+    if (orient2d(a, p, b) != Sign::Negative && orient2d(a, b, q) == Sign::Positive) return t;
+  }
+  return Mesh2::kNone;
+}
+
 }  // namespace
 
 MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, std::uint32_t first_number) {
@@ -93,26 +126,6 @@ MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, st
     return r;
   }
   const Mesh2 empty = empty_mesh(cdt);
-  std::uint32_t hint = 0;
-  while (hint < empty.triangle_capacity() && !empty.in_domain(hint)) ++hint;
-  for (std::uint32_t t = 0; t < out.triangles.size(); ++t) {
-    const auto& v = out.triangles[t];
-    if (std::max({v[0], v[1], v[2]}) >= out.vertices.size()) continue;
-    const Vec2 c = (1.0 / 3.0) * (out.vertices[v[0]] + out.vertices[v[1]] + out.vertices[v[2]]);
-    const Mesh2::Location loc = empty.locate(c, hint);
-    ++r.region_checks;
-    if (loc.where == Mesh2::Where::Outside || !empty.in_domain(loc.triangle)) {
-      r.add_problem("triangle " + std::to_string(t + 1) + " lies outside the domain");
-      continue;
-    }
-    hint = loc.triangle;
-    const int want = empty.ref(loc.triangle);
-    const int got = out.triangle_refs.empty() ? 0 : out.triangle_refs[t];
-    if (want != got) {
-      r.add_problem("triangle " + std::to_string(t + 1) + " has reference " + std::to_string(got) + ", its region " +
-                    std::to_string(want));
-    }
-  }
   // Constraints: every piece of an input segment in the empty mesh (split at input vertices and
   // crossings) with the domain on a side is a chain of output Edges, each step forward along the
   // piece, carrying the marker of one of the segments along it; pieces outside the domain are
@@ -123,6 +136,8 @@ MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, st
   for (const ConstrainedEdge2& e : cdt.constrained_edges) piece_markers[{e.a, e.b}].push_back(e.marker);
   for (const ConstrainedEdge2& e : cdt.shared_edges) piece_markers[{e.a, e.b}].push_back(e.marker);
   std::unordered_map<std::uint64_t, std::vector<int>> allowed;
+  // Chain vertices off their piece's line by rounding (a resampled boundary's cut points).
+  std::vector<std::uint8_t> rounded(out.vertices.size(), 0);
   std::vector<std::uint8_t> segment_seen(input.segments.size(), 0);
   for (const ConstrainedEdge2& e : cdt.constrained_edges) {
     const std::uint32_t h = empty.find_half_edge(e.a, e.b);
@@ -151,20 +166,23 @@ MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, st
       }
       std::uint32_t best = UINT32_MAX;
       double best_progress = 2.0;
+      bool best_exact = true;
       for (const std::uint32_t w : edge_adj[v]) {
         const Vec2 P = out.vertices[w];
         const double t = dot(P - A, dir) / dot(dir, dir);
         if (!(t > progress && t <= 1.0 + 1e-15)) continue;
         // On the piece: exactly, or (a cut point of a resampled boundary, rounded) within a few
         // ulps of its line.
-        const bool on = orient2d(A, B, P) == Sign::Zero ||
-                        std::fabs(cross(dir, P - A)) / norm(dir) <= 8.0 * 2.220446049250313e-16 * scale;
+        const bool exact = orient2d(A, B, P) == Sign::Zero;
+        const bool on = exact || std::fabs(cross(dir, P - A)) / norm(dir) <= 8.0 * 2.220446049250313e-16 * scale;
         if (on && t < best_progress) {
           best = w;
           best_progress = t;
+          best_exact = exact;
         }
       }
       if (best == UINT32_MAX) break;
+      if (!best_exact) rounded[best] = 1;
       ++r.chain_edges;
       auto& list = allowed[key(std::min(v, best), std::max(v, best))];
       list.insert(list.end(), markers.begin(), markers.end());
@@ -174,6 +192,37 @@ MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, st
     if (!reached) r.add_problem("segment " + name(e.segment) + " is not a chain of output edges");
   }
   for (std::size_t s = 0; s < input.segments.size(); ++s) r.exterior_segments += !segment_seen[s];
+  // Regions: where the three vertices are exact (input points, crossings, field points, points
+  // exactly on a piece), the triangle of the empty mesh beside the first one, found by exact
+  // orient2d alone; the centroid's where a vertex is a rounded cut point, which may lie outside
+  // the input's domain by ulps (the centroid of such a triangle, not a sliver, lies well inside).
+  std::uint32_t hint = 0;
+  while (hint < empty.triangle_capacity() && !empty.in_domain(hint)) ++hint;
+  for (std::uint32_t t = 0; t < out.triangles.size(); ++t) {
+    const auto& v = out.triangles[t];
+    if (std::max({v[0], v[1], v[2]}) >= out.vertices.size()) continue;
+    const Vec2 &a = out.vertices[v[0]], &b = out.vertices[v[1]], &c = out.vertices[v[2]];
+    if (orient2d(a, b, c) != Sign::Positive) continue;  // reported above
+    std::uint32_t beside = Mesh2::kNone;
+    if (!rounded[v[0]] && !rounded[v[1]] && !rounded[v[2]]) {
+      beside = triangle_beside(empty, a, b, c, hint);
+    } else {
+      const Mesh2::Location loc = empty.locate((1.0 / 3.0) * (a + b + c), hint);
+      if (loc.where != Mesh2::Where::Outside) beside = loc.triangle;
+    }
+    ++r.region_checks;
+    if (beside == Mesh2::kNone || !empty.in_domain(beside)) {
+      r.add_problem("triangle " + std::to_string(t + 1) + " lies outside the domain");
+      continue;
+    }
+    hint = beside;
+    const int want = empty.ref(beside);
+    const int got = out.triangle_refs.empty() ? 0 : out.triangle_refs[t];
+    if (want != got) {
+      r.add_problem("triangle " + std::to_string(t + 1) + " has reference " + std::to_string(got) + ", its region " +
+                    std::to_string(want));
+    }
+  }
   for (const auto& [k, markers] : allowed) {
     const int ref = edge_ref.at(k);
     if (std::find(markers.begin(), markers.end(), ref) == markers.end()) {

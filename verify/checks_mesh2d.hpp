@@ -8,8 +8,11 @@
 //    at vertices and crossings) that has the domain on a side is a chain of output Edges, each step
 //    forward, through vertices exactly on it (orient2d zero) or, for a resampled boundary's rounded
 //    cut points, within a few ulps of its line; each Edge with the marker of a segment along it;
-//  - regions: the centroid of each output triangle lies in the domain of the input's constrained
-//    Delaunay triangulation, in a triangle of the same region;
+//  - regions: each output triangle lies in the domain of the input's constrained Delaunay
+//    triangulation, in a triangle of the same region: the one its interior meets next to its
+//    first vertex, found by exact orient2d alone (so slivers between crossings that round within
+//    ulps are placed right), or, for a triangle with a resampled boundary's rounded cut point,
+//    the one holding its centroid;
 //  - coverage: the output's area equals the domain's (relative 1e-9: both are sums in doubles).
 #pragma once
 

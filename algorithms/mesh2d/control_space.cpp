@@ -62,10 +62,21 @@ Metric2 ControlSpace2::metric_at(const Vec2& p, std::uint32_t& hint) const {
   if (mesh_.is_ghost(t)) t = Mesh2::triangle_of(mesh_.twin(Mesh2::half_edge(t, 0)));
   hint = t;
   const std::array<std::uint32_t, 3> v{mesh_.vertex(t, 0), mesh_.vertex(t, 1), mesh_.vertex(t, 2)};
+  // At a vertex, its metric. (The walk may end in a sliver whose area is 0 in doubles, though
+  // positive exactly: its weights would be 0 / 0.)
+  if (loc.where == Mesh2::Where::Vertex) return metrics_[loc.handle];
   const Vec2 &a = mesh_.point(v[0]), &b = mesh_.point(v[1]), &c = mesh_.point(v[2]);
   // Barycentric weights in doubles, clamped to the triangle (a point outside the background takes
   // the metric at the nearest point of the triangle reached, up to the clamping).
   const double area = cross(b - a, c - a);
+  if (!(area > 0.0)) {
+    // Such a sliver elsewhere than at a vertex: the metric of its vertex nearest to p.
+    std::uint32_t k = 0;
+    for (std::uint32_t i = 1; i < 3; ++i) {
+      if (norm(mesh_.point(v[i]) - p) < norm(mesh_.point(v[k]) - p)) k = i;
+    }
+    return metrics_[v[k]];
+  }
   std::array<double, 3> w{cross(b - p, c - p) / area, cross(c - p, a - p) / area, 0.0};
   w[0] = std::clamp(w[0], 0.0, 1.0);
   w[1] = std::clamp(w[1], 0.0, 1.0);
