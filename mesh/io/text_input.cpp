@@ -78,7 +78,8 @@ std::string parse_real(std::string_view t, double& v) {
   if (names_non_finite(digits)) return " is not finite: " + quote(t);
   v = 0.0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-  if (ec == std::errc::result_out_of_range) return " " + quote(t) + " is out of the range of a double";
+  // Appended rather than "..." + quote(t): GCC 12 warns falsely (-Wrestrict) on the latter.
+  if (ec == std::errc::result_out_of_range) return std::string(" ").append(quote(t)).append(" is out of the range of a double");
   if (ec != std::errc() || end != digits.data() + digits.size()) return " is not a number: " + quote(t);
   if (!std::isfinite(v)) return " is not finite: " + quote(t);
   return {};
@@ -91,7 +92,7 @@ std::string parse_integer(std::string_view t, std::int64_t& v) {
   }
   v = 0;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-  if (ec == std::errc::result_out_of_range) return " " + quote(t) + " is too large";
+  if (ec == std::errc::result_out_of_range) return std::string(" ").append(quote(t)).append(" is too large");
   if (ec != std::errc() || end != digits.data() + digits.size()) return " is not an integer: " + quote(t);
   return {};
 }
