@@ -84,7 +84,8 @@ struct Relocate3Options {
 // boundary a regular tetrahedron in the facet's metric (the mean of its vertex metrics).
 Vec3 optimal_point(const Mesh3& mesh, std::uint32_t v, std::span<const std::uint32_t> ball);
 // Moves a free vertex v to P' = (1 - w) P + w P* (8.13), the first w from 1 down for which every
-// tetrahedron of the ball is positive and the ball's worst Q_K improves; its metric becomes
+// tetrahedron of the ball is positive and the ball's worst Q_K improves; failing that, the same
+// relaxation toward the ideal point of the ball's worst tetrahedron alone. Its metric becomes
 // `field` at P' (unchanged when the field is empty). True when v moved.
 bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options = {});
 // One sweep: every free vertex once, worst ball first. Returns the number of vertices moved.

@@ -9,7 +9,8 @@
 // four vertices near one plane is undone by a swap or a move, a needle or a cap by the collapse);
 // then the whole mesh: collapses of short edges and splits of long ones (toward unit edges in the
 // metric), the swap pass, relocation sweeps. Rounds repeat while the worst or the mean Q_K
-// improves by `round_improvement` (relative) or sizes still change, at most max_rounds.
+// improves by `round_improvement` (relative) or sizes still change (more than one collapse or
+// split per thousand vertices), at most max_rounds.
 // Deterministic: the same mesh, options and field give the same result, bit for bit.
 #pragma once
 

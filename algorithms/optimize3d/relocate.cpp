@@ -71,35 +71,50 @@ bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, cons
   std::vector<std::uint32_t> ball;
   if (!is_free_vertex(mesh, v, ball)) return false;
   const Vec3 p = mesh.point(v);
-  const double before = worst_quality(mesh, ball);
-  const Vec3 target = optimal_point(mesh, v, ball);
-  if (!std::isfinite(target.x) || !std::isfinite(target.y) || !std::isfinite(target.z)) return false;
   std::vector<std::array<std::uint32_t, 3>> facets;
   facets.reserve(ball.size());
-  for (const std::uint32_t t : ball) facets.push_back(opposite_facet(mesh, t, v));
-  double w = 1.0;
-  for (std::uint32_t k = 0; k < options.tries; ++k, w *= 0.5) {
-    const Vec3 moved = (1.0 - w) * p + w * target;
-    if (moved == p) break;
-    bool valid = true;
-    for (const auto& f : facets) {
-      if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved) != Sign::Positive) {
-        valid = false;
-        break;
+  double before = 0.0;
+  std::size_t worst = 0;
+  for (std::size_t k = 0; k < ball.size(); ++k) {
+    facets.push_back(opposite_facet(mesh, ball[k], v));
+    const double q = tetrahedron_quality(mesh, ball[k]);
+    if (q > before) {
+      before = q;
+      worst = k;
+    }
+  }
+  // P* first; when no relaxation of it improves the ball, the ideal point of the worst
+  // tetrahedron alone (the ball's worst is what the criterion asks to improve).
+  const auto& fw = facets[worst];
+  const Metric3 mw = mean_metric(mesh.metric(fw[0]), mesh.metric(fw[1]), mesh.metric(fw[2]));
+  const std::array<Vec3, 2> targets{optimal_point(mesh, v, ball),
+                                    ideal_apex(mesh.point(fw[0]), mesh.point(fw[1]), mesh.point(fw[2]), mw)};
+  for (const Vec3& target : targets) {
+    if (!std::isfinite(target.x) || !std::isfinite(target.y) || !std::isfinite(target.z)) continue;
+    double w = 1.0;
+    for (std::uint32_t k = 0; k < options.tries; ++k, w *= 0.5) {
+      const Vec3 moved = (1.0 - w) * p + w * target;
+      if (moved == p) break;
+      bool valid = true;
+      for (const auto& f : facets) {
+        if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved) != Sign::Positive) {
+          valid = false;
+          break;
+        }
       }
-    }
-    if (!valid) continue;
-    const Metric3 metric = field ? field(moved) : mesh.metric(v);
-    double after = 0.0;
-    for (const auto& f : facets) {
-      after = std::max(after, quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved,
-                                            mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]), metric));
-      if (!(after < before * (1.0 - options.margin))) break;
-    }
-    if (after < before * (1.0 - options.margin)) {
-      mesh.set_point(v, moved);
-      mesh.set_metric(v, metric);
-      return true;
+      if (!valid) continue;
+      const Metric3 metric = field ? field(moved) : mesh.metric(v);
+      double after = 0.0;
+      for (const auto& f : facets) {
+        after = std::max(after, quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved, mesh.metric(f[0]),
+                                           mesh.metric(f[1]), mesh.metric(f[2]), metric));
+        if (!(after < before * (1.0 - options.margin))) break;
+      }
+      if (after < before * (1.0 - options.margin)) {
+        mesh.set_point(v, moved);
+        mesh.set_metric(v, metric);
+        return true;
+      }
     }
   }
   return false;

@@ -46,9 +46,9 @@ std::uint32_t try_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const Me
       return Mesh3::kNone;
     after = std::max({after,
                       quality_in(m, mesh.point(b), mesh.point(c), mesh.point(d), mm, mesh.metric(b), mesh.metric(c),
-                                    mesh.metric(d)),
+                                 mesh.metric(d)),
                       quality_in(mesh.point(a), m, mesh.point(c), mesh.point(d), mesh.metric(a), mm, mesh.metric(c),
-                                    mesh.metric(d))});
+                                 mesh.metric(d))});
   }
   if (after > std::max(before, options.quality_limit)) return Mesh3::kNone;
   const int ref = mesh.ref(shell.front());
