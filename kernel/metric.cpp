@@ -316,13 +316,6 @@ Metric2 Metric2::from_sizes(const Vec2& e1, double h1, double h2) noexcept {
                   l1 * e1.y * e1.y + l2 * e2.y * e2.y}};
 }
 
-double Metric2::length(const Vec2& v) const noexcept {
-  const double q = m[0] * v.x * v.x + 2.0 * m[1] * v.x * v.y + m[2] * v.y * v.y;
-  return std::sqrt(std::max(0.0, q));  // q >= 0 up to rounding for a positive definite m
-}
-
-double Metric2::determinant() const noexcept { return m[0] * m[2] - m[1] * m[1]; }
-
 bool Metric2::is_positive_definite() const noexcept {
   for (double c : m) {
     if (!std::isfinite(c)) return false;
@@ -343,20 +336,6 @@ Metric3 Metric3::from_sizes(const Vec3& e1, const Vec3& e2, double h1, double h2
   e.values = {1.0 / (h1 * h1), 1.0 / (h2 * h2), 1.0 / (h3 * h3)};
   e.vectors = {e1, e2, e3};
   return from_eigen(e);
-}
-
-double Metric3::length(const Vec3& v) const noexcept {
-  const double q = m[0] * v.x * v.x + m[2] * v.y * v.y + m[5] * v.z * v.z +
-                   2.0 * (m[1] * v.x * v.y + m[3] * v.x * v.z + m[4] * v.y * v.z);
-  return std::sqrt(std::max(0.0, q));
-}
-
-double Metric3::determinant() const noexcept {
-  const double a = m[0], b = m[1], c = m[2], d = m[3], e = m[4], f = m[5];
-  // | a b d |
-  // | b c e |
-  // | d e f |
-  return a * (c * f - e * e) - b * (b * f - e * d) + d * (b * e - c * d);
 }
 
 bool Metric3::is_positive_definite() const noexcept {

@@ -21,7 +21,9 @@
 // These are measures and constructions: no combinatorial decision depends on them.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 
@@ -37,8 +39,13 @@ struct Metric2 {
   // Size h1 along the unit direction e1, h2 along its normal.
   static Metric2 from_sizes(const Vec2& e1, double h1, double h2) noexcept;
 
-  double length(const Vec2& v) const noexcept;  // sqrt(v^T M v)
-  double determinant() const noexcept;
+  // sqrt(v^T M v); inline: the optimizers evaluate it millions of times (same -ffp-contract=off
+  // everywhere, so the value does not depend on the caller).
+  double length(const Vec2& v) const noexcept {
+    const double q = m[0] * v.x * v.x + 2.0 * m[1] * v.x * v.y + m[2] * v.y * v.y;
+    return std::sqrt(std::max(0.0, q));  // q >= 0 up to rounding for a positive definite m
+  }
+  double determinant() const noexcept { return m[0] * m[2] - m[1] * m[1]; }
   // Strictly positive definite with finite components (m11 > 0, det > 0, checked in doubles).
   bool is_positive_definite() const noexcept;
 
@@ -52,8 +59,18 @@ struct Metric3 {
   // Sizes along the orthonormal directions e1, e2, e3 = e1 x e2.
   static Metric3 from_sizes(const Vec3& e1, const Vec3& e2, double h1, double h2, double h3) noexcept;
 
-  double length(const Vec3& v) const noexcept;
-  double determinant() const noexcept;
+  double length(const Vec3& v) const noexcept {
+    const double q = m[0] * v.x * v.x + m[2] * v.y * v.y + m[5] * v.z * v.z +
+                     2.0 * (m[1] * v.x * v.y + m[3] * v.x * v.z + m[4] * v.y * v.z);
+    return std::sqrt(std::max(0.0, q));
+  }
+  double determinant() const noexcept {
+    const double a = m[0], b = m[1], c = m[2], d = m[3], e = m[4], f = m[5];
+    // | a b d |
+    // | b c e |
+    // | d e f |
+    return a * (c * f - e * e) - b * (b * f - e * d) + d * (b * e - c * d);
+  }
   bool is_positive_definite() const noexcept;
 
   friend bool operator==(const Metric3&, const Metric3&) = default;

@@ -64,10 +64,8 @@ double squared_length(const Metric3& m, const Vec3& v) noexcept {
 
 double sign_factor(Sign s) noexcept { return s == Sign::Positive ? 1.0 : -1.0; }
 
-}  // namespace
-
-double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2& m) noexcept {
-  if (orient2d(a, b, c) == Sign::Zero) return kInfinity;
+// Q_K in m of a triangle known not to be flat.
+double oriented_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2& m) noexcept {
   const Vec2 ba = b - a, ca = c - a;
   const std::array<double, 3> e = {m.length(ba), m.length(ca), m.length(c - b)};
   const double h_max = std::max({e[0], e[1], e[2]});
@@ -76,8 +74,8 @@ double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2&
   return kQualityAlpha2d * h_max * (e[0] + e[1] + e[2]) / twice_area;
 }
 
-double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& m) noexcept {
-  if (orient3d(a, b, c, d) == Sign::Zero) return kInfinity;
+// Q_K in m of a tetrahedron known not to be flat.
+double oriented_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& m) noexcept {
   const Vec3 ba = b - a, ca = c - a, da = d - a, cb = c - b, db = d - b;
   const std::array<double, 6> e = {m.length(ba), m.length(ca), m.length(da),
                                    m.length(cb), m.length(db), m.length(d - c)};
@@ -89,15 +87,38 @@ double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
   return kQualityAlpha3d * h_max * twice_area / six_volume;
 }
 
+}  // namespace
+
+double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2& m) noexcept {
+  if (orient2d(a, b, c) == Sign::Zero) return kInfinity;
+  return oriented_quality(a, b, c, m);
+}
+
+double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& m) noexcept {
+  if (orient3d(a, b, c, d) == Sign::Zero) return kInfinity;
+  return oriented_quality(a, b, c, d, m);
+}
+
+// One orientation test, and a vertex metric equal to an earlier one measured once (the
+// isotropic uniform case: one measure instead of three or four); the same value as the maximum
+// of the one-metric measures.
 double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2& ma, const Metric2& mb,
                      const Metric2& mc) noexcept {
-  return std::max({shape_quality(a, b, c, ma), shape_quality(a, b, c, mb), shape_quality(a, b, c, mc)});
+  if (orient2d(a, b, c) == Sign::Zero) return kInfinity;
+  double q = oriented_quality(a, b, c, ma);
+  if (!(mb == ma)) q = std::max(q, oriented_quality(a, b, c, mb));
+  if (!(mc == ma) && !(mc == mb)) q = std::max(q, oriented_quality(a, b, c, mc));
+  return q;
 }
 
 double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
                      const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept {
-  return std::max({shape_quality(a, b, c, d, ma), shape_quality(a, b, c, d, mb), shape_quality(a, b, c, d, mc),
-                   shape_quality(a, b, c, d, md)});
+  if (orient3d(a, b, c, d) == Sign::Zero) return kInfinity;
+  double q = oriented_quality(a, b, c, d, ma);
+  if (!(mb == ma)) q = std::max(q, oriented_quality(a, b, c, d, mb));
+  if (!(mc == ma) && !(mc == mb)) q = std::max(q, oriented_quality(a, b, c, d, mc));
+  if (!(md == ma) && !(md == mb) && !(md == mc)) q = std::max(q, oriented_quality(a, b, c, d, md));
+  return q;
 }
 
 // The sign comes from the exact orientation, the magnitude from the rounded measures.

@@ -139,6 +139,14 @@ struct SplitPassResult {
 // around the new vertex; halves still too long join the queue.
 SplitPassResult split_pass(Mesh2& mesh, const MetricField2& field, const SplitOptions& options = {});
 
+// --- Swap with relocation (book §8.6.3, combined operators) -------------------------------------
+// Swaps h's diagonal, then relocates the quadrilateral's free vertices (try_relocate), and keeps
+// the result only when the worst Q_K over the balls of the four vertices strictly improves (by
+// `margin`); otherwise restores the mesh exactly. For the bad triangles that neither a swap nor a
+// relocation alone improves (a boundary vertex with too few triangles). True when kept.
+bool try_swap_relocate(Mesh2& mesh, std::uint32_t h, const MetricField2& field, const RelocateOptions& options = {},
+                       double margin = kImprovementMargin);
+
 // --- Valence relaxation (book §8.3.7; Frey and Field 1991) ---------------------------------------
 // Swaps the edges whose swap brings the degrees of the four vertices involved closer to their
 // targets (6 inside; on the boundary 1 + the number of 60-degree sectors of the domain angle, at

@@ -26,7 +26,7 @@ struct Optimize2dOptions {
   // Another round while the worst or the mean Q_K drops by more than this, relative.
   double round_improvement = 1e-3;
   // Triangles worse than this are treated one by one, worst first, at the start of each round.
-  double bad_quality = 2.0;
+  double bad_quality = 1.4;
   bool swaps = true;
   bool relocation = true;
   std::uint32_t relocation_sweeps = 2;  // per round
@@ -42,6 +42,7 @@ struct Optimize2dOptions {
 struct Optimize2dStats {
   std::uint64_t swaps = 0;  // quality swaps, including those after splits
   std::uint64_t relocations = 0;
+  std::uint64_t swap_relocations = 0;  // try_swap_relocate moves kept (bad triangles only)
   std::uint64_t collapses = 0;
   std::uint64_t splits = 0;
   std::uint64_t valence_swaps = 0;

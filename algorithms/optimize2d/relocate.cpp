@@ -27,11 +27,16 @@ constexpr double kMaxWeight = 1e6;
 // where m is the identity (x -> m^1/2 x) the apex is the midpoint plus sqrt(3)/2 times ab turned
 // by +90 degrees; mapped back by m^-1/2.
 Vec2 ideal_apex(const Vec2& a, const Vec2& b, const Metric2& m) {
+  const Vec2 mid = 0.5 * (a + b);
+  // An isotropic m scales and unscales: the Euclidean apex (no eigen-decomposition).
+  if (m.m[1] == 0.0 && m.m[0] == m.m[2]) {
+    const Vec2 d = b - a;
+    return mid + 0.8660254037844386 * Vec2{-d.y, d.x};
+  }
   const Metric2 root = power(m, 0.5);
   const Metric2 inverse_root = power(m, -0.5);
   const Vec2 d = transform(root, b - a);
   const Vec2 up{-d.y, d.x};
-  const Vec2 mid = 0.5 * (a + b);
   return mid + transform(inverse_root, 0.8660254037844386 * up);
 }
 

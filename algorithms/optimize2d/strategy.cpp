@@ -1,6 +1,7 @@
 // The optimization strategy of book §8.6.3 in 2D: classify the triangles by Q_K, treat the bad
 // ones worst first with the operator sequence their pathology calls for (a flat "cap" is cured
-// by swapping its longest edge or moving its vertices, a "needle" by collapsing its short edge:
+// by swapping its longest edge or moving its vertices, a topological defect by a swap and
+// relocations judged together, a "needle" by collapsing its short edge:
 // Frey and George, "Mesh Generation", §18.3), then apply each operator to the whole mesh (sizes
 // by collapse and split toward a unit mesh, swaps, relocation sweeps), and repeat while a round
 // still improves the worst or the mean quality significantly (§8.6.3's stopping criterion).
@@ -86,6 +87,16 @@ void treat_bad_triangles(Mesh2& mesh, const Optimize2dOptions& options, const Me
         if (try_relocate(mesh, v, field, options.relocate)) {
           ++stats.relocations;
           done = true;
+        }
+      }
+    }
+    if (done) continue;
+    if (options.swaps && options.relocation) {
+      for (const auto& e : edges) {
+        if (try_swap_relocate(mesh, e.second, field, options.relocate, options.swap_margin)) {
+          ++stats.swap_relocations;
+          done = true;
+          break;
         }
       }
     }

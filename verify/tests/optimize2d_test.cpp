@@ -188,6 +188,40 @@ Mesh2 square_with_short_edge(const Metric2& metric) {
   return mesh;
 }
 
+// A patch cut out of a front mesh of the square minus a disc (h = 0.01, scaled by 100): the
+// straight boundary vertex 1 = (0, 16) has only two triangles, both with a 32-degree angle at the
+// free vertex 7. No swap of the bad triangle's edges and no relocation of 7 improves it; the swap
+// of 7-2 followed by the relocation of 7 does (1 then has three triangles).
+MeshData2 boundary_vertex_with_two_triangles() {
+  MeshData2 d;
+  d.vertices = {{0, 18}, {0, 16}, {0, 14}, {2.21, 13.92}, {3.18, 15.69}, {2.23, 17.49}, {1.73, 19.0}, {1.32, 15.89}};
+  d.triangles = {{5, 6, 0}, {0, 1, 7}, {5, 7, 4}, {2, 3, 7}, {7, 5, 0}, {3, 4, 7}, {7, 1, 2}};
+  d.triangle_refs.assign(d.triangles.size(), 0);
+  return d;
+}
+
+double worst_q(const Mesh2& mesh) { return summarize_quality(mesh).worst; }
+
+TEST(Optimize2dSwapRelocate, CuresABoundaryVertexWithTwoTriangles) {
+  Mesh2 mesh = mesh2_from_data(boundary_vertex_with_two_triangles());
+  const double before = worst_q(mesh);
+  // Neither operator alone helps.
+  Mesh2 copy = mesh;
+  const std::uint32_t bad = Mesh2::triangle_of(half_edge_between(copy, 0, 1));
+  for (std::uint32_t i = 0; i < 3; ++i) EXPECT_FALSE(try_swap(copy, Mesh2::half_edge(bad, i)));
+  EXPECT_FALSE(try_relocate(copy, 7, {}));
+  EXPECT_TRUE(try_swap_relocate(mesh, half_edge_between(mesh, 7, 2), {}));
+  mesh.check();
+  EXPECT_NE(mesh.find_half_edge(1, 3), Mesh2::kNone);  // the new diagonal
+  EXPECT_LT(worst_q(mesh), 0.97 * before);  // 1.58 -> 1.49: the rest of the patch is fixed
+}
+
+TEST(Optimize2dSwapRelocate, RestoresTheMeshWhenNothingImproves) {
+  Mesh2 mesh = mesh2_from_data(long_rhombus());  // no free vertex: refused before any change
+  EXPECT_FALSE(try_swap_relocate(mesh, half_edge_between(mesh, 0, 2), {}));
+  EXPECT_NE(mesh.find_half_edge(0, 2), Mesh2::kNone);
+}
+
 TEST(Optimize2dCollapse, ShortEdgeCollapses) {
   Mesh2 mesh = square_with_short_edge(Metric2::isotropic(0.8));
   const double area = domain_area(mesh);
@@ -466,6 +500,32 @@ RC_GTEST_PROP(Optimize2dProperties, EachSwapImprovesItsPair, ()) {
   RC_ASSERT(beside_domain);
   expect_kept(c.mesh, boundary, area);
   RC_ASSERT(std::max(triangle_q(c.mesh, t1), triangle_q(c.mesh, t2)) < before);
+}
+
+// Kept: valid, boundary and area unchanged, the worst Q_K over the mesh not worse (the balls it
+// judges hold every triangle it changed). Refused: the same points and triangles as before.
+RC_GTEST_PROP(Optimize2dProperties, SwapRelocateImprovesOrRestores, ()) {
+  RandomCase c = random_case();
+  const std::uint32_t h = *rc::gen::inRange<std::uint32_t>(0, 3 * c.mesh.triangle_capacity());
+  if (!c.mesh.in_domain(Mesh2::triangle_of(h))) return;
+  const Boundary boundary = boundary_of(c.mesh);
+  const double area = domain_area(c.mesh);
+  const double before = worst_q(c.mesh);
+  const MeshData2 old = c.mesh.domain();
+  if (try_swap_relocate(c.mesh, h, c.field)) {
+    expect_kept(c.mesh, boundary, area);
+    RC_ASSERT(worst_q(c.mesh) <= before);
+  } else {
+    c.mesh.check();
+    const MeshData2 now = c.mesh.domain();
+    RC_ASSERT(now.vertices == old.vertices);
+    auto sorted = [](std::vector<std::array<std::uint32_t, 3>> t) {
+      for (auto& x : t) std::rotate(x.begin(), std::min_element(x.begin(), x.end()), x.end());
+      std::sort(t.begin(), t.end());
+      return t;
+    };
+    RC_ASSERT(sorted(now.triangles) == sorted(old.triangles));
+  }
 }
 
 RC_GTEST_PROP(Optimize2dProperties, RelocationImprovesEachBall, ()) {
