@@ -9,7 +9,7 @@
   linear_layer.sol     UGAWG's 2D "linear" field on it: h_x = 0.1, h_y = h0 + 2 (0.1 - h0)|y - 0.5|
   polar_layer.sol      UGAWG's 2D "polar-1" field: h_r = h0 + 2 (0.1 - h0)|r - 0.5|, h_t = 0.1
   size_map.sol         a scalar size field: h = 0.02 + 0.08 |x - 0.5|
-Usage: make_mesh2d_examples.py [OUT_DIR] [--spacing H] [--h0 H0]
+Usage: make_mesh2d_examples.py [OUT_DIR] [--spacing H] [--h0 H0] [--grid N]
 """
 import argparse
 import math
@@ -92,6 +92,8 @@ def main():
     ap.add_argument("out", nargs="?", default=os.path.dirname(os.path.abspath(__file__)))
     ap.add_argument("--spacing", type=float, default=0.02)
     ap.add_argument("--h0", type=float, default=0.001)
+    ap.add_argument("--grid", type=int, default=50,
+                    help="background grid cells per side (bundled: 50; the layers' benchmark: 200)")
     ap.add_argument("--only-square-disc", action="store_true", help="write square_disc.poly only")
     a = ap.parse_args()
     outer, circle = square_disc(a.spacing)
@@ -101,7 +103,7 @@ def main():
         return
     side, _ = square_disc(0.1)
     write_poly(os.path.join(a.out, "unit_square.poly"), [(side, 1)], [], "unit square, sides cut into 10")
-    verts, tris = grid(50)
+    verts, tris = grid(a.grid)
     write_mesh(os.path.join(a.out, "unit_square_bg.mesh"), verts, tris)
     h0 = a.h0
     write_sol(os.path.join(a.out, "linear_layer.sol"),
