@@ -26,7 +26,7 @@ triangulates them again (TetGen's default; -M turns it off); its row gives how m
 
   scripts/bench_constrained3d.py --build build
   scripts/bench_constrained3d.py --build build --runs 5 --cgal-meshes elephant.off,eight.off
-  scripts/bench_constrained3d.py --build build --update-readme
+  scripts/bench_constrained3d.py --build build --update-readme     # the table into docs/performance.md
   scripts/bench_constrained3d.py --build build-x --inputs build/bench/constrained3d_inputs --runs 1 --no-times
 """
 import argparse
@@ -158,7 +158,8 @@ def main():
                     help="dtlab runs without --merge-coplanar, with it, or both (default)")
     ap.add_argument("--inputs", help="the constrained3d_inputs binary (default BUILD/bench/constrained3d_inputs)")
     ap.add_argument("--no-times", action="store_true", help="leave the seconds columns out")
-    ap.add_argument("--update-readme", action="store_true")
+    ap.add_argument("--update-readme", action="store_true", help="write the table into docs/performance.md")
+    ap.add_argument("--readme", default=readme_tables.PERFORMANCE_MD, help="the file --update-readme writes")
     args = ap.parse_args()
 
     args.build = os.path.abspath(args.build)
@@ -221,7 +222,7 @@ def main():
         text = "\n".join(lines) + "\n"
         print(text)
         if args.update_readme:
-            readme_tables.write_block(os.path.join(ROOT, "README.md"), "constrained3d",
+            readme_tables.write_block(args.readme, "constrained3d",
                                       "3D constrained (Schönhardt family, CGAL's closed surfaces, a gmsh CAD part) beside TetGen",
                                       PRODUCER, text)
     finally:

@@ -16,11 +16,12 @@ and commit line comes first. The raw measurements go to a JSON file.
   scripts/bench_delaunay2d.py                                  # 10^5 and 10^6, all distributions
   scripts/bench_delaunay2d.py --build build-bench2 --large     # and 10^7 uniform
   scripts/bench_delaunay2d.py --sizes 100000 --distributions uniform,grid --runs 5
-  scripts/bench_delaunay2d.py --from-json run.json --update-readme   # table of an earlier run into README.md
+  scripts/bench_delaunay2d.py --from-json run.json --update-readme   # table of an earlier run into docs/performance.md
 
 --update-readme writes the table between <!-- perf-delaunay2d:begin --> and
-<!-- perf-delaunay2d:end --> in README.md, which sit inside the <!-- perf-table:begin/end -->
-block (inserted at its end if absent); nothing else in the file changes.
+<!-- perf-delaunay2d:end --> in docs/performance.md (--readme PATH: another file), which sit
+inside the <!-- perf-table:begin/end --> block (inserted at its end if absent); nothing else in
+the file changes.
 """
 import argparse
 import json
@@ -250,8 +251,8 @@ def main():
                     help="a run longer than this (seconds) is not repeated")
     ap.add_argument("--json", help="write the measurements here (default BUILD/bench_delaunay2d.json)")
     ap.add_argument("--from-json", help="print the table of an earlier run instead of measuring")
-    ap.add_argument("--update-readme", action="store_true", help="write the table into README.md")
-    ap.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    ap.add_argument("--update-readme", action="store_true", help="write the table into docs/performance.md")
+    ap.add_argument("--readme", default=readme_tables.PERFORMANCE_MD, help="the file --update-readme writes")
     args = ap.parse_args()
     args.dtlab = args.dtlab or os.path.join(args.build, "dtlab")
     args.cgal = args.cgal or os.path.join(args.build, "bench", "cgal_delaunay2d_run_bench")

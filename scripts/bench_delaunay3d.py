@@ -31,7 +31,8 @@ size as its floor, and TetGen cannot report its own. Without /usr/bin/time that 
   scripts/bench_delaunay3d.py --from-json build/bench_delaunay3d.json --update-readme
 
 --update-readme writes the table between <!-- perf-delaunay3d:begin --> and
-<!-- perf-delaunay3d:end --> in README.md (scripts/readme_tables.py), inside the perf-table block.
+<!-- perf-delaunay3d:end --> in docs/performance.md (scripts/readme_tables.py; --readme PATH:
+another file), inside the perf-table block.
 """
 import argparse
 import json
@@ -364,8 +365,8 @@ def main():
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--json", help="write the measurements here (default BUILD/bench_delaunay3d.json)")
     ap.add_argument("--from-json", help="print the table of an earlier run instead of measuring")
-    ap.add_argument("--update-readme", action="store_true", help="write the table into README.md")
-    ap.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    ap.add_argument("--update-readme", action="store_true", help="write the table into docs/performance.md")
+    ap.add_argument("--readme", default=readme_tables.PERFORMANCE_MD, help="the file --update-readme writes")
     args = ap.parse_args()
     resolve(args)
 

@@ -58,7 +58,8 @@ the min - max range, never a minimum. Every run goes to the JSON file (--json).
   scripts/bench_mesh2d.py --from-json a.json,b.json --update-readme    # the runs of both, one report
 
 --update-readme writes the tables between <!-- perf-mesh2d:begin --> and <!-- perf-mesh2d:end -->
-in README.md's "Meshing in 2D" section (inserted at that section's end if absent); nothing else
+in docs/performance.md's "Meshing in 2D" section (inserted at that section's end if absent;
+--readme PATH writes another file); nothing else
 changes.
 """
 import argparse
@@ -660,7 +661,7 @@ def markdown(data):
 
 
 def replace_section_block(readme, text):
-    """README with the perf-mesh2d block (in the "Meshing in 2D" section) holding text."""
+    """The page (docs/performance.md) with the perf-mesh2d block (in the "Meshing in 2D" section) holding text."""
     begin, end = readme_tables.markers(KEY)
     if begin not in readme:
         at = readme.index(SECTION)
@@ -750,8 +751,8 @@ def main():
     ap.add_argument("--json", help="write every run here (default BUILD/bench_mesh2d.json)")
     ap.add_argument("--from-json", help="print the tables of an earlier run instead of measuring (several files, "
                                         "comma-separated: their runs together)")
-    ap.add_argument("--update-readme", action="store_true", help="write the tables into README.md")
-    ap.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    ap.add_argument("--update-readme", action="store_true", help="write the tables into docs/performance.md")
+    ap.add_argument("--readme", default=readme_tables.PERFORMANCE_MD, help="the file --update-readme writes")
     args = ap.parse_args()
     args.dtlab = os.path.abspath(args.dtlab or os.path.join(args.build, "dtlab"))
 

@@ -163,8 +163,8 @@ def main():
     ap.add_argument("--filter", default="", help="--benchmark_filter for the run")
     ap.add_argument("--dists", default="random,near,degenerate", help="distributions shown in the caller tables")
     ap.add_argument("--update-readme", action="store_true",
-                    help="also write the tables between <!-- perf-predicates:begin/end --> in README.md")
-    ap.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+                    help="also write the tables between <!-- perf-predicates:begin/end --> in docs/performance.md")
+    ap.add_argument("--readme", default=readme_tables.PERFORMANCE_MD, help="the file --update-readme writes")
     args = ap.parse_args()
 
     if args.json:

@@ -20,7 +20,7 @@ and writes OUT/ (default BUILD/bench-report):
   *.png        elements per minute against n (log axes, one line per variant and peer), bytes per
                element against n, ns per predicate call (matplotlib, Debian's python3-matplotlib)
   report.json  every measurement, from which --from-report rebuilds report.md, the plots and the
-               README tables
+               tables of docs/performance.md
 Progress goes to stderr. Missing binaries are built first (cmake, Release, benchmarks on), so
 the command runs from a fresh clone.
 
@@ -29,7 +29,8 @@ the command runs from a fresh clone.
   scripts/bench_report.py --size large                 # adds 10^7 points
   scripts/bench_report.py --from-report build/bench-report --update-readme
 
---update-readme writes the predicate, 2D and 3D tables of the report into README.md, each between
+--update-readme writes the predicate, 2D and 3D tables of the report into docs/performance.md (--readme
+PATH: another file), each between
 its own markers inside the perf-table block (scripts/readme_tables.py), and nothing else.
 Why a script under scripts/ and not bench/: it drives the other benchmark scripts of this folder
 (bench_predicates_table.py, bench_delaunay2d.py, bench_delaunay3d.py) as modules, and bench/
@@ -47,6 +48,7 @@ import sys
 import bench_delaunay2d as d2
 import bench_delaunay3d as d3
 import bench_predicates_table as pt
+import readme_tables
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SEED = 1
@@ -607,8 +609,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2, help="build jobs when building")
     ap.add_argument("--no-build", action="store_true", help="fail instead of building missing binaries")
     ap.add_argument("--from-report", help="rebuild report.md and plots of an earlier report directory")
-    ap.add_argument("--update-readme", action="store_true", help="write the report's tables into README.md")
-    ap.add_argument("--readme", default=os.path.join(ROOT, "README.md"))
+    ap.add_argument("--update-readme", action="store_true", help="write the report's tables into docs/performance.md")
+    ap.add_argument("--readme", default=readme_tables.PERFORMANCE_MD, help="the file --update-readme writes")
     args = ap.parse_args()
     args.build = os.path.abspath(args.build)
 

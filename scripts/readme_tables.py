@@ -1,13 +1,19 @@
-"""Writes one benchmark table into README.md, between its own markers, and nothing else.
+"""Writes one benchmark table into docs/performance.md, between its own markers, and nothing else.
 
-The README's performance section is one block, <!-- perf-table:begin --> ... <!-- perf-table:end -->,
-holding one sub-block per table: <!-- perf-KEY:begin --> ... <!-- perf-KEY:end --> (KEY is
-"predicates", "delaunay2d", "delaunay3d"). write_block replaces what lies between one KEY's
+The generated tables live in docs/performance.md (PERFORMANCE_MD; the README links it and holds
+only a hand-picked headline table). Its tables are one block,
+<!-- perf-table:begin --> ... <!-- perf-table:end -->, holding one sub-block per table: <!-- perf-KEY:begin --> ... <!-- perf-KEY:end --> (KEY is
+"predicates", "delaunay2d", "delaunay3d", "constrained3d"). write_block replaces what lies between one KEY's
 markers, inserting them first (with a heading, at the end of the perf-table block) if absent.
 Used by scripts/bench_predicates_table.py, bench_delaunay2d.py, bench_delaunay3d.py and
-bench_report.py, so that every table is written the same way.
+bench_constrained3d.py and bench_report.py, so that every table is written the same way; each
+takes --update-readme (the option's historical name) to write it and --readme PATH for another file.
 """
+import os
 import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PERFORMANCE_MD = os.path.join(ROOT, "docs", "performance.md")
 
 BLOCK = ("<!-- perf-table:begin -->", "<!-- perf-table:end -->")
 

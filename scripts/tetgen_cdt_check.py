@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Is a TetGen output constrained Delaunay? An exact check in rationals, for the comparison of
-Steiner point counts in README.md (a count means something only beside a CDT).
+Steiner point counts in docs/performance.md (a count means something only beside a CDT).
 
     scripts/tetgen_cdt_check.py OUT.1        # reads OUT.1.node, OUT.1.ele, OUT.1.face
 
