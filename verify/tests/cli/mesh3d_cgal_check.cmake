@@ -1,0 +1,52 @@
+# One case of the CLI tests declared in ../cli_mesh3d_cgal.cmake: `dtlab mesh` on a real surface of
+# Debian's CGAL data (libcgal-demo: data/meshes/NAME in ARCHIVE), extracted into WORK.
+#   cmake -DDTLAB=<dtlab binary> -DARCHIVE=<data.tar.gz> -DWORK=<scratch dir> -DCASE=<kind>:<file>[:<size>]
+#         [-DEXPECT=<regex>] -P mesh3d_cgal_check.cmake
+# kind "mesh": meshed (classical, or --size <size>) with --verify --stats: exit 0, the verifier's ok
+# line, at least 10 tetrahedra. kind "refuse": exit 1, stderr naming the file and matching EXPECT,
+# no output written.
+set(DTLAB_CLI_REQUIRED DTLAB ARCHIVE WORK CASE)
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake)
+
+string(REPLACE ":" ";" parts "${CASE}")
+list(GET parts 0 kind)
+list(GET parts 1 name)
+execute_process(COMMAND tar -xzf ${ARCHIVE} -C ${WORK} data/meshes/${name} RESULT_VARIABLE bad)
+if(bad)
+  message(FATAL_ERROR "could not extract data/meshes/${name} from ${ARCHIVE}")
+endif()
+set(surface ${WORK}/data/meshes/${name})
+
+if(kind STREQUAL "mesh")
+  set(size_args)
+  list(LENGTH parts n)
+  if(n GREATER 2)
+    list(GET parts 2 size)
+    set(size_args --size ${size})
+  endif()
+  run(mesh ${surface} -o out.mesh ${size_args} --verify --stats)
+  expect_success()
+  if(NOT out MATCHES "(^|\n)ok: ")
+    fail("no ok line from --verify")
+  endif()
+  string(REGEX MATCH "[^\n]+\n?$" json "${out}")
+  string(JSON tetrahedra GET "${json}" tetrahedra)
+  if(tetrahedra LESS 10)
+    fail("too few tetrahedra: ${tetrahedra}")
+  endif()
+  medit_section(${WORK}/out.mesh Triangles triangle_count frefs)
+  if(triangle_count LESS 4)
+    fail("no boundary triangles written")
+  endif()
+elseif(kind STREQUAL "refuse")
+  run(mesh ${surface} -o out.mesh)
+  if(NOT rc EQUAL 1)
+    fail("expected exit code 1")
+  endif()
+  expect_failure("${name}" "${EXPECT}")
+  if(EXISTS ${WORK}/out.mesh)
+    fail("a file was written for refused input")
+  endif()
+else()
+  fail("unknown case ${CASE}")
+endif()
