@@ -19,5 +19,6 @@ void add_optimize(CLI::App& app);
 void add_quality(CLI::App& app);
 void add_mesh(CLI::App& app);
 void add_convert(CLI::App& app);
+void add_plot(CLI::App& app);
 
 }  // namespace dtlab::cli
