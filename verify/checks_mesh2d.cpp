@@ -175,7 +175,9 @@ MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, st
         // ulps of its line.
         const bool exact = orient2d(A, B, P) == Sign::Zero;
         const bool on = exact || std::fabs(cross(dir, P - A)) / norm(dir) <= 8.0 * 2.220446049250313e-16 * scale;
-        if (on && t < best_progress) {
+        // A step exactly on the piece before one within ulps of it: crossings of a soup that round
+        // within ulps of each other put another piece's end that close, and taking it would stall.
+        if (on && (best == UINT32_MAX || (exact && !best_exact) || (exact == best_exact && t < best_progress))) {
           best = w;
           best_progress = t;
           best_exact = exact;

@@ -6,8 +6,9 @@
 //    (edges in one triangle) made of output Edges only;
 //  - constraints: every piece of an input segment in the input's constrained triangulation (split
 //    at vertices and crossings) that has the domain on a side is a chain of output Edges, each step
-//    forward, through vertices exactly on it (orient2d zero) or, for a resampled boundary's rounded
-//    cut points, within a few ulps of its line; each Edge with the marker of a segment along it;
+//    forward, through vertices exactly on it (orient2d zero; preferred) or, for a resampled
+//    boundary's rounded cut points, within a few ulps of its line; each Edge with the marker of a
+//    segment along it;
 //  - regions: each output triangle lies in the domain of the input's constrained Delaunay
 //    triangulation, in a triangle of the same region: the one its interior meets next to its
 //    first vertex, found by exact orient2d alone (so slivers between crossings that round within
