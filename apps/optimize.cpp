@@ -26,6 +26,7 @@
 #include "apps/input_files.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
+#include "mesh/implied_metrics.hpp"
 #include "mesh/io/medit_sol.hpp"
 #include "mesh/mesh2_from_data.hpp"
 #include "mesh/mesh3_from_data.hpp"
@@ -57,28 +58,6 @@ double parse_size(const std::string& text) {
   return h;
 }
 
-// Each vertex's size: the mean Euclidean length of the triangle edges at it (each edge counted
-// from each triangle beside it: a mean weighted toward interior edges, which is what sizes are).
-std::vector<Metric2> implied_metrics(const MeshData2& data) {
-  std::vector<double> sum(data.vertices.size(), 0.0);
-  std::vector<std::uint32_t> count(data.vertices.size(), 0);
-  for (const auto& t : data.triangles) {
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t a = t[i], b = t[(i + 1) % 3];
-      if (a >= data.vertices.size() || b >= data.vertices.size()) continue;  // mesh2_from_data names it
-      const double l = norm(data.vertices[b] - data.vertices[a]);
-      sum[a] += l;
-      sum[b] += l;
-      ++count[a];
-      ++count[b];
-    }
-  }
-  std::vector<Metric2> metrics(data.vertices.size());
-  for (std::size_t v = 0; v < metrics.size(); ++v)
-    if (count[v] > 0 && sum[v] > 0.0) metrics[v] = Metric2::isotropic(sum[v] / count[v]);
-  return metrics;
-}
-
 // The domain as a file, with the metric of each of its vertices, and the input's vertex
 // references kept for the boundary vertices (never moved or removed; the others are 0).
 struct Snapshot {
@@ -96,28 +75,6 @@ Snapshot snapshot(const Mesh2& mesh, const MeshData2& input) {
     if (v < input.vertex_refs.size() && (mesh.flags(v) & Mesh2::kOnBoundary) != 0) s.data.vertex_refs[i] = input.vertex_refs[v];
   }
   return s;
-}
-
-// Each vertex's size in 3D: the mean Euclidean length of the tetrahedron edges at it.
-std::vector<Metric3> implied_metrics3(const MeshData3& data) {
-  std::vector<double> sum(data.vertices.size(), 0.0);
-  std::vector<std::uint32_t> count(data.vertices.size(), 0);
-  for (const auto& t : data.tetrahedra) {
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) {
-        const std::uint32_t a = t[i], b = t[j];
-        if (a >= data.vertices.size() || b >= data.vertices.size()) continue;  // mesh3_from_data names it
-        const double l = norm(data.vertices[b] - data.vertices[a]);
-        sum[a] += l;
-        sum[b] += l;
-        ++count[a];
-        ++count[b];
-      }
-  }
-  std::vector<Metric3> metrics(data.vertices.size());
-  for (std::size_t v = 0; v < metrics.size(); ++v)
-    if (count[v] > 0 && sum[v] > 0.0) metrics[v] = Metric3::isotropic(sum[v] / count[v]);
-  return metrics;
 }
 
 struct Snapshot3 {
@@ -155,7 +112,7 @@ int run_optimize3(const OptimizeArgs& args) {
     check_sol_matches(sol, input.vertices.size(), args.metric);
     metrics = metrics3_from_sol(sol, args.metric);
   } else {
-    metrics = implied_metrics3(input);
+    metrics = implied_metrics(input);
   }
   Mesh3 mesh;
   try {

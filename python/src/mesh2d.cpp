@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "algorithms/mesh2d/control_space.hpp"
+#include "mesh/implied_metrics.hpp"
 #include "algorithms/mesh2d/mesh2d.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
 #include "kernel/error.hpp"
@@ -171,27 +172,6 @@ py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, cons
   py::dict out = mesh_result(std::move(r.output), std::move(r.output_metrics), stats);
   check_signals();
   return out;
-}
-
-// The metric a vertex implies when none is given: the mean length of its edges (as the CLI).
-std::vector<Metric2> implied_metrics(const MeshData2& data) {
-  std::vector<double> sum(data.vertices.size(), 0.0);
-  std::vector<std::uint32_t> count(data.vertices.size(), 0);
-  for (const auto& t : data.triangles) {
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t a = t[i], b = t[(i + 1) % 3];
-      if (a >= data.vertices.size() || b >= data.vertices.size()) continue;  // mesh2_from_data names it
-      const double l = norm(data.vertices[b] - data.vertices[a]);
-      sum[a] += l;
-      sum[b] += l;
-      ++count[a];
-      ++count[b];
-    }
-  }
-  std::vector<Metric2> metrics(data.vertices.size());
-  for (std::size_t v = 0; v < metrics.size(); ++v)
-    if (count[v] > 0 && sum[v] > 0.0) metrics[v] = Metric2::isotropic(sum[v] / count[v]);
-  return metrics;
 }
 
 py::dict optimize(const py::handle& points_obj, const py::handle& cells_obj, const py::handle& cell_refs,
