@@ -21,6 +21,8 @@ class MeditReader {
  public:
   MeditReader(std::istream& in, const std::string& name) : in_(in, name) {}
 
+  const std::vector<std::string>& notes() const noexcept { return skipped_.notes(); }
+
   MeshData2 read() {
     bool have_version = false;
     bool have_dimension = false;
@@ -58,9 +60,12 @@ class MeditReader {
         if (have_triangles) in_.fail("second Triangles section");
         read_cells<3>("Triangles", "triangle", mesh_.triangles, mesh_.triangle_refs);
         have_triangles = true;
+      } else if (io::MeditSkippedSections::is_skipped(kw)) {
+        skipped_.skip(in_, kw);
       } else if (kw == "End") {
         in_.expect_tokens(1, "End");
         if (in_.next_line()) in_.fail("text after End: " + quote(in_.token(0)));
+        skipped_.finish(in_, {mesh_.vertices.size(), mesh_.edges.size(), mesh_.triangles.size(), 0});
         return std::move(mesh_);
       } else {
         io::medit_refuse_keyword(in_, kw, "2D reader", kKeptKeywords);
@@ -101,18 +106,22 @@ class MeditReader {
   }
 
   LineTokenizer in_;
+  io::MeditSkippedSections skipped_{2};
   MeshData2 mesh_;
 };
 
 }  // namespace
 
-MeshData2 read_medit2(std::istream& in, const std::string& file_name) {
-  return MeditReader(in, file_name).read();
+MeshData2 read_medit2(std::istream& in, const std::string& file_name, std::vector<std::string>* notes) {
+  MeditReader reader(in, file_name);
+  MeshData2 mesh = reader.read();
+  io::deliver_notes(reader.notes(), file_name, notes);
+  return mesh;
 }
 
-MeshData2 read_medit2(const std::string& path) {
+MeshData2 read_medit2(const std::string& path, std::vector<std::string>* notes) {
   std::ifstream in = io::open_for_reading(path);
-  return read_medit2(in, path);
+  return read_medit2(in, path, notes);
 }
 
 void write_medit2(std::ostream& out, const MeshData2& mesh) {

@@ -28,6 +28,7 @@ class Medit3Reader {
 
   const std::vector<std::array<std::uint32_t, 4>>& quads() const noexcept { return quads_; }
   const std::vector<int>& quad_refs() const noexcept { return quad_refs_; }
+  const std::vector<std::string>& notes() const noexcept { return skipped_.notes(); }
 
   MeshData3 read() {
     bool have_version = false;
@@ -70,9 +71,12 @@ class Medit3Reader {
       } else if (kw == "Tetrahedra") {
         begin_cells("Tetrahedra", have_vertices, have_tetrahedra);
         read_cells<4>("Tetrahedra", "tetrahedron", mesh_.tetrahedra, mesh_.tetrahedron_refs);
+      } else if (io::MeditSkippedSections::is_skipped(kw)) {
+        skipped_.skip(in_, kw);
       } else if (kw == "End") {
         in_.expect_tokens(1, "End");
         if (in_.next_line()) in_.fail("text after End: " + quote(in_.token(0)));
+        skipped_.finish(in_, {mesh_.vertices.size(), mesh_.edges.size(), mesh_.triangles.size(), quads_.size()});
         return std::move(mesh_);
       } else {
         if (quadrilaterals_) {
@@ -141,6 +145,7 @@ class Medit3Reader {
   }
 
   LineTokenizer in_;
+  io::MeditSkippedSections skipped_{3};
   bool quadrilaterals_ = false;
   MeshData3 mesh_;
   std::vector<std::array<std::uint32_t, 4>> quads_;
@@ -149,18 +154,22 @@ class Medit3Reader {
 
 }  // namespace
 
-MeshData3 read_medit3(std::istream& in, const std::string& file_name) {
-  return Medit3Reader(in, file_name).read();
+MeshData3 read_medit3(std::istream& in, const std::string& file_name, std::vector<std::string>* notes) {
+  Medit3Reader reader(in, file_name);
+  MeshData3 mesh = reader.read();
+  io::deliver_notes(reader.notes(), file_name, notes);
+  return mesh;
 }
 
-MeshData3 read_medit3(const std::string& path) {
+MeshData3 read_medit3(const std::string& path, std::vector<std::string>* notes) {
   std::ifstream in = io::open_for_reading(path);
-  return read_medit3(in, path);
+  return read_medit3(in, path, notes);
 }
 
-Plc3 read_medit3_surface(std::istream& in, const std::string& file_name) {
+Plc3 read_medit3_surface(std::istream& in, const std::string& file_name, std::vector<std::string>* notes) {
   Medit3Reader reader(in, file_name, true);
   MeshData3 mesh = reader.read();
+  io::deliver_notes(reader.notes(), file_name, notes);
   if (!mesh.tetrahedra.empty()) {
     throw InputError(file_name + " has " + std::to_string(mesh.tetrahedra.size()) +
                      " tetrahedra: a volume mesh, where a surface (Vertices, Triangles, Quadrilaterals, Edges) is "
@@ -185,9 +194,9 @@ Plc3 read_medit3_surface(std::istream& in, const std::string& file_name) {
   return plc;
 }
 
-Plc3 read_medit3_surface(const std::string& path) {
+Plc3 read_medit3_surface(const std::string& path, std::vector<std::string>* notes) {
   std::ifstream in = io::open_for_reading(path);
-  return read_medit3_surface(in, path);
+  return read_medit3_surface(in, path, notes);
 }
 
 void write_medit3(std::ostream& out, const MeshData3& mesh) {

@@ -11,25 +11,31 @@
 //
 // The layout rules are the 2D reader's (medit.hpp): a keyword's value on its line or the next,
 // '#' comments and blank lines anywhere, one entry per line, MeshVersionFormatted first,
-// Dimension before Vertices, Vertices before the elements, End last. Anything else is a
-// ParseError naming the line: Dimension 2 (a 2D mesh), another Medit keyword (Corners,
-// Hexahedra, ...), an unknown keyword, a count that does not match the entries, a vertex number
-// out of range, a coordinate outside kernel/coordinate_range.hpp, a tetrahedron that is not
+// Dimension before Vertices, Vertices before the elements, End last. The sections of feature
+// and attribute data (Corners, Ridges, Required*, Normals, NormalAtVertices, Tangents,
+// TangentAtVertices, Identifier, Geometry, as TetGen's -g output and MMG's carry) are read,
+// checked and dropped with a note each, as in medit.hpp. Anything else is a ParseError naming
+// the line: Dimension 2 (a 2D mesh), an element section the mesh cannot hold (Hexahedra, Prisms,
+// TetrahedraP2, ...), a skipped section's count or number out of range (a Ridges entry naming an
+// edge past Edges' count, ...), an unknown keyword, a count that does not match the entries, a
+// vertex number out of range, a coordinate outside kernel/coordinate_range.hpp, a tetrahedron that is not
 // positive (negative or flat, decided exactly), text after End, or a file that ends before End.
 #pragma once
 
 #include <istream>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "mesh/io/mesh_data3.hpp"
 #include "mesh/io/tetgen_poly.hpp"
 
 namespace dtlab {
 
-// `file_name` names the input in error messages.
-MeshData3 read_medit3(std::istream& in, const std::string& file_name);
-MeshData3 read_medit3(const std::string& path);
+// `file_name` names the input in error messages; `notes` as in read_medit2 (null: warnings on
+// std::cerr).
+MeshData3 read_medit3(std::istream& in, const std::string& file_name, std::vector<std::string>* notes = nullptr);
+MeshData3 read_medit3(const std::string& path, std::vector<std::string>* notes = nullptr);
 
 // A surface as a PLC (mesh/io/tetgen_poly.hpp): the same layout, with Quadrilaterals read too;
 // one facet of one polygon per element, triangles first, then quadrilaterals, then edges (2-corner
@@ -37,8 +43,8 @@ MeshData3 read_medit3(const std::string& path);
 // and simplicity of a quadrilateral are decided later, exactly
 // (algorithms/constrained3d/facet_triangulation.hpp). A file with Tetrahedra is an InputError (a
 // volume mesh, not a surface).
-Plc3 read_medit3_surface(std::istream& in, const std::string& file_name);
-Plc3 read_medit3_surface(const std::string& path);
+Plc3 read_medit3_surface(std::istream& in, const std::string& file_name, std::vector<std::string>* notes = nullptr);
+Plc3 read_medit3_surface(const std::string& path, std::vector<std::string>* notes = nullptr);
 
 // Throws InputError naming the element if a vertex number is out of range or a refs vector is
 // neither empty nor the size of its elements. Orientation is not checked here (the reader does).

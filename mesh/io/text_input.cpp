@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <limits>
 
 #include "kernel/coordinate_range.hpp"
@@ -181,14 +182,16 @@ int list_entry_number(const LineTokenizer& in, std::uint64_t i, int first, const
 
 namespace {
 
-constexpr std::array<std::string_view, 27> kMeditKeywords = {
+constexpr std::array<std::string_view, 33> kMeditKeywords = {
     "MeshVersionFormatted", "Dimension",        "Vertices",          "Edges",
     "Triangles",            "Tetrahedra",       "End",               "Corners",
     "Ridges",               "RequiredVertices", "RequiredEdges",     "RequiredTriangles",
     "Quadrilaterals",       "Hexahedra",        "Prisms",            "Pyramids",
     "Normals",              "NormalAtVertices", "Tangents",          "TangentAtVertices",
     "Geometry",             "Identifier",       "Crack",             "Polygons",
-    "SubDomainFromMesh",    "VertexOnGeometricVertex", "EdgeOnGeometricEdge"};
+    "SubDomainFromMesh",    "VertexOnGeometricVertex", "EdgeOnGeometricEdge", "RequiredQuadrilaterals",
+    "EdgesP2",              "TrianglesP2",      "QuadrilateralsQ2",  "TetrahedraP2",
+    "HexahedraQ2"};
 
 bool iequals(std::string_view a, std::string_view b) {
   auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
@@ -257,6 +260,136 @@ void medit_refuse_keyword(const LineTokenizer& in, std::string_view kw, std::str
     in.fail("expected a keyword, found the number " + quote(kw) + " (more entries than the section's count?)");
   }
   in.fail("unknown keyword " + quote(kw));
+}
+
+namespace {
+
+// What one entry of a skipped section holds: numbers into other sections, or reals.
+struct SkippedLayout {
+  std::string_view keyword;
+  std::array<std::string_view, 2> targets;  // "" when unused; "Reals": `dimension` reals
+  std::string_view what;                    // for the note
+};
+
+constexpr std::array<SkippedLayout, 12> kSkipped = {{
+    {"Corners", {"Vertices", ""}, "corner vertices"},
+    {"RequiredVertices", {"Vertices", ""}, "required vertices"},
+    {"Ridges", {"Edges", ""}, "ridge edges"},
+    {"RequiredEdges", {"Edges", ""}, "required edges"},
+    {"RequiredTriangles", {"Triangles", ""}, "required triangles"},
+    {"RequiredQuadrilaterals", {"Quadrilaterals", ""}, "required quadrilaterals"},
+    {"Normals", {"Reals", ""}, "normal vectors"},
+    {"Tangents", {"Reals", ""}, "tangent vectors"},
+    {"NormalAtVertices", {"Vertices", "Normals"}, "vertex normals"},
+    {"TangentAtVertices", {"Vertices", "Tangents"}, "vertex tangents"},
+    {"Identifier", {"String", ""}, "the mesh's name"},
+    {"Geometry", {"String", ""}, "the geometry file's name"},
+}};
+
+const SkippedLayout* skipped_layout(std::string_view kw) noexcept {
+  for (const SkippedLayout& s : kSkipped) {
+    if (s.keyword == kw) return &s;
+  }
+  return nullptr;
+}
+
+// Singular nouns of the numbered sections, for messages.
+std::string_view singular(std::string_view target) {
+  if (target == "Vertices") return "vertex";
+  if (target == "Edges") return "edge";
+  if (target == "Triangles") return "triangle";
+  if (target == "Quadrilaterals") return "quadrilateral";
+  if (target == "Normals") return "normal";
+  return "tangent";
+}
+
+}  // namespace
+
+bool MeditSkippedSections::is_skipped(std::string_view kw) noexcept { return skipped_layout(kw) != nullptr; }
+
+void MeditSkippedSections::skip(LineTokenizer& in, std::string_view keyword) {
+  // `keyword` views the current line, which the next line overwrites: keep a copy.
+  const std::string name(keyword);
+  const SkippedLayout& layout = *skipped_layout(name);
+  if (std::find(seen_.begin(), seen_.end(), name) != seen_.end()) in.fail("second " + name + " section");
+  seen_.push_back(name);
+  const std::uint64_t keyword_line = in.line();
+
+  if (layout.targets[0] == "String") {
+    // The string's tokens: the rest of the keyword's line, or the whole next line.
+    std::size_t first = 1;
+    if (in.size() == 1) {
+      if (!in.next_line() || is_medit_keyword(in.token(0))) in.fail_at(keyword_line, "missing string after " + name);
+      first = 0;
+    }
+    const std::string_view open = in.token(first);
+    const std::string_view close = in.token(in.size() - 1);
+    if (!open.starts_with('"') || !close.ends_with('"') || (first + 1 == in.size() && open.size() < 2)) {
+      in.fail(name + " must be followed by one \"quoted string\", found " + quote(open));
+    }
+    notes_.push_back("section " + name + " skipped (line " + std::to_string(keyword_line) + ": " +
+                     std::string(layout.what) + ")");
+    return;
+  }
+
+  const std::uint64_t n = medit_section_count(in, name);
+  const bool reals = layout.targets[0] == "Reals";
+  const std::size_t fields = reals ? static_cast<std::size_t>(dimension_) : (layout.targets[1].empty() ? 1 : 2);
+  std::array<Reference, 2> refs;
+  for (std::size_t k = 0; k < 2; ++k) refs[k] = {name, std::string(layout.targets[k]), 0, 0, 0};
+  for (std::uint64_t i = 0; i < n; ++i) {
+    medit_next_entry(in, name, i, n);
+    const std::string what = name + " entry " + std::to_string(i + 1);
+    if (reals) {
+      in.expect_tokens(fields, what + (dimension_ == 2 ? " (x y)" : " (x y z)"));
+      for (std::size_t k = 0; k < fields; ++k) in.real(k, what + " component " + std::to_string(k + 1));
+      continue;
+    }
+    in.expect_tokens(fields, what + (fields == 1 ? " (a number)" : " (vertex number, " +
+                                                                      std::string(singular(layout.targets[1])) +
+                                                                      " number)"));
+    for (std::size_t k = 0; k < fields; ++k) {
+      const std::string field = what + ": " + std::string(singular(layout.targets[k])) + " number";
+      const std::int64_t v = in.integer(k, field);
+      if (v < 1) in.fail(field + " " + std::to_string(v) + " is not positive (" + name + " numbers from 1)");
+      if (v > refs[k].max) refs[k] = {name, std::string(layout.targets[k]), v, in.line(), i + 1};
+    }
+  }
+  if (!reals) {
+    for (std::size_t k = 0; k < fields; ++k) {
+      if (refs[k].max > 0) references_.push_back(refs[k]);
+    }
+  }
+  if (name == "Normals") normals_ = n;
+  if (name == "Tangents") tangents_ = n;
+  notes_.push_back("section " + name + " skipped (" + std::to_string(n) + (n == 1 ? " entry" : " entries") +
+                   " from line " + std::to_string(keyword_line) + ": " + std::string(layout.what) + ")");
+}
+
+void MeditSkippedSections::finish(const LineTokenizer& in, const Counts& counts) const {
+  for (const Reference& r : references_) {
+    std::uint64_t count = 0;
+    if (r.target == "Vertices") count = counts.vertices;
+    if (r.target == "Edges") count = counts.edges;
+    if (r.target == "Triangles") count = counts.triangles;
+    if (r.target == "Quadrilaterals") count = counts.quadrilaterals;
+    if (r.target == "Normals") count = normals_;
+    if (r.target == "Tangents") count = tangents_;
+    if (static_cast<std::uint64_t>(r.max) > count) {
+      in.fail_at(r.line, r.section + " entry " + std::to_string(r.entry) + ": " + std::string(singular(r.target)) +
+                             " number " + std::to_string(r.max) + " out of range 1.." + std::to_string(count) +
+                             " (the file has " + std::to_string(count) + " " + r.target + ")");
+    }
+  }
+}
+
+void deliver_notes(const std::vector<std::string>& notes, const std::string& file_name,
+                   std::vector<std::string>* sink) {
+  if (sink != nullptr) {
+    sink->insert(sink->end(), notes.begin(), notes.end());
+    return;
+  }
+  for (const std::string& note : notes) std::cerr << "warning: " << file_name << ": " << note << "\n";
 }
 
 }  // namespace dtlab::io

@@ -102,4 +102,63 @@ void medit_next_entry(LineTokenizer& in, std::string_view kw, std::uint64_t i, s
 [[noreturn]] void medit_refuse_keyword(const LineTokenizer& in, std::string_view kw, std::string_view reader,
                                        std::span<const std::string_view> kept);
 
+// --- Medit sections the readers check and skip --------------------------------------------------
+//
+// Feature and attribute data that MeshData2 and MeshData3 do not keep (libMeshb's layouts):
+//   Corners, RequiredVertices          n, then n lines  vertex number
+//   Ridges, RequiredEdges              n, then n lines  edge number (into Edges)
+//   RequiredTriangles                  n, then n lines  triangle number
+//   RequiredQuadrilaterals             n, then n lines  quadrilateral number
+//   Normals, Tangents                  n, then n lines  `dimension` reals
+//   NormalAtVertices                   n, then n lines  vertex number, normal number
+//   TangentAtVertices                  n, then n lines  vertex number, tangent number
+//   Identifier, Geometry               one "quoted string", on the keyword's line or the next
+// Each is read in full and checked (its count against its entries, numbers from 1 in range of
+// what they number, reals finite), then dropped with a note such as "section Corners skipped
+// (8 entries from line 51: corner vertices)". The ranges are checked at End (finish), so the
+// sections may come in any order; an out-of-range number is a ParseError at its line.
+class MeditSkippedSections {
+ public:
+  explicit MeditSkippedSections(int dimension) : dimension_(dimension) {}
+
+  static bool is_skipped(std::string_view kw) noexcept;
+
+  // Reads section `keyword` (is_skipped) from its keyword line on; a second one is refused.
+  void skip(LineTokenizer& in, std::string_view keyword);
+
+  // The counts of the sections that the skipped ones number into; fails at the line of the first
+  // number out of range.
+  struct Counts {
+    std::uint64_t vertices = 0;
+    std::uint64_t edges = 0;
+    std::uint64_t triangles = 0;
+    std::uint64_t quadrilaterals = 0;
+  };
+  void finish(const LineTokenizer& in, const Counts& counts) const;
+
+  // One line per skipped section, in file order.
+  const std::vector<std::string>& notes() const noexcept { return notes_; }
+
+ private:
+  // The largest number of one field of a section, and where it was read.
+  struct Reference {
+    std::string section;
+    std::string target;  // "Vertices", "Edges", ..., "Normals", "Tangents"
+    std::int64_t max = 0;
+    std::uint64_t line = 0;
+    std::uint64_t entry = 0;
+  };
+  int dimension_;
+  std::vector<std::string> seen_;
+  std::vector<Reference> references_;
+  std::uint64_t normals_ = 0;
+  std::uint64_t tangents_ = 0;
+  std::vector<std::string> notes_;
+};
+
+// Hands a reader's notes to `sink`, or, when `sink` is null, writes each to std::cerr as
+// "warning: <file>: <note>", so that nothing a reader drops goes unsaid.
+void deliver_notes(const std::vector<std::string>& notes, const std::string& file_name,
+                   std::vector<std::string>* sink);
+
 }  // namespace dtlab::io

@@ -381,10 +381,77 @@ TEST(MeditMalformed, Keywords) {
   expect_parse_error(kHeader + "Vertices 0\nVertices 0\nEnd\n", kReadMedit, 4, "second Vertices");
   expect_parse_error(kHeader + "Foo 3\nEnd\n", kReadMedit, 3, "unknown keyword 'Foo'");
   expect_parse_error(kHeader + "vertices 3\nEnd\n", kReadMedit, 3, "case-sensitive");
-  expect_parse_error(kHeader + "Corners 0\nEnd\n", kReadMedit, 3, "not supported by the 2D reader");
+  expect_parse_error(kHeader + "Quadrilaterals 0\nEnd\n", kReadMedit, 3, "not supported by the 2D reader");
   expect_parse_error(kHeader + "End\nVertices 0\n", kReadMedit, 4, "text after End");
   expect_parse_error(kHeader + "End extra\n", kReadMedit, 3, "trailing");
   expect_parse_error(std::string("MeshVersionFormatted 2\nDim\x01\xff\n"), kReadMedit, 2, "\\x01\\xff");
+}
+
+// --- Medit 2D: feature and attribute sections, read, checked and skipped with a note -------------
+
+// Lines 1-6: three vertices of a triangle.
+const std::string kTriVertices = kHeader + "Vertices 3\n0 0 1\n1 0 2\n0 1 3\n";
+const std::string kSkippedBare2 = kTriVertices + "Edges 2\n1 2 4\n2 3 5\nTriangles 1\n1 2 3 6\nEnd\n";
+const std::string kSkippedFull2 = kTriVertices +  // lines 1-6
+                                  "Corners 3\n1\n2\n3\n"
+                                  "Edges 2\n1 2 4\n2 3 5\n"
+                                  "Triangles 1\n1 2 3 6\n"
+                                  "RequiredVertices 1\n2\n"
+                                  "Ridges 1\n2\n"
+                                  "RequiredEdges 2\n1\n2\n"
+                                  "RequiredTriangles 1\n1\n"
+                                  "Normals 1\n0 1\n"
+                                  "NormalAtVertices 1\n3 1\n"
+                                  "Tangents 2\n1 0\n0.6 0.8\n"
+                                  "TangentAtVertices 2\n1 2\n2 1\n"
+                                  "Identifier \"triangle\"\n"
+                                  "Geometry\n\"triangle.mesh\"\n"
+                                  "End\n";
+
+TEST(MeditSkipped, EverySectionReadCheckedAndNamedInANote) {
+  std::istringstream full(kSkippedFull2), bare(kSkippedBare2);
+  std::vector<std::string> notes, bare_notes;
+  expect_same_mesh(read_medit2(full, "input.txt", &notes), read_medit2(bare, "input.txt", &bare_notes));
+  EXPECT_TRUE(bare_notes.empty());
+  const std::vector<std::string> expected = {
+      "section Corners skipped (3 entries from line 7: corner vertices)",
+      "section RequiredVertices skipped (1 entry from line 16: required vertices)",
+      "section Ridges skipped (1 entry from line 18: ridge edges)",
+      "section RequiredEdges skipped (2 entries from line 20: required edges)",
+      "section RequiredTriangles skipped (1 entry from line 23: required triangles)",
+      "section Normals skipped (1 entry from line 25: normal vectors)",
+      "section NormalAtVertices skipped (1 entry from line 27: vertex normals)",
+      "section Tangents skipped (2 entries from line 29: tangent vectors)",
+      "section TangentAtVertices skipped (2 entries from line 32: vertex tangents)",
+      "section Identifier skipped (line 35: the mesh's name)",
+      "section Geometry skipped (line 36: the geometry file's name)"};
+  EXPECT_EQ(notes, expected);
+}
+
+TEST(MeditSkipped, MalformedCountsAndNumbersNameTheLine) {
+  // kTriVertices is lines 1-6.
+  expect_parse_error(kTriVertices + "Corners 2\n1\nEnd\n", kReadMedit, 9, "Corners count is 2 but only 1 entries");
+  expect_parse_error(kTriVertices + "Corners 1\n1\n3\nEnd\n", kReadMedit, 9, "more entries than the section's count");
+  expect_parse_error(kTriVertices + "Corners 2\n4\n1\nEnd\n", kReadMedit, 8,
+                     "Corners entry 1: vertex number 4 out of range 1..3");
+  expect_parse_error(kTriVertices + "Corners 1\n-1\nEnd\n", kReadMedit, 8, "not positive");
+  expect_parse_error(kTriVertices + "Corners 1\n1.5\nEnd\n", kReadMedit, 8, "Corners entry 1: vertex number");
+  expect_parse_error(kTriVertices + "RequiredEdges 1\n1\nEnd\n", kReadMedit, 8, "edge number 1 out of range 1..0");
+  expect_parse_error(kTriVertices + "Triangles 1\n1 2 3 0\nRequiredTriangles 1\n2\nEnd\n", kReadMedit, 10,
+                     "RequiredTriangles entry 1: triangle number 2 out of range 1..1");
+  expect_parse_error(kTriVertices + "Tangents 1\n1 0\nTangentAtVertices 1\n1 2\nEnd\n", kReadMedit, 10,
+                     "tangent number 2 out of range 1..1");
+  expect_parse_error(kTriVertices + "Normals 1\n0 0 1\nEnd\n", kReadMedit, 8, "trailing");
+  expect_parse_error(kTriVertices + "NormalAtVertices 1\n1\nEnd\n", kReadMedit, 8, "expected 2 fields, found 1");
+  expect_parse_error(kTriVertices + "Ridges 1\n1\nRidges 1\n1\nEnd\n", kReadMedit, 9, "second Ridges section");
+  expect_parse_error(kTriVertices + "Identifier\nEnd\n", kReadMedit, 7, "missing string after Identifier");
+}
+
+TEST(MeditSkipped, ElementsTheMeshCannotHoldStayRefused) {
+  for (const char* kw : {"Quadrilaterals", "Tetrahedra", "Hexahedra", "EdgesP2", "TrianglesP2"}) {
+    expect_parse_error(kTriVertices + kw + " 0\nEnd\n", kReadMedit, 7,
+                       std::string("'").append(kw).append("' is not supported by the 2D reader"));
+  }
 }
 
 // --- malformed input: Triangle --------------------------------------------------------------------

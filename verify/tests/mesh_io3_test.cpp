@@ -1,12 +1,16 @@
 // The 3D file formats (Medit 3D, TetGen .node/.ele/.face): write/read round trips keep every
 // bit, tetrahedra come out positive whatever the file's orientation, and every kind of
 // malformed input is a ParseError naming the file and the right line.
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <limits>
+#include <random>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -295,6 +299,131 @@ TEST(Medit3Malformed, Keywords) {
   expect_parse_error(kHeader + "tetrahedra 0\nEnd\n", kReadMedit3, 3, "case-sensitive: Tetrahedra");
   expect_parse_error(kHeader + "Foo 3\nEnd\n", kReadMedit3, 3, "unknown keyword 'Foo'");
   expect_parse_error(kHeader + "End\nVertices 0\n", kReadMedit3, 4, "text after End");
+}
+
+// --- Medit 3D: feature and attribute sections, read, checked and skipped with a note -------------
+
+// Every skipped section, Ridges before the Edges it numbers; the same mesh as kSkippedBare.
+const std::string kSkippedFull = kTetVertices +  // lines 1-7
+                                 "Ridges 1\n2\n"
+                                 "Edges 2\n1 2 5\n2 3 6\n"
+                                 "Triangles 1\n1 2 3 7\n"
+                                 "Tetrahedra 1\n1 2 3 4 8\n"
+                                 "Corners\n2\n1\n4\n"
+                                 "RequiredVertices 1\n3\n"
+                                 "RequiredEdges 2\n1\n2\n"
+                                 "RequiredTriangles 1\n1\n"
+                                 "RequiredQuadrilaterals 0\n"
+                                 "Normals 2\n0 0 1\n0.5 -0.5 0.7071\n"
+                                 "NormalAtVertices 2\n1 2\n4 1\n"
+                                 "Tangents 1\n1 0 0\n"
+                                 "TangentAtVertices 1\n2 1\n"
+                                 "Identifier\n\"a cube, corner\"\n"
+                                 "Geometry \"cube.mesh\"\n"
+                                 "End\n";
+const std::string kSkippedBare = kTetVertices + "Edges 2\n1 2 5\n2 3 6\nTriangles 1\n1 2 3 7\nTetrahedra 1\n1 2 3 4 8\nEnd\n";
+
+bool has_note(const std::vector<std::string>& notes, const std::string& text) {
+  return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) { return n.find(text) != std::string::npos; });
+}
+
+TEST(Medit3Skipped, EverySectionReadCheckedAndNamedInANote) {
+  std::istringstream full(kSkippedFull), bare(kSkippedBare);
+  std::vector<std::string> notes, bare_notes;
+  const MeshData3 m = read_medit3(full, "input.txt", &notes);
+  expect_same_mesh(m, read_medit3(bare, "input.txt", &bare_notes));
+  EXPECT_TRUE(bare_notes.empty());
+  ASSERT_EQ(notes.size(), 12u);
+  EXPECT_EQ(notes[0], "section Ridges skipped (1 entry from line 8: ridge edges)");
+  for (const char* text : {"section Corners skipped (2 entries from line 17", "section RequiredVertices skipped (1 entry",
+                           "section RequiredEdges skipped (2 entries", "section RequiredTriangles skipped (1 entry",
+                           "section RequiredQuadrilaterals skipped (0 entries", "section Normals skipped (2 entries",
+                           "section NormalAtVertices skipped (2 entries", "section Tangents skipped (1 entry",
+                           "section TangentAtVertices skipped (1 entry", "section Identifier skipped",
+                           "section Geometry skipped"}) {
+    EXPECT_TRUE(has_note(notes, text)) << text;
+  }
+}
+
+TEST(Medit3Skipped, WithoutASinkTheNotesAreWarningsOnStderr) {
+  std::istringstream full(kSkippedFull);
+  std::ostringstream err;
+  std::streambuf* old = std::cerr.rdbuf(err.rdbuf());
+  read_medit3(full, "input.txt");
+  std::cerr.rdbuf(old);
+  EXPECT_NE(err.str().find("warning: input.txt: section Corners skipped (2 entries"), std::string::npos) << err.str();
+}
+
+TEST(Medit3Skipped, SurfaceReaderSkipsThemToo) {
+  std::istringstream in(kHeader + "Vertices 4\n0 0 0 0\n1 0 0 0\n1 1 0 0\n0 1 0 0\nQuadrilaterals 1\n1 2 3 4 1\n"
+                                  "RequiredQuadrilaterals 1\n1\nCorners 1\n4\nEnd\n");
+  std::vector<std::string> notes;
+  const Plc3 plc = read_medit3_surface(in, "input.txt", &notes);
+  EXPECT_EQ(plc.facets.size(), 1u);
+  EXPECT_EQ(notes.size(), 2u);
+}
+
+TEST(Medit3Skipped, MalformedCountsAndNumbersNameTheLine) {
+  // kTetVertices is lines 1-7.
+  expect_parse_error(kTetVertices + "Corners 3\n1\n2\nEnd\n", kReadMedit3, 11, "Corners count is 3 but only 2 entries");
+  expect_parse_error(kTetVertices + "Corners 1\n1\n2\nEnd\n", kReadMedit3, 10, "more entries than the section's count");
+  expect_parse_error(kTetVertices + "Corners 2\n1\n5\nEnd\n", kReadMedit3, 10,
+                     "Corners entry 2: vertex number 5 out of range 1..4");
+  expect_parse_error(kTetVertices + "RequiredVertices 1\n0\nEnd\n", kReadMedit3, 9, "not positive");
+  expect_parse_error(kTetVertices + "Corners\nEnd\n", kReadMedit3, 8, "missing count after Corners");
+  expect_parse_error(kTetVertices + "Corners -1\nEnd\n", kReadMedit3, 8, "Corners count");
+  expect_parse_error(kTetVertices + "Corners 1\n1 2\nEnd\n", kReadMedit3, 9, "trailing");
+  expect_parse_error(kTetVertices + "Corners 1\n1\nCorners 0\nEnd\n", kReadMedit3, 10, "second Corners section");
+  // Numbers into Edges and Triangles are checked at End, at the line of the largest.
+  expect_parse_error(kTetVertices + "Ridges 2\n1\n3\nEdges 2\n1 2 0\n2 3 0\nEnd\n", kReadMedit3, 10,
+                     "Ridges entry 2: edge number 3 out of range 1..2");
+  expect_parse_error(kTetVertices + "RequiredTriangles 1\n1\nEnd\n", kReadMedit3, 9, "triangle number 1 out of range");
+  expect_parse_error(kTetVertices + "Normals 1\n0 0 1\nNormalAtVertices 1\n4 2\nEnd\n", kReadMedit3, 11,
+                     "NormalAtVertices entry 1: normal number 2 out of range 1..1");
+  expect_parse_error(kTetVertices + "TangentAtVertices 1\n9 1\nTangents 1\n1 0 0\nEnd\n", kReadMedit3, 9,
+                     "vertex number 9 out of range 1..4");
+  expect_parse_error(kTetVertices + "Normals 1\n0 1\nEnd\n", kReadMedit3, 9, "expected 3 fields, found 2");
+  expect_parse_error(kTetVertices + "Tangents 1\n0 nan 1\nEnd\n", kReadMedit3, 9, "not finite");
+  expect_parse_error(kTetVertices + "Identifier cube\nEnd\n", kReadMedit3, 8, "quoted string");
+  expect_parse_error(kTetVertices + "Geometry\nEnd\n", kReadMedit3, 8, "missing string after Geometry");
+}
+
+TEST(Medit3Skipped, ElementsTheMeshCannotHoldStayRefused) {
+  for (const char* kw : {"Hexahedra", "Prisms", "Pyramids", "Quadrilaterals", "TetrahedraP2", "EdgesP2"}) {
+    expect_parse_error(kTetVertices + kw + " 0\nEnd\n", kReadMedit3, 8,
+                       std::string("'").append(kw).append("' is not supported by the 3D reader"));
+  }
+}
+
+// TetGen's own Medit output (-g) carries Corners and Edges besides its tetrahedra.
+TEST(Medit3Skipped, ReadsTetGensOutputLikeItsNodeAndEle) {
+  if (std::system("command -v tetgen > /dev/null 2>&1") != 0) GTEST_SKIP() << "tetgen is not installed";
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("dtlab_medit3_tetgen_" + std::to_string(std::random_device{}()));
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(std::string(DTLAB_SOURCE_DIR) + "/data/quad_cube.off", dir / "quad_cube.off",
+                             std::filesystem::copy_options::overwrite_existing);
+  const std::string command = "cd '" + dir.string() + "' && tetgen -pq1.414 -g quad_cube.off > tetgen.log 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  std::vector<std::string> notes;
+  const MeshData3 medit = read_medit3((dir / "quad_cube.1.mesh").string(), &notes);
+  const MeshData3 tetgen = read_tetgen_mesh((dir / "quad_cube.1").string());
+  EXPECT_EQ(medit.vertices.size(), tetgen.vertices.size());
+  EXPECT_EQ(medit.tetrahedra.size(), tetgen.tetrahedra.size());
+  // The .mesh lists every face, boundary ones with their marker and interior ones with 0; the
+  // .face only the boundary.
+  EXPECT_EQ(static_cast<std::size_t>(std::count_if(medit.triangle_refs.begin(), medit.triangle_refs.end(),
+                                                   [](int r) { return r != 0; })),
+            tetgen.triangles.size());
+  EXPECT_GT(medit.tetrahedra.size(), 0u);
+  auto sorted = [](std::vector<std::array<std::uint32_t, 4>> tets) {
+    for (auto& t : tets) std::sort(t.begin(), t.end());
+    std::sort(tets.begin(), tets.end());
+    return tets;
+  };
+  EXPECT_EQ(sorted(medit.tetrahedra), sorted(tetgen.tetrahedra));
+  EXPECT_TRUE(has_note(notes, "section Corners skipped (")) << (notes.empty() ? "no notes" : notes[0]);
+  std::filesystem::remove_all(dir);
 }
 
 // --- TetGen .node / .ele / .face ---------------------------------------------------------------
