@@ -16,6 +16,7 @@ import argparse
 import json
 import os
 import sys
+import textwrap
 
 try:
     import matplotlib
@@ -93,10 +94,12 @@ def draw(runs, out):
     for path, data in runs:
         m = data.get("machine", {})
         captions.append(f"{os.path.basename(path)}: {m.get('cpu', 'unknown CPU')}, {m.get('cpus', '?')} CPUs, "
+                        f"load average {m.get('load_average', [float('nan')])[0]:.1f} at the start; "
                         f"{m.get('compiler', '')}; tree {m.get('commit', '?')}; minimum of {data.get('runs', '?')} "
                         f"run(s), seed {data.get('seed', '?')}; CGAL {m.get('cgal', 'not run')}")
-    fig.text(0.01, 0.005, "\n".join(captions), fontsize=6.5, color="#444444", va="bottom")
-    fig.tight_layout(rect=(0, 0.025 * len(runs) + 0.02, 1, 1))
+    lines = [line for c in captions for line in textwrap.wrap(c, 150)]
+    fig.text(0.01, 0.005, "\n".join(lines), fontsize=6.5, color="#444444", va="bottom")
+    fig.tight_layout(rect=(0, 0.016 * len(lines) + 0.01, 1, 1))
     fig.savefig(out, metadata={"Date": None} if out.endswith(".svg") else {"Software": None})
     plt.close(fig)
 
