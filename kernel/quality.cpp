@@ -30,10 +30,33 @@ double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
   return kQualityAlpha2d * h_max * (e[0] + e[1] + e[2]) / twice_area;
 }
 
+namespace {
+
+// max(edge_lengths(a, b, c, d)), bit for bit, with the norm (a three-term hypot) taken only of
+// the edges whose rounded squared length is within a relative 1e-9 of the largest: the others
+// are shorter beyond any rounding of either measure. Outside the range where the squares neither
+// overflow nor lose their relative precision, all six.
+double longest_edge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  const std::array<Vec3, 6> e{b - a, c - a, d - a, c - b, d - b, d - c};
+  std::array<double, 6> s;
+  double s_max = 0.0;
+  for (int i = 0; i < 6; ++i) {
+    s[i] = dot(e[i], e[i]);
+    s_max = std::max(s_max, s[i]);
+  }
+  const bool safe = s_max > 1e-280 && s_max < 1e280;
+  const double floor = safe ? s_max * (1.0 - 1e-9) : 0.0;
+  double h_max = 0.0;
+  for (int i = 0; i < 6; ++i)
+    if (!safe || s[i] >= floor) h_max = std::max(h_max, norm(e[i]));
+  return h_max;
+}
+
+}  // namespace
+
 double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
   if (orient3d(a, b, c, d) == Sign::Zero) return kInfinity;
-  const std::array<double, 6> e = edge_lengths(a, b, c, d);
-  const double h_max = *std::max_element(e.begin(), e.end());
+  const double h_max = longest_edge(a, b, c, d);
   const Vec3 ba = b - a, ca = c - a, da = d - a;
   // rho = |det| / (sum over the faces of |cross|).
   const double twice_area = norm(cross(ba, ca)) + norm(cross(ba, da)) + norm(cross(ca, da)) +

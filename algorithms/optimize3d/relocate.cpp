@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <vector>
 #include <utility>
 
 #include "algorithms/optimize3d/local.hpp"
@@ -34,8 +36,12 @@ std::array<std::uint32_t, 3> opposite_facet(const Mesh3& mesh, std::uint32_t t, 
 // The apex, on the positive side of (a, b, c), of the regular tetrahedron on the facet in m (its
 // edge the mean of the facet's three in m): in the space where m is the identity.
 Vec3 ideal_apex(const Vec3& a, const Vec3& b, const Vec3& c, const Metric3& m) {
-  const Metric3 root = power(m, 0.5);
-  const Metric3 inverse_root = power(m, -0.5);
+  // m = lambda I: power() decomposes nothing (no rotation, unit eigenvectors) and gives
+  // pow(lambda, p) I exactly; the same values without the eigen-decomposition.
+  const bool isotropic = m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[0] == m.m[5];
+  auto scalar = [](double l) { return Metric3{{l, 0.0, l, 0.0, 0.0, l}}; };
+  const Metric3 root = isotropic ? scalar(std::pow(m.m[0], 0.5)) : power(m, 0.5);
+  const Metric3 inverse_root = isotropic ? scalar(std::pow(m.m[0], -0.5)) : power(m, -0.5);
   const Vec3 x = transform(root, a), y = transform(root, b), z = transform(root, c);
   const Vec3 n = cross(y - x, z - x);
   const double area2 = norm(n);
@@ -53,12 +59,16 @@ Metric3 mean_metric(const Metric3& a, const Metric3& b, const Metric3& c) {
 
 }  // namespace
 
-Vec3 optimal_point(const Mesh3& mesh, std::uint32_t v, std::span<const std::uint32_t> ball) {
+namespace {
+
+// optimal_point with the ball's current Q_K already known (quality[k] of ball[k]).
+Vec3 optimal_point_of(const Mesh3& mesh, std::uint32_t v, std::span<const std::uint32_t> ball,
+                      std::span<const double> quality) {
   Vec3 sum{0.0, 0.0, 0.0};
   double weights = 0.0;
-  for (const std::uint32_t t : ball) {
-    const auto f = opposite_facet(mesh, t, v);
-    const double w = std::min(tetrahedron_quality(mesh, t), kMaxWeight);
+  for (std::size_t k = 0; k < ball.size(); ++k) {
+    const auto f = opposite_facet(mesh, ball[k], v);
+    const double w = std::min(quality[k], kMaxWeight);
     const Metric3 m = mean_metric(mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]));
     sum = sum + w * ideal_apex(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), m);
     weights += w;
@@ -67,17 +77,38 @@ Vec3 optimal_point(const Mesh3& mesh, std::uint32_t v, std::span<const std::uint
   return (1.0 / weights) * sum;
 }
 
-bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options) {
+}  // namespace
+
+Vec3 optimal_point(const Mesh3& mesh, std::uint32_t v, std::span<const std::uint32_t> ball) {
+  std::vector<double> quality;
+  quality.reserve(ball.size());
+  for (const std::uint32_t t : ball) quality.push_back(tetrahedron_quality(mesh, t));
+  return optimal_point_of(mesh, v, ball, quality);
+}
+
+namespace {
+
+// The buffers of one relocation, kept across the vertices of a sweep.
+struct RelocateScratch {
   std::vector<std::uint32_t> ball;
-  if (!is_free_vertex(mesh, v, ball)) return false;
-  const Vec3 p = mesh.point(v);
   std::vector<std::array<std::uint32_t, 3>> facets;
-  facets.reserve(ball.size());
+  std::vector<double> quality;
+};
+
+// try_relocate3 for a vertex whose ball is in s.ball (v free: is_free_vertex held).
+bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options,
+                          RelocateScratch& s) {
+  const std::vector<std::uint32_t>& ball = s.ball;
+  const Vec3 p = mesh.point(v);
+  std::vector<std::array<std::uint32_t, 3>>& facets = s.facets;
+  facets.clear();
+  s.quality.clear();
   double before = 0.0;
   std::size_t worst = 0;
   for (std::size_t k = 0; k < ball.size(); ++k) {
     facets.push_back(opposite_facet(mesh, ball[k], v));
     const double q = tetrahedron_quality(mesh, ball[k]);
+    s.quality.push_back(q);
     if (q > before) {
       before = q;
       worst = k;
@@ -87,7 +118,7 @@ bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, cons
   // tetrahedron alone (the ball's worst is what the criterion asks to improve).
   const auto& fw = facets[worst];
   const Metric3 mw = mean_metric(mesh.metric(fw[0]), mesh.metric(fw[1]), mesh.metric(fw[2]));
-  const std::array<Vec3, 2> targets{optimal_point(mesh, v, ball),
+  const std::array<Vec3, 2> targets{optimal_point_of(mesh, v, ball, s.quality),
                                     ideal_apex(mesh.point(fw[0]), mesh.point(fw[1]), mesh.point(fw[2]), mw)};
   for (const Vec3& target : targets) {
     if (!std::isfinite(target.x) || !std::isfinite(target.y) || !std::isfinite(target.z)) continue;
@@ -120,19 +151,65 @@ bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, cons
   return false;
 }
 
+}  // namespace
+
+bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options) {
+  RelocateScratch s;
+  if (!is_free_vertex(mesh, v, s.ball)) return false;
+  return relocate_free_vertex(mesh, v, field, options, s);
+}
+
 std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relocate3Options& options) {
-  // Worst ball first (ties by vertex id): the classification of §8.6.
+  // Worst ball first (ties by vertex id): the classification of §8.6. One pass over the
+  // tetrahedra gives every vertex's worst Q_K and what is_free_vertex asks of its ball (every
+  // tetrahedron at it in the domain, with one reference, no constrained facet at it); the ball
+  // of a vertex is every live tetrahedron holding it, so the values are those of the ball.
+  const std::uint32_t nv = mesh.vertex_capacity();
+  constexpr int kUnset = std::numeric_limits<int>::min();
+  std::vector<double> worst(nv, 0.0);
+  std::vector<int> ref(nv, kUnset);
+  std::vector<std::uint8_t> locked(nv, 0);
+  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+    if (!mesh.is_alive(t)) continue;
+    const auto tv = mesh.tetrahedron(t);
+    const bool domain = mesh.in_domain(t);
+    const double q = domain ? tetrahedron_quality(mesh, t) : 0.0;
+    const int r = domain ? mesh.ref(t) : 0;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t w = tv[i];
+      if (w >= nv) continue;  // the infinite vertex
+      if (!domain) {
+        locked[w] = 1;
+        continue;
+      }
+      if (ref[w] == kUnset) {
+        ref[w] = r;
+      } else if (ref[w] != r) {
+        locked[w] = 1;
+      }
+      worst[w] = std::max(worst[w], q);
+      // A constrained facet i holds the three vertices other than tv[i].
+      if (mesh.is_constrained(Mesh3::facet(t, i)))
+        for (std::uint32_t j = 0; j < 4; ++j)
+          if (j != i && tv[j] < nv) locked[tv[j]] = 1;
+    }
+  }
   std::vector<std::pair<double, std::uint32_t>> order;
-  std::vector<std::uint32_t> ball;
-  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
-    if (!is_free_vertex(mesh, v, ball)) continue;
-    order.emplace_back(worst_quality(mesh, ball), v);
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    if (mesh.is_dead_vertex(v) || locked[v] || ref[v] == kUnset) continue;
+    if ((mesh.flags(v) & (Mesh3::kFixed | Mesh3::kOnBoundary)) != 0) continue;
+    order.emplace_back(worst[v], v);
   }
   std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) {
     return x.first > y.first || (x.first == y.first && x.second < y.second);
   });
   std::uint64_t moved = 0;
-  for (const auto& entry : order) moved += try_relocate3(mesh, entry.second, field, options) ? 1 : 0;
+  RelocateScratch s;
+  for (const auto& entry : order) {
+    // Relocation changes no topology: the vertex is still free; its ball is fetched once.
+    mesh.ball(entry.second, s.ball);
+    moved += relocate_free_vertex(mesh, entry.second, field, options, s) ? 1 : 0;
+  }
   return moved;
 }
 
