@@ -12,7 +12,8 @@ namespace dtlab {
 
 using namespace optimize3d_detail;
 
-bool try_face_swap(Mesh3& mesh, std::uint32_t h, double margin, std::vector<std::uint32_t>* created) {
+bool optimize3d_detail::face_swap(Mesh3& mesh, std::uint32_t h, double margin, std::vector<std::uint32_t>* created,
+                                  QualityCache* cache) {
   const std::uint32_t t = Mesh3::tetrahedron_of(h);
   if (t >= mesh.tetrahedron_capacity() || !mesh.is_alive(t) || is_locked_facet(mesh, h)) return false;
   const std::uint32_t g = mesh.twin(h);
@@ -23,7 +24,8 @@ bool try_face_swap(Mesh3& mesh, std::uint32_t h, double margin, std::vector<std:
   const std::array<NewTetrahedron, 3> fresh{{{{f[0], f[1], e, d}, mesh.ref(t)},
                                               {{f[1], f[2], e, d}, mesh.ref(t)},
                                               {{f[2], f[0], e, d}, mesh.ref(t)}}};
-  const double before = std::max(tetrahedron_quality(mesh, t), tetrahedron_quality(mesh, u));
+  const double before = cache ? std::max(cache->get(mesh, t), cache->get(mesh, u))
+                              : std::max(tetrahedron_quality(mesh, t), tetrahedron_quality(mesh, u));
   const double after = worst_quality(mesh, std::span<const NewTetrahedron>(fresh));
   if (!(after < before * (1.0 - margin))) return false;  // also refuses a non-positive one (+inf)
   const std::array<std::uint32_t, 2> old{t, u};
@@ -31,6 +33,10 @@ bool try_face_swap(Mesh3& mesh, std::uint32_t h, double margin, std::vector<std:
   replace_tetrahedra(mesh, old, fresh, slots);
   if (created) *created = slots;
   return true;
+}
+
+bool try_face_swap(Mesh3& mesh, std::uint32_t h, double margin, std::vector<std::uint32_t>* created) {
+  return face_swap(mesh, h, margin, created, nullptr);
 }
 
 }  // namespace dtlab

@@ -4,6 +4,7 @@
 // operator: swaps, shell transformations, collapse, split).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -59,6 +60,48 @@ struct NewTetrahedron {
 // new tetrahedra's slots.
 void replace_tetrahedra(Mesh3& mesh, std::span<const std::uint32_t> old_tetrahedra,
                         std::span<const NewTetrahedron> new_tetrahedra, std::vector<std::uint32_t>& slots);
+
+// Q_K of live tetrahedra by slot, for a pass in which no vertex moves, changes its metric or dies
+// (swaps, shell transformations, splits): an entry keeps the vertices it was computed for, so a
+// slot freed and reused by another tetrahedron is computed anew. The values are
+// tetrahedron_quality's, bit for bit.
+class QualityCache {
+ public:
+  double get(const Mesh3& mesh, std::uint32_t t) {
+    if (t >= key_.size()) {
+      key_.resize(std::max<std::size_t>(mesh.tetrahedron_capacity(), t + 1), kUnset);
+      value_.resize(key_.size(), 0.0);
+    }
+    const auto v = mesh.tetrahedron(t);
+    if (key_[t] != v) {
+      key_[t] = v;
+      value_[t] = tetrahedron_quality(mesh, t);
+    }
+    return value_[t];
+  }
+  double worst(const Mesh3& mesh, std::span<const std::uint32_t> tetrahedra) {
+    double w = 0.0;
+    for (const std::uint32_t t : tetrahedra) w = std::max(w, get(mesh, t));
+    return w;
+  }
+
+ private:
+  static constexpr std::array<std::uint32_t, 4> kUnset{Mesh3::kNone, Mesh3::kNone, Mesh3::kNone, Mesh3::kNone};
+  std::vector<std::array<std::uint32_t, 4>> key_;
+  std::vector<double> value_;
+};
+
+// The operators with their "before" Q_K read from `cache` (null: computed).
+bool face_swap(Mesh3& mesh, std::uint32_t h, double margin, std::vector<std::uint32_t>* created, QualityCache* cache);
+bool shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin,
+                          std::vector<std::uint32_t>* created, std::uint32_t hint, QualityCache* cache);
+struct SwapPassResult {
+  std::uint64_t face_swaps = 0;
+  std::uint64_t shell_transformations = 0;
+  bool limit_reached = false;
+};
+SwapPassResult swap_pass(Mesh3& mesh, double margin, std::span<const std::uint32_t> seeds, double threshold,
+                         QualityCache& cache);
 
 // The worst Q_K of a set of live tetrahedra / of candidates.
 double worst_quality(const Mesh3& mesh, std::span<const std::uint32_t> tetrahedra) noexcept;

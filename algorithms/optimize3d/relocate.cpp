@@ -205,9 +205,28 @@ std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relo
   });
   std::uint64_t moved = 0;
   RelocateScratch s;
+  // Mesh3::ball's breadth-first search, in its order (the sums over the ball keep their bits),
+  // with a stamp per tetrahedron for "seen" instead of a search of the list.
+  std::vector<std::uint32_t> seen(mesh.tetrahedron_capacity(), 0);
+  std::uint32_t stamp = 0;
   for (const auto& entry : order) {
     // Relocation changes no topology: the vertex is still free; its ball is fetched once.
-    mesh.ball(entry.second, s.ball);
+    const std::uint32_t v = entry.second;
+    ++stamp;
+    s.ball.clear();
+    const std::uint32_t t0 = mesh.vertex_tetrahedron(v);
+    s.ball.push_back(t0);
+    seen[t0] = stamp;
+    for (std::size_t k = 0; k < s.ball.size(); ++k) {
+      const std::uint32_t t = s.ball[k];
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        if (mesh.vertex(t, i) == v) continue;
+        const std::uint32_t u = Mesh3::tetrahedron_of(mesh.twin(Mesh3::facet(t, i)));
+        if (seen[u] == stamp) continue;
+        seen[u] = stamp;
+        s.ball.push_back(u);
+      }
+    }
     moved += relocate_free_vertex(mesh, entry.second, field, options, s) ? 1 : 0;
   }
   return moved;

@@ -19,13 +19,14 @@ namespace dtlab {
 
 using namespace optimize3d_detail;
 
-bool try_shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin,
-                              std::vector<std::uint32_t>* created, std::uint32_t hint) {
+bool optimize3d_detail::shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin,
+                                             std::vector<std::uint32_t>* created, std::uint32_t hint,
+                                             QualityCache* cache) {
   std::vector<std::uint32_t> shell, ring;
   if (!is_free_edge(mesh, a, b, shell, ring, hint)) return false;
   const std::uint32_t n = static_cast<std::uint32_t>(ring.size());
   if (n < 3 || n > kMaxShellSize) return false;
-  const double before = worst_quality(mesh, shell);
+  const double before = cache ? cache->worst(mesh, shell) : worst_quality(mesh, shell);
   const double bound = before * (1.0 - margin);
   constexpr double kInf = std::numeric_limits<double>::infinity();
   // The ring turns counter-clockwise seen from b: for i < j < k, (r_i, r_j, r_k, b) and
@@ -81,6 +82,11 @@ bool try_shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, dou
   replace_tetrahedra(mesh, shell, fresh, slots);
   if (created) *created = slots;
   return true;
+}
+
+bool try_shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin,
+                              std::vector<std::uint32_t>* created, std::uint32_t hint) {
+  return shell_transformation(mesh, a, b, margin, created, hint, nullptr);
 }
 
 }  // namespace dtlab

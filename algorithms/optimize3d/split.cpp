@@ -82,6 +82,8 @@ SplitPass3Result split_pass3(Mesh3& mesh, const MetricField3& field, const Split
       for (int j = i + 1; j < 4; ++j) consider(v[i], v[j]);
   }
   std::vector<std::uint32_t> ball;
+  // No vertex moves or dies in this pass (splits add them): one cache for every swap pass.
+  QualityCache cache;
   while (!queue.empty()) {
     const auto [l, a, b] = queue.top();
     queue.pop();
@@ -94,7 +96,7 @@ SplitPass3Result split_pass3(Mesh3& mesh, const MetricField3& field, const Split
     if (v == Mesh3::kNone) continue;
     ++result.splits;
     mesh.ball(v, ball);
-    const SwapPass3Result s = swap_pass3(mesh, options.margin, ball);
+    const SwapPassResult s = swap_pass(mesh, options.margin, ball, 0.0, cache);
     result.swaps += s.face_swaps + s.shell_transformations;
     consider(a, v);
     consider(v, b);

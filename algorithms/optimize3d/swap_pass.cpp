@@ -30,12 +30,13 @@ constexpr std::array<std::array<std::uint32_t, 2>, 6> kEdges{{{0, 1}, {0, 2}, {0
 
 }  // namespace
 
-SwapPass3Result swap_pass3(Mesh3& mesh, double margin, std::span<const std::uint32_t> seeds, double threshold) {
-  SwapPass3Result result;
+SwapPassResult optimize3d_detail::swap_pass(Mesh3& mesh, double margin, std::span<const std::uint32_t> seeds,
+                                            double threshold, QualityCache& cache) {
+  SwapPassResult result;
   std::priority_queue<Entry> queue;
   auto push = [&](std::uint32_t t) {
     if (!mesh.in_domain(t)) return;
-    const double q = tetrahedron_quality(mesh, t);
+    const double q = cache.get(mesh, t);
     if (q > threshold) queue.push({q, t, mesh.tetrahedron(t)});
   };
   if (seeds.empty()) {
@@ -55,13 +56,13 @@ SwapPass3Result swap_pass3(Mesh3& mesh, double margin, std::span<const std::uint
     }
     bool changed = false;
     for (std::uint32_t i = 0; i < 4 && !changed; ++i) {
-      if (try_face_swap(mesh, Mesh3::facet(e.t, i), margin, &created)) {
+      if (face_swap(mesh, Mesh3::facet(e.t, i), margin, &created, &cache)) {
         ++result.face_swaps;
         changed = true;
       }
     }
     for (std::uint32_t k = 0; k < 6 && !changed; ++k) {
-      if (try_shell_transformation(mesh, e.v[kEdges[k][0]], e.v[kEdges[k][1]], margin, &created, e.t)) {
+      if (shell_transformation(mesh, e.v[kEdges[k][0]], e.v[kEdges[k][1]], margin, &created, e.t, &cache)) {
         ++result.shell_transformations;
         changed = true;
       }
@@ -70,6 +71,12 @@ SwapPass3Result swap_pass3(Mesh3& mesh, double margin, std::span<const std::uint
       for (const std::uint32_t t : created) push(t);
   }
   return result;
+}
+
+SwapPass3Result swap_pass3(Mesh3& mesh, double margin, std::span<const std::uint32_t> seeds, double threshold) {
+  QualityCache cache;
+  const SwapPassResult r = swap_pass(mesh, margin, seeds, threshold, cache);
+  return {r.face_swaps, r.shell_transformations, r.limit_reached};
 }
 
 }  // namespace dtlab
