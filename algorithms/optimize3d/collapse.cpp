@@ -29,6 +29,20 @@ bool simulate(const Mesh3& mesh, std::uint32_t x, std::uint32_t y, const Collaps
   if (!is_free_vertex(mesh, x, c.ball)) return false;
   bool has_edge = false;
   c.fresh.clear();
+  // The vertices of y's ball, gathered at the first long new edge: find_edge(y, w) without a
+  // search of the ball for each.
+  std::vector<std::uint32_t> y_ball, y_neighbours;
+  bool gathered = false;
+  auto is_edge = [&](std::uint32_t w) {
+    if (!gathered) {
+      mesh.ball(y, y_ball);
+      for (const std::uint32_t t : y_ball)
+        for (const std::uint32_t z : mesh.tetrahedron(t)) y_neighbours.push_back(z);
+      std::sort(y_neighbours.begin(), y_neighbours.end());
+      gathered = true;
+    }
+    return std::binary_search(y_neighbours.begin(), y_neighbours.end(), w);
+  };
   for (const std::uint32_t t : c.ball) {
     auto v = mesh.tetrahedron(t);
     if (std::find(v.begin(), v.end(), y) != v.end()) {
@@ -38,7 +52,7 @@ bool simulate(const Mesh3& mesh, std::uint32_t x, std::uint32_t y, const Collaps
     for (auto& w : v) {
       if (w == x) {
         w = y;
-      } else if (edge_length(mesh, y, w) > options.long_length && mesh.find_edge(y, w) == Mesh3::kNone) {
+      } else if (edge_length(mesh, y, w) > options.long_length && !is_edge(w)) {
         return false;
       }
     }

@@ -27,10 +27,50 @@ Vec3 metric_midpoint3(const Vec3& a, const Metric3& ma, const Vec3& b, const Met
   return a + s * (b - a);
 }
 
-std::uint32_t try_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const MetricField3& field,
-                         const Split3Options& options) {
+namespace {
+
+// Mesh3::find_edge(a, b) for live finite a, b: the first tetrahedron of a's ball, in
+// Mesh3::ball's breadth-first order, that holds b (so the shell starts where it did), with a
+// stamp per tetrahedron for "seen" and the search stopped there.
+class EdgeFinder {
+ public:
+  std::uint32_t find(const Mesh3& mesh, std::uint32_t a, std::uint32_t b) {
+    if (seen_.size() < mesh.tetrahedron_capacity()) seen_.resize(mesh.tetrahedron_capacity(), 0);
+    ++stamp_;
+    list_.clear();
+    auto holds_b = [&](std::uint32_t t) {
+      for (std::uint32_t i = 0; i < 4; ++i)
+        if (mesh.vertex(t, i) == b) return true;
+      return false;
+    };
+    const std::uint32_t t0 = mesh.vertex_tetrahedron(a);
+    if (holds_b(t0)) return t0;
+    list_.push_back(t0);
+    seen_[t0] = stamp_;
+    for (std::size_t k = 0; k < list_.size(); ++k) {
+      const std::uint32_t t = list_[k];
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        if (mesh.vertex(t, i) == a) continue;
+        const std::uint32_t u = Mesh3::tetrahedron_of(mesh.twin(Mesh3::facet(t, i)));
+        if (seen_[u] == stamp_) continue;
+        seen_[u] = stamp_;
+        if (holds_b(u)) return u;
+        list_.push_back(u);
+      }
+    }
+    return Mesh3::kNone;
+  }
+
+ private:
+  std::vector<std::uint32_t> seen_, list_;
+  std::uint32_t stamp_ = 0;
+};
+
+// try_split3 with `hint` a live tetrahedron with edge ab, or kNone (then searched).
+std::uint32_t split_edge(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const MetricField3& field,
+                         const Split3Options& options, std::uint32_t hint) {
   std::vector<std::uint32_t> shell, ring;
-  if (!is_free_edge(mesh, a, b, shell, ring)) return Mesh3::kNone;
+  if (!is_free_edge(mesh, a, b, shell, ring, hint)) return Mesh3::kNone;
   const Vec3 m = metric_midpoint3(mesh.point(a), mesh.metric(a), mesh.point(b), mesh.metric(b));
   if (m == mesh.point(a) || m == mesh.point(b)) return Mesh3::kNone;
   const Metric3 mm = field ? field(m) : interpolate(mesh.metric(a), mesh.metric(b), 0.5);
@@ -64,6 +104,13 @@ std::uint32_t try_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const Me
   return v;
 }
 
+}  // namespace
+
+std::uint32_t try_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const MetricField3& field,
+                         const Split3Options& options) {
+  return split_edge(mesh, a, b, field, options, Mesh3::kNone);
+}
+
 SplitPass3Result split_pass3(Mesh3& mesh, const MetricField3& field, const Split3Options& options) {
   SplitPass3Result result;
   using Item = std::tuple<double, std::uint32_t, std::uint32_t>;
@@ -84,6 +131,7 @@ SplitPass3Result split_pass3(Mesh3& mesh, const MetricField3& field, const Split
   std::vector<std::uint32_t> ball;
   // No vertex moves or dies in this pass (splits add them): one cache for every swap pass.
   QualityCache cache;
+  EdgeFinder finder;
   while (!queue.empty()) {
     const auto [l, a, b] = queue.top();
     queue.pop();
@@ -92,7 +140,9 @@ SplitPass3Result split_pass3(Mesh3& mesh, const MetricField3& field, const Split
       break;
     }
     if (mesh.is_dead_vertex(a) || mesh.is_dead_vertex(b) || edge_length(mesh, a, b) != l) continue;
-    const std::uint32_t v = try_split3(mesh, a, b, field, options);
+    const std::uint32_t hint = finder.find(mesh, a, b);
+    if (hint == Mesh3::kNone) continue;  // no edge any more: is_free_edge would refuse it
+    const std::uint32_t v = split_edge(mesh, a, b, field, options, hint);
     if (v == Mesh3::kNone) continue;
     ++result.splits;
     mesh.ball(v, ball);
