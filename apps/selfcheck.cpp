@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "apps/cli_util.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/predicates.hpp"
 #include "verify/exact_reference.hpp"
@@ -121,7 +122,9 @@ void add_selfcheck(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "selfcheck", "Check every predicate and stage against exact rational arithmetic on the bundled "
                    "near-degenerate inputs, with stage counts and time per call");
-  cmd->add_option("--cases", *per_family, "Cases per input family")->capture_default_str();
+  cmd->add_option("--cases", *per_family, "Cases per input family")
+      ->capture_default_str()
+      ->check(integer_in(1, 10'000'000));
   cmd->callback([per_family] { exit_code() = run_selfcheck(*per_family); });
 }
 

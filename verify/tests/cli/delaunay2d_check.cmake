@@ -189,6 +189,11 @@ elseif(CASE STREQUAL "bad_option_values")
   endforeach()
   run(delaunay --random 100 --seed 18446744073709551615)
   expect_success()
+  # selfcheck's --cases too (-1 once wrapped to a huge count and the run was killed for memory).
+  foreach(value -1 0 2.5 10000001)
+    run(selfcheck --cases ${value})
+    expect_failure("--cases: Value ${value} ")
+  endforeach()
 
 else()
   message(FATAL_ERROR "unknown CASE '${CASE}'")
