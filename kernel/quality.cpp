@@ -56,6 +56,10 @@ double longest_edge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) 
 
 double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
   if (orient3d(a, b, c, d) == Sign::Zero) return kInfinity;
+  return shape_quality_nonflat(a, b, c, d);
+}
+
+double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
   const double h_max = longest_edge(a, b, c, d);
   const Vec3 ba = b - a, ca = c - a, da = d - a;
   // rho = |det| / (sum over the faces of |cross|).
@@ -122,6 +126,10 @@ double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
   return oriented_quality(a, b, c, d, m);
 }
 
+double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& m) noexcept {
+  return oriented_quality(a, b, c, d, m);
+}
+
 // One orientation test, and a vertex metric equal to an earlier one measured once (the
 // isotropic uniform case: one measure instead of three or four); the same value as the maximum
 // of the one-metric measures.
@@ -137,6 +145,11 @@ double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2&
 double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
                      const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept {
   if (orient3d(a, b, c, d) == Sign::Zero) return kInfinity;
+  return shape_quality_nonflat(a, b, c, d, ma, mb, mc, md);
+}
+
+double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
+                             const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept {
   double q = oriented_quality(a, b, c, d, ma);
   if (!(mb == ma)) q = std::max(q, oriented_quality(a, b, c, d, mb));
   if (!(mc == ma) && !(mc == mb)) q = std::max(q, oriented_quality(a, b, c, d, mc));

@@ -25,6 +25,13 @@ double shape_quality(const Vec2& a, const Vec2& b, const Vec2& c, const Metric2&
 double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
                      const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept;
 
+// The 3D values above for a tetrahedron already known not to be flat (orient3d(a, b, c, d) is not
+// Zero, as an operator that tested it exactly knows): the same values, without the second test.
+double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
+double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& m) noexcept;
+double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
+                             const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept;
+
 // Mean-ratio quality in a metric, as the UGAWG benchmarks measure it (1 = equilateral in M, 0 =
 // flat): 2D 4 sqrt(3) area_M / sum of squared edge lengths in M; 3D 12 (3 vol_M)^(2/3) / sum of
 // squared edge lengths in M; area_M = sqrt(det M) area. Signed: negative for an inverted element.

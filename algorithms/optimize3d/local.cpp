@@ -34,9 +34,20 @@ double quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, co
   return shape_quality(a, b, c, d, ma, mb, mc, md);
 }
 
+namespace {
+
+// quality_in of a tetrahedron known positive (the caller's exact orient3d).
+double positive_quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
+                           const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept {
+  if (isotropic(ma) && isotropic(mb) && isotropic(mc) && isotropic(md)) return shape_quality_nonflat(a, b, c, d);
+  return shape_quality_nonflat(a, b, c, d, ma, mb, mc, md);
+}
+
+}  // namespace
+
 double quality(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) noexcept {
   if (!positive(mesh, a, b, c, d)) return std::numeric_limits<double>::infinity();
-  return quality_in(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d), mesh.metric(a), mesh.metric(b),
+  return positive_quality_in(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d), mesh.metric(a), mesh.metric(b),
                     mesh.metric(c), mesh.metric(d));
 }
 
@@ -46,12 +57,12 @@ double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::u
   if (!positive(mesh, a, b, c, d)) return kInf;
   const Vec3 &pa = mesh.point(a), &pb = mesh.point(b), &pc = mesh.point(c), &pd = mesh.point(d);
   if (isotropic(mesh.metric(a)) && isotropic(mesh.metric(b)) && isotropic(mesh.metric(c)) && isotropic(mesh.metric(d))) {
-    const double q = shape_quality(pa, pb, pc, pd);
+    const double q = shape_quality_nonflat(pa, pb, pc, pd);
     return q < bound ? q : kInf;
   }
   double worst = 0.0;
   for (const std::uint32_t v : {a, b, c, d}) {
-    worst = std::max(worst, shape_quality(pa, pb, pc, pd, mesh.metric(v)));
+    worst = std::max(worst, shape_quality_nonflat(pa, pb, pc, pd, mesh.metric(v)));
     if (!(worst < bound)) return kInf;
   }
   return worst;
