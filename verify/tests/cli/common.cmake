@@ -5,6 +5,9 @@
 #   expect_success()            exit code 0
 #   expect_failure(<regex...>)  non-zero exit code, stderr matching every regex
 #   medit_section(file name count_var refs_var)  a Medit section's count and distinct references
+#   expect_number(what value op bound)  a JSON number compared with a bound (python3)
+#   run_mesh_verified(key <args...>)  dtlab mesh --verify --stats: the ok line, `quality` and
+#                               the count `key` (triangles, tetrahedra) of the last JSON line
 # Include it after setting DTLAB_CLI_REQUIRED to the variables the script needs.
 cmake_minimum_required(VERSION 3.25)
 foreach(v ${DTLAB_CLI_REQUIRED})
@@ -80,3 +83,31 @@ function(medit_section file name count_var refs_var)
   list(SORT refs COMPARE NATURAL)
   set(${refs_var} "${refs}" PARENT_SCOPE)
 endfunction()
+
+# Fails unless `value` (a JSON number) compares as asked with `bound`.
+function(expect_number what value op bound)
+  if(NOT value MATCHES "^[-0-9.eE+]+$")
+    fail("${what} is not a number: ${value}")
+  endif()
+  execute_process(COMMAND python3 -c "import sys; v=${value}; b=${bound}; sys.exit(0 if (v ${op} b) else 1)" RESULT_VARIABLE bad)
+  if(bad)
+    fail("${what} = ${value}, expected ${op} ${bound}")
+  endif()
+endfunction()
+
+# Runs dtlab mesh with --verify --stats; expects success and the verifier's ok line; sets
+# `quality` (the quality object of the last stdout line, a JSON object) and the variable `key`
+# to that line's count of elements, which must be at least 10.
+macro(run_mesh_verified key)
+  run(mesh ${ARGN} --verify --stats)
+  expect_success()
+  if(NOT out MATCHES "(^|\n)ok: ")
+    fail("no ok line from --verify")
+  endif()
+  string(REGEX MATCH "[^\n]+\n?$" json "${out}")
+  string(JSON quality GET "${json}" quality)
+  string(JSON ${key} GET "${json}" ${key})
+  if(${key} LESS 10)
+    fail("too few ${key}: ${${key}}")
+  endif()
+endmacro()

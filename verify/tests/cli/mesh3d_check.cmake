@@ -3,34 +3,13 @@
 set(DTLAB_CLI_REQUIRED DTLAB DATA WORK CASE)
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake)
 
-# Runs dtlab mesh with --verify --stats; expects success, the verifier's ok line, and returns the
-# quality object of the last stdout line in `quality`, the tetrahedron count in `tetrahedra`.
+# run_mesh_verified, and the book's Table 7.1 line of --stats.
 macro(run_verified)
-  run(mesh ${ARGN} --verify --stats)
-  expect_success()
-  if(NOT out MATCHES "(^|\n)ok: ")
-    fail("no ok line from --verify")
-  endif()
+  run_mesh_verified(tetrahedra ${ARGN})
   if(NOT out MATCHES "Table 7.1: ne [0-9]+, np [0-9]+, target")
     fail("no Table 7.1 line")
   endif()
-  string(REGEX MATCH "[^\n]+\n?$" json "${out}")
-  string(JSON quality GET "${json}" quality)
-  string(JSON tetrahedra GET "${json}" tetrahedra)
-  if(tetrahedra LESS 10)
-    fail("too few tetrahedra: ${tetrahedra}")
-  endif()
 endmacro()
-
-function(expect_number what value op bound)
-  if(NOT value MATCHES "^[-0-9.eE+]+$")
-    fail("${what} is not a number: ${value}")
-  endif()
-  execute_process(COMMAND python3 -c "import sys; v=${value}; b=${bound}; sys.exit(0 if (v ${op} b) else 1)" RESULT_VARIABLE bad)
-  if(bad)
-    fail("${what} = ${value}, expected ${op} ${bound}")
-  endif()
-endfunction()
 
 # A tetrahedron enclosing the cube [0, 2]^3 of quad_cube.off, as a Medit background.
 set(background "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n-1 -1 -1 0\n10 -1 -1 0\n-1 10 -1 0\n-1 -1 10 0\nTetrahedra\n1\n1 2 3 4 0\nEnd\n")

@@ -3,32 +3,9 @@
 set(DTLAB_CLI_REQUIRED DTLAB DATA WORK CASE)
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake)
 
-# Runs dtlab mesh with --verify --stats; expects success, the verifier's ok line, and returns the
-# quality object of the last stdout line in `quality`.
 macro(run_verified)
-  run(mesh ${ARGN} --verify --stats)
-  expect_success()
-  if(NOT out MATCHES "(^|\n)ok: ")
-    fail("no ok line from --verify")
-  endif()
-  string(REGEX MATCH "[^\n]+\n?$" json "${out}")
-  string(JSON quality GET "${json}" quality)
-  string(JSON triangles GET "${json}" triangles)
-  if(triangles LESS 10)
-    fail("too few triangles: ${triangles}")
-  endif()
+  run_mesh_verified(triangles ${ARGN})
 endmacro()
-
-# Fails unless `value` (a JSON number) compares as asked with `bound`.
-function(expect_number what value op bound)
-  if(NOT value MATCHES "^[-0-9.eE+]+$")
-    fail("${what} is not a number: ${value}")
-  endif()
-  execute_process(COMMAND python3 -c "import sys; v=${value}; b=${bound}; sys.exit(0 if (v ${op} b) else 1)" RESULT_VARIABLE bad)
-  if(bad)
-    fail("${what} = ${value}, expected ${op} ${bound}")
-  endif()
-endfunction()
 
 if(CASE STREQUAL "classical")
   run_verified(${DATA}/square_with_hole.poly -o out.mesh)
