@@ -80,7 +80,8 @@ void place_randomly(Surface& s) {
   double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   if (n < 1e-3) q = {1, 0, 0, 0}, n = 1;
   for (double& c : q) c /= n;
-  const auto [w, x, y, z] = q;
+  // Named copies, not a structured binding: clang 14 cannot capture bindings in a lambda.
+  const double w = q[0], x = q[1], y = q[2], z = q[3];
   const Vec3 shift{real_in(-10, 10), real_in(-10, 10), real_in(-10, 10)};
   const auto move = [&](const Vec3& p) {
     return Vec3{(1 - 2 * (y * y + z * z)) * p.x + 2 * (x * y - w * z) * p.y + 2 * (x * z + w * y) * p.z,
