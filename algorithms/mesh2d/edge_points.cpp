@@ -14,6 +14,7 @@
 #include "algorithms/mesh2d/edge_cuts.hpp"
 #include "algorithms/mesh2d/mesh2d.hpp"
 #include "kernel/error.hpp"
+#include "kernel/interrupt.hpp"
 
 namespace dtlab {
 
@@ -32,6 +33,7 @@ void insert_edge_points(Mesh2& mesh, const ControlSpace2& control, const Mesh2dO
   std::vector<double> cuts;
   std::uint32_t hint = ControlSpace2::kNoHint;
   for (std::uint32_t pass = 0;; ++pass) {
+    poll_interrupt(options.interrupt, "mesh2d: during the field points (edge method)");
     if (pass == options.max_passes) {
       throw InputError("mesh2d: the edge method did not saturate within " + std::to_string(options.max_passes) +
                        " passes (" + std::to_string(stats.field_points) + " field points so far)");

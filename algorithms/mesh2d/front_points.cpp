@@ -16,6 +16,7 @@
 #include "algorithms/mesh2d/delaunay_kernel.hpp"
 #include "algorithms/mesh2d/mesh2d.hpp"
 #include "kernel/error.hpp"
+#include "kernel/interrupt.hpp"
 #include "kernel/quality.hpp"
 
 namespace dtlab {
@@ -67,6 +68,7 @@ class Front {
   void run() {
     for (std::uint32_t t = 0; t < mesh_.triangle_capacity(); ++t) classify(t);
     for (std::uint32_t wave = 0;; ++wave) {
+      poll_interrupt(options_.interrupt, "mesh2d: during the field points (advancing front)");
       if (wave == options_.max_passes) {
         throw InputError("mesh2d: the advancing front did not settle within " + std::to_string(options_.max_passes) +
                          " waves (" + std::to_string(stats_.field_points) + " field points so far)");

@@ -8,6 +8,7 @@
 
 #include "algorithms/optimize2d/optimize2d.hpp"
 #include "kernel/error.hpp"
+#include "kernel/interrupt.hpp"
 
 namespace dtlab {
 
@@ -70,6 +71,7 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   };
   result.mesh = build_empty_mesh(input.points, input.segments, input.segment_markers);
   result.stats.seconds_empty_mesh = seconds_since(phase);
+  poll_interrupt(options.interrupt, "mesh2d: after the empty mesh");
 
   // 2. Control space: the given one, or the classical sizes on a frozen copy of the empty mesh.
   phase = std::chrono::steady_clock::now();
@@ -96,6 +98,7 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
     if (!result.mesh.is_dead_vertex(v)) result.mesh.set_metric(v, control.metric_at(result.mesh.point(v), hint));
   }
   result.stats.seconds_control_space = seconds_since(phase);
+  poll_interrupt(options.interrupt, "mesh2d: after the control space");
 
   // 3.+4. Field points and their insertion.
   phase = std::chrono::steady_clock::now();
@@ -112,7 +115,9 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
     // Moved and new points take their metric from the control space (one walk hint for all).
     std::uint32_t field_hint = ControlSpace2::kNoHint;
     const MetricField2 field = [&control, &field_hint](const Vec2& p) { return control.metric_at(p, field_hint); };
-    const Optimize2dStats o = optimize2d(result.mesh, options.optimization, field);
+    Optimize2dOptions optimization = options.optimization;
+    if (!optimization.interrupt) optimization.interrupt = options.interrupt;
+    const Optimize2dStats o = optimize2d(result.mesh, optimization, field);
     result.stats.swaps = o.swaps + o.valence_swaps;
     result.stats.relocations = o.relocations;
     result.stats.collapses = o.collapses;

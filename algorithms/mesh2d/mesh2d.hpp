@@ -65,6 +65,9 @@ struct Mesh2dOptions {
   std::uint64_t max_vertices = 200'000'000;
   // Numbering of points and segments in messages (the input file's: Medit 1, .poly its own).
   std::uint32_t first_number = 0;
+  // Asked between the phases and at each pass of the field point loop (kernel/interrupt.hpp);
+  // yes: Interrupted. The optimization asks its own check, or this one when it has none.
+  InterruptCheck interrupt;
 };
 
 struct Mesh2dStats {

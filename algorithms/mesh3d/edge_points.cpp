@@ -105,6 +105,7 @@ void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dO
   std::vector<double> cuts;
   std::uint32_t hint = ControlSpace3::kNoHint;
   for (std::uint32_t pass = 0;; ++pass) {
+    poll_interrupt(options.interrupt, "mesh3d: during the field points (edge method)");
     if (pass == options.max_passes) {
       throw InputError("mesh3d: the edge method did not saturate within " + std::to_string(options.max_passes) +
                        " passes (" + std::to_string(stats.field_points) + " field points so far)");

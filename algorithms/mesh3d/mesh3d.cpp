@@ -51,6 +51,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
     result.mesh = empty_mesh(r);
   }
   result.stats.seconds_empty_mesh = seconds_since(phase);
+  poll_interrupt(options.interrupt, "mesh3d: after the empty mesh");
 
   // 2. Control space: the given one, or the classical sizes on the empty mesh (a frozen copy).
   phase = std::chrono::steady_clock::now();
@@ -62,6 +63,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
     if (!result.mesh.is_dead_vertex(v)) result.mesh.set_metric(v, control.metric_at(result.mesh.point(v), hint));
   }
   result.stats.seconds_control_space = seconds_since(phase);
+  poll_interrupt(options.interrupt, "mesh3d: after the control space");
 
   // 3.+4. Field points and their insertion.
   phase = std::chrono::steady_clock::now();
@@ -73,7 +75,9 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   if (options.optimize) {
     std::uint32_t field_hint = ControlSpace3::kNoHint;
     const MetricField3 field = [&control, &field_hint](const Vec3& p) { return control.metric_at(p, field_hint); };
-    const Optimize3dStats o = optimize3d(result.mesh, options.optimization, field);
+    Optimize3dOptions optimization = options.optimization;
+    if (!optimization.interrupt) optimization.interrupt = options.interrupt;
+    const Optimize3dStats o = optimize3d(result.mesh, optimization, field);
     result.stats.face_swaps = o.face_swaps;
     result.stats.shell_transformations = o.shell_transformations;
     result.stats.relocations = o.relocations;

@@ -23,6 +23,7 @@
 #include "algorithms/constrained3d/constrained3d.hpp"
 #include "algorithms/mesh3d/control_space.hpp"
 #include "algorithms/optimize3d/optimize3d.hpp"
+#include "kernel/interrupt.hpp"
 #include "kernel/metric.hpp"
 #include "mesh/io/mesh_data3.hpp"
 #include "mesh/mesh3.hpp"
@@ -55,6 +56,9 @@ struct Mesh3dOptions {
   std::uint64_t max_vertices = 50'000'000;
   // Boundary recovery's Steiner bound (Constrained3dOptions::steiner_limit_factor).
   std::uint32_t steiner_limit_factor = 200;
+  // Asked between the phases and at each pass of the field point loop (kernel/interrupt.hpp);
+  // yes: Interrupted. The optimization asks its own check, or this one when it has none.
+  InterruptCheck interrupt;
 };
 
 struct Mesh3dStats {

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "algorithms/optimize2d/operators.hpp"
+#include "kernel/interrupt.hpp"
 #include "mesh/mesh2.hpp"
 
 namespace dtlab {
@@ -37,6 +38,8 @@ struct Optimize2dOptions {
   RelocateOptions relocate{};
   CollapseOptions collapse{};
   SplitOptions split{};
+  // Asked before each round and each pass of a round (kernel/interrupt.hpp); yes: Interrupted.
+  InterruptCheck interrupt;
 };
 
 struct Optimize2dStats {

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <utility>
+#include "kernel/interrupt.hpp"
 
 #include "algorithms/optimize2d/local.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
@@ -118,10 +119,12 @@ Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const 
   QualitySummary2 last = before;
   stats.stopped_by = "max_rounds";
   for (std::uint32_t round = 0; round < options.max_rounds; ++round) {
+    poll_interrupt(options.interrupt, "optimize2d: at the start of a round");
     ++stats.rounds;
     std::uint64_t size_changes = 0;
     bool limit = false;
     treat_bad_triangles(mesh, options, field, stats);
+    poll_interrupt(options.interrupt, "optimize2d: after the bad triangles");
     if (options.collapses) {
       const std::uint64_t c = collapse_pass(mesh, options.collapse);
       stats.collapses += c;
@@ -147,6 +150,7 @@ Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const 
       }
     };
     swaps();
+    poll_interrupt(options.interrupt, "optimize2d: after the swaps");
     if (options.relocation) {
       for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
         const std::uint64_t moved = relocate_sweep(mesh, field, options.relocate);

@@ -18,6 +18,7 @@
 #include <string>
 
 #include "algorithms/optimize3d/operators.hpp"
+#include "kernel/interrupt.hpp"
 #include "mesh/mesh3.hpp"
 
 namespace dtlab {
@@ -39,6 +40,8 @@ struct Optimize3dOptions {
   Relocate3Options relocate{};
   Collapse3Options collapse{};
   Split3Options split{};
+  // Asked before each round and each pass of a round (kernel/interrupt.hpp); yes: Interrupted.
+  InterruptCheck interrupt;
 };
 
 struct Optimize3dStats {

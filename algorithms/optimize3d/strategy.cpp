@@ -104,10 +104,12 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
   QualitySummary3 last = before;
   stats.stopped_by = "max_rounds";
   for (std::uint32_t round = 0; round < options.max_rounds; ++round) {
+    poll_interrupt(options.interrupt, "optimize3d: at the start of a round");
     ++stats.rounds;
     std::uint64_t size_changes = 0;
     bool limit = false;
     treat_bad_tetrahedra(mesh, options, field, stats);
+    poll_interrupt(options.interrupt, "optimize3d: after the bad tetrahedra");
     if (options.collapses) {
       const std::uint64_t c = collapse_pass3(mesh, options.collapse);
       stats.collapses += c;
@@ -125,6 +127,7 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
         limit = true;
       }
     }
+    poll_interrupt(options.interrupt, "optimize3d: after the collapses and splits");
     if (options.swaps) {
       const SwapPass3Result r = swap_pass3(mesh, options.margin, {}, options.swap_threshold);
       stats.face_swaps += r.face_swaps;
@@ -134,6 +137,7 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
         limit = true;
       }
     }
+    poll_interrupt(options.interrupt, "optimize3d: after the swaps");
     if (options.relocation) {
       for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
         const std::uint64_t moved = relocate_sweep3(mesh, field, options.relocate);

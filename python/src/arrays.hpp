@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/interrupt.hpp"
 #include "kernel/stats.hpp"
 #include "kernel/vec.hpp"
 
@@ -64,6 +65,11 @@ py::dict predicate_stats_dict(const PredicateStats& stats);
 py::object parse_json(const std::string& text);
 // Raises KeyboardInterrupt (through py::error_already_set) if a signal came while C++ ran.
 void check_signals();
+// The InterruptCheck (kernel/interrupt.hpp) of a long call that runs with the GIL released: it
+// takes the GIL and runs the interpreter's signal handlers; when one raises (Ctrl-C:
+// KeyboardInterrupt), the exception stays set and the check answers yes, so the algorithm stops
+// by throwing Interrupted, which the module's translator turns back into that exception.
+InterruptCheck python_interrupt_check();
 
 // The binding groups, one file each.
 void bind_errors(py::module_& m);

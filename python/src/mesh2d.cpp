@@ -109,6 +109,7 @@ py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, cons
   Mesh2dOptions options;
   options.method = method;
   options.optimize = optimize;
+  options.interrupt = python_interrupt_check();
   options.resample_boundary = resample_boundary;
   if (interpolation != "sizes" && interpolation != "log-euclidean")
     throw InputError("interpolation: 'sizes' or 'log-euclidean', not '" + interpolation + "'");
@@ -207,6 +208,7 @@ py::dict optimize(const py::handle& points_obj, const py::handle& cells_obj, con
     field = [control, hint](const Vec2& p) { return control->metric_at(p, *hint); };
   }
   Optimize2dOptions options;
+  options.interrupt = python_interrupt_check();
   options.max_rounds = max_rounds;
   options.collapses = options.splits = !shape_only;
   options.split.boundary = boundary_splits;

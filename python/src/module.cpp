@@ -107,6 +107,14 @@ void check_signals() {
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();
 }
 
+InterruptCheck python_interrupt_check() {
+  return [] {
+    py::gil_scoped_acquire gil;
+    if (PyErr_Occurred() != nullptr) return true;  // a handler raised at an earlier check
+    return PyErr_CheckSignals() != 0;
+  };
+}
+
 namespace {
 
 // The exception classes, made once at import and kept for the interpreter's life.
@@ -158,6 +166,23 @@ void bind_errors(py::module_& m) {
       fields["file"] = e.file();
       fields["line"] = e.line();
       raise(g_parse_error, e.what(), fields);
+    } catch (const Interrupted& e) {
+      // The exception a signal handler raised (KeyboardInterrupt) is set: it goes on, with a
+      // note saying where the run stopped. Without one, a check answered yes of its own accord.
+      if (PyErr_Occurred() != nullptr) {
+        PyObject *type = nullptr, *value = nullptr, *trace = nullptr;
+        PyErr_Fetch(&type, &value, &trace);
+        PyErr_NormalizeException(&type, &value, &trace);
+        if (value != nullptr && PyObject_HasAttrString(value, "add_note")) {
+          const std::string note = std::string("dtlab: ") + e.what();
+          PyObject* r = PyObject_CallMethod(value, "add_note", "s", note.c_str());
+          if (r == nullptr) PyErr_Clear();
+          Py_XDECREF(r);
+        }
+        PyErr_Restore(type, value, trace);
+      } else {
+        raise(g_error, e.what(), py::dict());
+      }
     } catch (const InternalError& e) {
       raise(g_internal_error, e.what(), py::dict());
     } catch (const Error& e) {

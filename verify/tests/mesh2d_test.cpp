@@ -10,12 +10,15 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/delaunay2d/delaunay2d.hpp"
 #include "algorithms/mesh2d/delaunay_kernel.hpp"
 #include "algorithms/mesh2d/mesh2d.hpp"
 #include "kernel/error.hpp"
+#include "kernel/interrupt.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/mesh2_from_data.hpp"
 #include "mesh/mesh_quality.hpp"
@@ -313,6 +316,36 @@ TEST(Mesh2d, ThinStrip) {
   add_loop(d, loop, 1);
   const Mesh2dResult r = mesh2d(d.input(), {});
   expect_valid(d, r);
+}
+
+// The interrupt check (kernel/interrupt.hpp) is asked between the phases, at each field point
+// pass and in each optimization round; answering yes at the k-th question stops the run there by
+// Interrupted, naming the place; a check that says no changes nothing in the output.
+TEST(Mesh2d, InterruptCheckStopsTheRunWhereItIsAsked) {
+  const Domain d = square_minus_disc(25);
+  std::uint32_t asked = 0;
+  Mesh2dOptions options;
+  options.interrupt = [&asked] {
+    ++asked;
+    return false;
+  };
+  const Mesh2dResult whole = mesh2d(d.input(), options);
+  EXPECT_EQ(whole.output.vertices, mesh2d(d.input(), {}).output.vertices);
+  ASSERT_GE(asked, 5u);  // two phases, >= 1 field point pass, >= 1 round of >= 2 questions
+  const std::vector<std::pair<std::uint32_t, std::string>> stops{
+      {1, "after the empty mesh"}, {2, "after the control space"}, {3, "field points"}, {asked, "optimize2d"}};
+  for (const auto& stop : stops) {
+    std::uint32_t n = 0;
+    const std::uint32_t at = stop.first;
+    options.interrupt = [&n, at] { return ++n == at; };
+    try {
+      (void)mesh2d(d.input(), options);
+      ADD_FAILURE() << "no Interrupted at question " << at;
+    } catch (const Interrupted& e) {
+      EXPECT_EQ(n, at);
+      EXPECT_NE(std::string(e.what()).find(stop.second), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

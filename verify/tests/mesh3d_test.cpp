@@ -8,10 +8,13 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/mesh3d/mesh3d.hpp"
 #include "kernel/error.hpp"
+#include "kernel/interrupt.hpp"
 #include "mesh/io/medit3.hpp"
 #include "verify/checks_mesh3d.hpp"
 
@@ -330,6 +333,35 @@ TEST(ControlSpace3, InterpolatesOnTheBackgroundAndRefusesBadMetrics) {
   EXPECT_THROW(ControlSpace3(bg, m), InputError);
   std::swap(bg.tetrahedra[0][0], bg.tetrahedra[0][1]);  // negative
   EXPECT_THROW(ControlSpace3(bg, std::vector<Metric3>(4)), InputError);
+}
+
+// As in 2D: the check is asked between the phases, at each field point pass and in each
+// optimization round; a yes stops the run there by Interrupted; a no changes nothing.
+TEST(Mesh3d, InterruptCheckStopsTheRunWhereItIsAsked) {
+  const Surface s = cube(4);
+  std::uint32_t asked = 0;
+  Mesh3dOptions options;
+  options.interrupt = [&asked] {
+    ++asked;
+    return false;
+  };
+  const Mesh3dResult whole = mesh3d(s.input(), options);
+  EXPECT_EQ(medit_bytes(whole.output), medit_bytes(mesh3d(s.input(), {}).output));
+  ASSERT_GE(asked, 5u);
+  const std::vector<std::pair<std::uint32_t, std::string>> stops{
+      {1, "after the empty mesh"}, {2, "after the control space"}, {3, "field points"}, {asked, "optimize3d"}};
+  for (const auto& stop : stops) {
+    std::uint32_t n = 0;
+    const std::uint32_t at = stop.first;
+    options.interrupt = [&n, at] { return ++n == at; };
+    try {
+      (void)mesh3d(s.input(), options);
+      ADD_FAILURE() << "no Interrupted at question " << at;
+    } catch (const Interrupted& e) {
+      EXPECT_EQ(n, at);
+      EXPECT_NE(std::string(e.what()).find(stop.second), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace
