@@ -18,13 +18,13 @@ def unit_square():
 @pytest.mark.skipif(not hasattr(signal, "SIGINT") or os.name != "posix", reason="needs POSIX signals")
 def test_ctrl_c_stops_a_long_mesh_run_inside_cpp():
     points, segments = unit_square()
-    # h = 0.002: over half a million triangles, many seconds to the end; the signal comes after
+    # h = 0.004: over a hundred thousand triangles, some 10 s to the end here; the signal comes after
     # 0.3 s, when the field points are being inserted.
     timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt) as info:
-            dtlab.mesh(points, segments, size=0.002)
+            dtlab.mesh(points, segments, size=0.004)
     finally:
         timer.cancel()
         timer.join()
