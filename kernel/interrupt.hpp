@@ -14,14 +14,10 @@ namespace dtlab {
 
 using InterruptCheck = std::function<bool()>;
 
-// `where` names the point reached ("mesh2d: before the field points"), for the message.
+// `where` names the point reached ("mesh2d: after the control space"), for the message.
 class Interrupted : public Error {
  public:
-  explicit Interrupted(const std::string& where) : Error("interrupted " + where), where_(where) {}
-  const std::string& where() const noexcept { return where_; }
-
- private:
-  std::string where_;
+  explicit Interrupted(const std::string& where) : Error("interrupted " + where) {}
 };
 
 inline void poll_interrupt(const InterruptCheck& check, const char* where) {

@@ -67,7 +67,7 @@ struct Mesh2dOptions {
   std::uint32_t first_number = 0;
   // Asked between the phases and at each pass of the field point loop (kernel/interrupt.hpp);
   // yes: Interrupted. The optimization asks its own check, or this one when it has none.
-  InterruptCheck interrupt;
+  InterruptCheck interrupt{};
 };
 
 struct Mesh2dStats {

@@ -58,7 +58,7 @@ struct Mesh3dOptions {
   std::uint32_t steiner_limit_factor = 200;
   // Asked between the phases and at each pass of the field point loop (kernel/interrupt.hpp);
   // yes: Interrupted. The optimization asks its own check, or this one when it has none.
-  InterruptCheck interrupt;
+  InterruptCheck interrupt{};
 };
 
 struct Mesh3dStats {

@@ -39,7 +39,7 @@ struct Optimize2dOptions {
   CollapseOptions collapse{};
   SplitOptions split{};
   // Asked before each round and each pass of a round (kernel/interrupt.hpp); yes: Interrupted.
-  InterruptCheck interrupt;
+  InterruptCheck interrupt{};
 };
 
 struct Optimize2dStats {

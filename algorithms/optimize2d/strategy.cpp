@@ -10,10 +10,10 @@
 #include <chrono>
 #include <cmath>
 #include <utility>
-#include "kernel/interrupt.hpp"
 
 #include "algorithms/optimize2d/local.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
+#include "kernel/interrupt.hpp"
 
 namespace dtlab {
 

@@ -41,7 +41,7 @@ struct Optimize3dOptions {
   Collapse3Options collapse{};
   Split3Options split{};
   // Asked before each round and each pass of a round (kernel/interrupt.hpp); yes: Interrupted.
-  InterruptCheck interrupt;
+  InterruptCheck interrupt{};
 };
 
 struct Optimize3dStats {

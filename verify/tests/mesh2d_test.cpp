@@ -24,6 +24,7 @@
 #include "mesh/mesh_quality.hpp"
 #include "verify/checks_mesh2d.hpp"
 #include "verify/generators/domains2d.hpp"
+#include "verify/tests/interrupt_stops.hpp"
 
 namespace dtlab {
 namespace {
@@ -334,18 +335,11 @@ TEST(Mesh2d, InterruptCheckStopsTheRunWhereItIsAsked) {
   ASSERT_GE(asked, 5u);  // two phases, >= 1 field point pass, >= 1 round of >= 2 questions
   const std::vector<std::pair<std::uint32_t, std::string>> stops{
       {1, "after the empty mesh"}, {2, "after the control space"}, {3, "field points"}, {asked, "optimize2d"}};
-  for (const auto& stop : stops) {
-    std::uint32_t n = 0;
-    const std::uint32_t at = stop.first;
-    options.interrupt = [&n, at] { return ++n == at; };
-    try {
-      (void)mesh2d(d.input(), options);
-      ADD_FAILURE() << "no Interrupted at question " << at;
-    } catch (const Interrupted& e) {
-      EXPECT_EQ(n, at);
-      EXPECT_NE(std::string(e.what()).find(stop.second), std::string::npos) << e.what();
-    }
-  }
+  const auto run = [&](InterruptCheck check) {
+    options.interrupt = std::move(check);
+    (void)mesh2d(d.input(), options);
+  };
+  for (const auto& stop : stops) test::expect_interrupted_at(run, stop.first, stop.second);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "kernel/interrupt.hpp"
 #include "mesh/io/medit3.hpp"
 #include "verify/checks_mesh3d.hpp"
+#include "verify/tests/interrupt_stops.hpp"
 
 namespace dtlab {
 namespace {
@@ -350,18 +351,11 @@ TEST(Mesh3d, InterruptCheckStopsTheRunWhereItIsAsked) {
   ASSERT_GE(asked, 5u);
   const std::vector<std::pair<std::uint32_t, std::string>> stops{
       {1, "after the empty mesh"}, {2, "after the control space"}, {3, "field points"}, {asked, "optimize3d"}};
-  for (const auto& stop : stops) {
-    std::uint32_t n = 0;
-    const std::uint32_t at = stop.first;
-    options.interrupt = [&n, at] { return ++n == at; };
-    try {
-      (void)mesh3d(s.input(), options);
-      ADD_FAILURE() << "no Interrupted at question " << at;
-    } catch (const Interrupted& e) {
-      EXPECT_EQ(n, at);
-      EXPECT_NE(std::string(e.what()).find(stop.second), std::string::npos) << e.what();
-    }
-  }
+  const auto run = [&](InterruptCheck check) {
+    options.interrupt = std::move(check);
+    (void)mesh3d(s.input(), options);
+  };
+  for (const auto& stop : stops) test::expect_interrupted_at(run, stop.first, stop.second);
 }
 
 }  // namespace
