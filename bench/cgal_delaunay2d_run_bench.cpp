@@ -3,11 +3,14 @@
 // `dtlab delaunay --random N --distribution D --seed S --stats` for dtlab's variants.
 //
 //   cgal_delaunay2d_run_bench --random 1000000 --distribution uniform --seed 1
+//   cgal_delaunay2d_run_bench --random 1000000 --distribution uniform --seed 1 --write-node points.node
 //
-// prints one JSON line with the fields of `dtlab delaunay --stats` that the script reads
+// The first prints one JSON line with the fields of `dtlab delaunay --stats` that the script reads
 // (points, elements, seconds, elements_per_minute, peak_rss_mb). The points are dtlab's
 // (verify/generators/points2d.hpp), bit for bit; seconds cover the conversion of the input and
-// the insertion, as dtlab's cover its input copy and triangulation. Not a Google Benchmark: the
+// the insertion, as dtlab's cover its input copy and triangulation. The second triangulates
+// nothing: it writes the same points as a Triangle .node file (17 significant digits, which read
+// back to the same doubles), so that Shewchuk's Triangle runs on them too. Not a Google Benchmark: the
 // "_bench" suffix puts it in bench/CMakeLists.txt's glob, and "cgal" in its name builds it only
 // when CGAL is found.
 #include <sys/resource.h>
@@ -19,6 +22,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,10 +36,11 @@ struct Args {
   std::size_t n = 0;
   std::string distribution = "uniform";
   std::uint64_t seed = 1;  // `dtlab delaunay`'s default
+  std::string node_file;   // non-empty: write the points there instead of triangulating
 };
 
 const char* const kUsage =
-    "usage: cgal_delaunay2d_run_bench --random N [--distribution NAME] [--seed S]\n";
+    "usage: cgal_delaunay2d_run_bench --random N [--distribution NAME] [--seed S] [--write-node FILE.node]\n";
 
 Args parse(int argc, char** argv) {
   Args args;
@@ -49,6 +54,8 @@ Args parse(int argc, char** argv) {
       args.distribution = value;
     } else if (flag == "--seed") {
       args.seed = std::stoull(value);
+    } else if (flag == "--write-node") {
+      args.node_file = value;
     } else {
       throw std::invalid_argument("unknown option " + std::string(flag));
     }
@@ -63,6 +70,16 @@ double peak_rss_mb() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
 }
 
+// Triangle's .node format: "<count> 2 0 0", then "<index> x y" per point, numbered from 1.
+void write_node(const std::string& path, const std::vector<dtlab::Vec2>& points) {
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  if (out == nullptr) throw std::runtime_error("cannot open '" + path + "' for writing");
+  std::fprintf(out, "%zu 2 0 0\n", points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) std::fprintf(out, "%zu %.17g %.17g\n", i + 1, points[i].x, points[i].y);
+  const bool failed = std::ferror(out) != 0;
+  if (std::fclose(out) != 0 || failed) throw std::runtime_error("writing '" + path + "' failed");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -75,6 +92,10 @@ int main(int argc, char** argv) {
   }
   try {
     const std::vector<dtlab::Vec2> points = dtlab::generate_points2d(args.distribution, args.n, args.seed);
+    if (!args.node_file.empty()) {
+      write_node(args.node_file, points);
+      return 0;
+    }
     const auto start = std::chrono::steady_clock::now();
     dtlab::bench::cgal2d::Delaunay dt;
     dtlab::bench::cgal2d::build(points, dt);
@@ -89,7 +110,8 @@ int main(int argc, char** argv) {
         points.size(), static_cast<std::size_t>(dt.number_of_vertices()), elements, seconds, per_minute,
         peak_rss_mb());
   } catch (const std::exception& e) {
-    // An unknown distribution name (dtlab::InputError lists the known ones), or no memory.
+    // An unknown distribution name (dtlab::InputError lists the known ones), an unwritable .node
+    // file, or no memory.
     std::cerr << "cgal_delaunay2d_run_bench: " << e.what() << "\n";
     return 1;
   }

@@ -4,13 +4,15 @@
 //
 //   cgal_delaunay3d_run_bench --random 1000000 --distribution uniform --seed 1
 //   cgal_delaunay3d_run_bench --random 1000000 --distribution uniform --seed 1 --write-node points.node
+//   cgal_delaunay3d_run_bench --random 1000000 --distribution uniform --seed 1 --write-msh points.msh
 //
 // The first prints one JSON line with the fields of `dtlab delaunay --stats` that the scripts
 // read (points, elements, seconds, elements_per_minute, peak_rss_mb); seconds cover the
 // conversion of the input and the insertion, as dtlab's cover its input copy and
 // tetrahedralization. The second triangulates nothing: it writes the same points as a TetGen
 // .node file (17 significant digits, which read back to the same doubles), so that TetGen runs
-// on them too. The points are dtlab's (verify/generators/points3d.hpp), bit for bit. Not a Google
+// on them too; the third writes them as a Gmsh MSH 2.2 ASCII file of nodes only, which Gmsh's HXT
+// (`Delaunay_CLI -i`) reads. The points are dtlab's (verify/generators/points3d.hpp), bit for bit. Not a Google
 // Benchmark: the "_bench" suffix puts it in bench/CMakeLists.txt's glob, and "cgal" in its name
 // builds it only when CGAL is found.
 #include <sys/resource.h>
@@ -37,10 +39,11 @@ struct Args {
   std::string distribution = "uniform";
   std::uint64_t seed = 1;  // `dtlab delaunay`'s default
   std::string node_file;   // non-empty: write the points there instead of triangulating
+  std::string msh_file;    // the same, as MSH 2.2 ASCII
 };
 
 const char* const kUsage =
-    "usage: cgal_delaunay3d_run_bench --random N [--distribution NAME] [--seed S] [--write-node FILE.node]\n";
+    "usage: cgal_delaunay3d_run_bench --random N [--distribution NAME] [--seed S] [--write-node FILE.node] [--write-msh FILE.msh]\n";
 
 Args parse(int argc, char** argv) {
   Args args;
@@ -56,6 +59,8 @@ Args parse(int argc, char** argv) {
       args.seed = std::stoull(value);
     } else if (flag == "--write-node") {
       args.node_file = value;
+    } else if (flag == "--write-msh") {
+      args.msh_file = value;
     } else {
       throw std::invalid_argument("unknown option " + std::string(flag));
     }
@@ -82,6 +87,19 @@ void write_node(const std::string& path, const std::vector<dtlab::Vec3>& points)
   if (std::fclose(out) != 0 || failed) throw std::runtime_error("writing '" + path + "' failed");
 }
 
+// Gmsh's MSH 2.2 ASCII format with nodes only (numbered from 1) and an empty element section.
+void write_msh(const std::string& path, const std::vector<dtlab::Vec3>& points) {
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  if (out == nullptr) throw std::runtime_error("cannot open '" + path + "' for writing");
+  std::fprintf(out, "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%zu\n", points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::fprintf(out, "%zu %.17g %.17g %.17g\n", i + 1, points[i].x, points[i].y, points[i].z);
+  }
+  std::fprintf(out, "$EndNodes\n$Elements\n0\n$EndElements\n");
+  const bool failed = std::ferror(out) != 0;
+  if (std::fclose(out) != 0 || failed) throw std::runtime_error("writing '" + path + "' failed");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -94,8 +112,9 @@ int main(int argc, char** argv) {
   }
   try {
     const std::vector<dtlab::Vec3> points = dtlab::generate_points3d(args.distribution, args.n, args.seed);
-    if (!args.node_file.empty()) {
-      write_node(args.node_file, points);
+    if (!args.node_file.empty() || !args.msh_file.empty()) {
+      if (!args.node_file.empty()) write_node(args.node_file, points);
+      if (!args.msh_file.empty()) write_msh(args.msh_file, points);
       return 0;
     }
     const auto start = std::chrono::steady_clock::now();

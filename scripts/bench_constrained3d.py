@@ -17,7 +17,9 @@ RUNS times each; prints a Markdown table row per (input, program): input vertice
 Steiner points (dtlab: its --stats on edges / faces / interior; TetGen: "Mesh points" less
 "Input points", split as its report splits them), tetrahedra, seconds (each program's own timing:
 dtlab's "total", wall clock; TetGen's "Total running seconds" less its "Output seconds", clock(),
-CPU time; minimum over the runs) and time / TetGen. An input a program refuses gets its first
+CPU time; median over the runs with the spread min–max) and time / TetGen (ratio of the
+medians). The runs are interleaved: round 1 of every program on an input, then round 2, ..., so
+that a burst of load on the machine falls on every program alike. An input a program refuses gets its first
 line of error instead (dtlab names open or self-intersecting surfaces; TetGen may return zero
 tetrahedra with exit status 0, which is reported as such). A machine and commit line comes first.
 With --merge-coplanar dtlab joins neighbouring coplanar facets with equal references and
@@ -25,7 +27,7 @@ triangulates them again (TetGen's default; -M turns it off); its row gives how m
 --no-times leaves the seconds out (on a loaded machine they mean nothing; Steiner counts do).
 
   scripts/bench_constrained3d.py --build build
-  scripts/bench_constrained3d.py --build build --runs 5 --cgal-meshes elephant.off,eight.off
+  scripts/bench_constrained3d.py --build build --runs 7 --cgal-meshes elephant.off,eight.off
   scripts/bench_constrained3d.py --build build --update-readme     # the table into docs/performance.md
   scripts/bench_constrained3d.py --build build-x --inputs build/bench/constrained3d_inputs --runs 1 --no-times
 """
@@ -34,13 +36,14 @@ import json
 import os
 import re
 import shutil
+import statistics
 import subprocess
 import sys
 import tarfile
 import tempfile
 
 import readme_tables
-from bench_delaunay2d import fmt, machine, progress
+from bench_delaunay2d import fmt, fmt_spread, machine, progress
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
@@ -99,12 +102,17 @@ def tetgen_once(path, work, timeout, switches="-p"):
             "split": " / ".join(str(x) for x in parts), "tets": tets}
 
 
-def best(results):
+def summarise(results):
+    """One row from a program's runs on one input: the counts of its first successful run (they
+    are the same in every run: the programs are deterministic), seconds the median of the runs
+    and times the list; the first error when no run succeeded."""
     ok = [r for r in results if "error" not in r]
     if not ok:
         return results[0]
-    b = dict(min(ok, key=lambda r: r["seconds"]))
-    return b
+    row = dict(ok[0])
+    row["times"] = [r["seconds"] for r in ok]
+    row["seconds"] = statistics.median(row["times"])
+    return row
 
 
 def extract_meshes(names, into):
@@ -149,7 +157,7 @@ def gmsh_surfaces(sizes, into, timeout):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
-    ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--timeout", type=int, default=300, help="seconds per run")
     ap.add_argument("--cgal-meshes", default=DEFAULT_MESHES, help="comma-separated names in CGAL's data/meshes")
     ap.add_argument("--gmsh-sizes", default=DEFAULT_GMSH_SIZES,
@@ -189,10 +197,12 @@ def main():
             if have_tetgen:
                 programs.append(("tetgen", lambda p=path: tetgen_once(p, work, args.timeout)))
                 programs.append(("tetgen -M", lambda p=path: tetgen_once(p, work, args.timeout, "-pM")))
-            results = {}
-            for label, once in programs:
-                progress(f"bench_constrained3d: {name}, {label} ({args.runs} runs)")
-                results[label] = best([once() for _ in range(args.runs)])
+            runs = {label: [] for label, _ in programs}
+            for k in range(args.runs):
+                for label, once in programs:
+                    progress(f"bench_constrained3d: {name}, {label} (run {k + 1}/{args.runs})")
+                    runs[label].append(once())
+            results = {label: summarise(r) for label, r in runs.items()}
             size = next((r for r in results.values() if "points" in r), {})
             for label, r in results.items():
                 rows.append((name, size, label, r, results.get("tetgen")))
@@ -200,15 +210,15 @@ def main():
         load = ", ".join(f"{x:.1f}" for x in m["load_average"])
         lines = [f"Machine: {m['cpu']}, {m['cpus']} CPUs (load average {load} at the start); "
                  f"`{m['dtlab_version']}` (tree at {m['commit']}); TetGen 1.5 (Debian). One process per run; "
-                 f"seconds: minimum of {args.runs} runs, each program's own timing (TetGen's: CPU time, less "
+                 f"seconds: median (min–max) of {args.runs} interleaved runs, each program's own timing (TetGen's: CPU time, less "
                  f"its file output); Steiner points split as on edges / on faces / interior (TetGen: on "
                  f"segments / in facets / in volume).", "",
                  "| input | vertices | triangles | program | Steiner points | split | tetrahedra |" +
-                 ("" if args.no_times else " seconds | time / TetGen |"),
+                 ("" if args.no_times else " seconds: median (min–max) | time / TetGen (medians) |"),
                  "|---|---|---|---|---|---|---|" + ("" if args.no_times else "---|---|")]
         if args.no_times:
-            lines[0] = lines[0].replace("seconds: minimum of", "seconds left out (--no-times);").replace(
-                " runs, each program's own timing (TetGen's: CPU time, less its file output)", " run(s)")
+            lines[0] = lines[0].replace("seconds: median (min–max) of", "seconds left out (--no-times);").replace(
+                " interleaved runs, each program's own timing (TetGen's: CPU time, less its file output)", " run(s)")
         for name, size, label, r, t in rows:
             if r.get("merged"):
                 label += f" ({r['merged']} facets merged)"
@@ -217,7 +227,7 @@ def main():
                 lines.append(f"{head} refused: {r['error']} | | |" + ("" if args.no_times else " | |"))
                 continue
             ratio = fmt(r["seconds"] / t["seconds"], 2) if t and "error" not in t and t["seconds"] > 0 else "-"
-            times = "" if args.no_times else f" {fmt(r['seconds'])} | {ratio} |"
+            times = "" if args.no_times else f" {fmt_spread(r['times'])} | {ratio} |"
             lines.append(f"{head} {r['steiner']} | {r['split']} | {r['tets']} |{times}")
         text = "\n".join(lines) + "\n"
         print(text)

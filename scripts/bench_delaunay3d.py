@@ -1,33 +1,42 @@
 #!/usr/bin/env python3
-"""Time and peak memory of every 3D Delaunay variant beside CGAL and TetGen, one process per run.
+"""Time and peak memory of every 3D Delaunay variant beside CGAL, TetGen and Gmsh's HXT, one
+process per run.
 
 For each size n and distribution D (verify/generators/points3d.hpp), runs on the same points:
     build/dtlab delaunay --dim 3 --random N --distribution D --seed S --algo A --stats [--threads T]
     build/bench/cgal_delaunay3d_run_bench --random N --distribution D --seed S       (CGAL DT3)
     tetgen -NEFIB points.node    (TetGen 1.5, Debian's binary; the points written once per case by
                                   cgal_delaunay3d_run_bench --write-node; no output files)
+    Delaunay_CLI -i points.msh -t T -s -v 1   (Gmsh's HXT, Marot-Pellerin-Remacle 2019, when
+                                  --hxt PATH is given, once per --threads value as hxt-tT; the
+                                  points written once per case by --write-msh; no output file)
 RUNS times each (interleaved: round 1 of every program, then round 2, ...), and prints a Markdown
 table row per (n, distribution, program): seconds (the program's own timing of the
 tetrahedralization: dtlab's and CGAL's JSON: wall clock; TetGen's "Delaunay seconds" line: its
-clock(), CPU time; minimum over the runs), million tetrahedra per minute, peak resident MB of the process (maximum over the runs),
-bytes of peak RSS per tetrahedron, time / CGAL, time / TetGen and time / the same program on
-uniform points of the same n (ratios of this invocation's minima), nanoseconds per point, and the
-process's CPU time. Then, per program, how flat the time per point stays from 10^4
-to the largest n (issue 5 asks for +-20 % from 10^4 to 10^7). A machine, compiler and commit line
-comes first. The raw measurements go to a JSON file.
+clock(), CPU time; HXT's "Init + BRIO + Delaunay took" line: wall clock, to 10 ms) as the median
+over the runs with the spread (min-max), the process's CPU time (user + system, point generation
+or reading included: median and spread), million tetrahedra per minute, peak resident MB of the
+process (maximum over the runs), bytes of peak RSS per tetrahedron, time / CGAL, time / HXT on as
+many threads (a sequential variant: HXT on 1), time / TetGen and time / the same program on
+uniform points of the same n (ratios of this invocation's medians), and nanoseconds per point.
+Then, per program and distribution, how flat the time per point stays from 10^4 to the largest n
+(issue 23 asks for +-20 % from 10^4 to 10^7). A machine, compiler, commit and load line comes
+first. The raw measurements go to a JSON file.
 
 A variant that is registered but not written yet (dtlab says "not built yet") is left out; a
 variant with "parallel" in its name runs once per --threads value, as "parallel-t1", ...; when
 the dtlab binary has no --threads option, those rows are left out.
 
-TetGen's peak RSS is taken with GNU time (/usr/bin/time, Debian's `time` package): Linux carries
+Peers' peak RSS is taken with GNU time (/usr/bin/time, Debian's `time` package): Linux carries
 a process's peak RSS across exec, so a program started from Python would report Python's resident
-size as its floor, and TetGen cannot report its own. Without /usr/bin/time that column is "-".
+size as its floor, and TetGen and HXT cannot report their own. Without /usr/bin/time that column
+is "-". HXT counts its ghost tetrahedra in "Mesh contains N tetrahedra": its rows give that count
+as printed, and the check that all programs made as many tetrahedra leaves HXT out.
 
-  scripts/bench_delaunay3d.py --build build                 # uniform 10^4..10^6, the others at 10^5
+  scripts/bench_delaunay3d.py --build build                 # uniform 10^4..10^6, the others at 10^5, 5 runs
   scripts/bench_delaunay3d.py --build build --large         # and 10^7 uniform
-  scripts/bench_delaunay3d.py --sizes 1000000 --distributions grid,sphere --distribution-sizes 1000000
-  scripts/bench_delaunay3d.py --sizes 100000 --runs 5 --no-tetgen
+  scripts/bench_delaunay3d.py --sizes 1000000 --distributions grid,clustered --distribution-sizes 1000000
+  scripts/bench_delaunay3d.py --sizes 1000000 --distributions '' --hxt /tmp/peers/hxt/build/Delaunay_CLI
   scripts/bench_delaunay3d.py --from-json build/bench_delaunay3d.json --update-readme
 
 --update-readme writes the table between <!-- perf-delaunay3d:begin --> and
@@ -40,23 +49,27 @@ import os
 import re
 import shutil
 import signal
+import statistics
 import subprocess
 import sys
 import tempfile
 
 import readme_tables
-from bench_delaunay2d import children_cpu, fmt, machine, progress, run_once, size_label
+from bench_delaunay2d import (children_cpu, fmt, fmt_spread, load_text, machine, progress, run_once, run_peer,
+                              size_label)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CGAL = "cgal"
 TETGEN = "tetgen"
+HXT = "hxt"  # programs hxt-t1, hxt-t2, ...
 PEERS = (CGAL, TETGEN)
 # TetGen times its phases with clock(), the process's CPU time; dtlab and CGAL report wall time.
 TETGEN_NOTE = ("‡ TetGen's own timing is CPU time (clock()), the others' wall time: equal on an idle "
                "machine; on a busy one the ratios to TetGen favour TetGen (compare the process CPU column)")
 PRODUCER = ("Produced by `scripts/bench_delaunay3d.py --update-readme` (dtlab's variants through "
             "`dtlab delaunay --dim 3 --stats`, CGAL's Delaunay_triangulation_3 through "
-            "`bench/cgal_delaunay3d_run_bench`, TetGen 1.5 through its Debian binary, same points).")
+            "`bench/cgal_delaunay3d_run_bench`, TetGen 1.5 through its Debian binary, Gmsh's HXT through "
+            "its `Delaunay_CLI`, same points).")
 
 
 def dtlab_variants(dtlab, threads):
@@ -82,9 +95,27 @@ def dtlab_variants(dtlab, threads):
 
 
 def split_threads(program):
-    """("parallel", 2) for "parallel-t2"; (program, None) otherwise."""
-    m = re.fullmatch(r"(.*parallel.*)-t(\d+)", program)
+    """("parallel", 2) for "parallel-t2", ("hxt", 1) for "hxt-t1"; (program, None) otherwise."""
+    m = re.fullmatch(r"(.*parallel.*|hxt)-t(\d+)", program)
     return (m.group(1), int(m.group(2))) if m else (program, None)
+
+
+def is_hxt(program):
+    return split_threads(program)[0] == HXT
+
+
+def is_peer(program):
+    return program in PEERS or is_hxt(program)
+
+
+def parse_hxt(text, n):
+    """HXT's Delaunay_CLI -s prints "Mesh contains T tetrahedra and V vertices" (T with ghosts)
+    and "Init + BRIO + Delaunay took S seconds"."""
+    seconds = re.search(r"Init \+ BRIO \+ Delaunay took ([0-9.]+) seconds", text)
+    tets = re.search(r"Mesh contains (\d+) tetrahedra", text)
+    if not seconds or not tets:
+        return "no 'Init + BRIO + Delaunay took' / 'Mesh contains' line in HXT's output"
+    return {"points": n, "elements": int(tets.group(1)), "seconds": float(seconds.group(1))}
 
 
 def tetgen_once(args, node_file, n, timeout):
@@ -132,9 +163,12 @@ def measure(args, programs, cases, save):
         for n, distribution in cases:
             done = set()
             node_file = os.path.join(scratch, f"{distribution}-{n}.node")
-            if TETGEN in programs:
+            msh_file = os.path.join(scratch, f"{distribution}-{n}.msh")
+            writes = (["--write-node", node_file] if TETGEN in programs else []) + \
+                (["--write-msh", msh_file] if any(is_hxt(p) for p in programs) else [])
+            if writes:
                 subprocess.run([args.cgal, "--random", str(n), "--distribution", distribution, "--seed",
-                                str(args.seed), "--write-node", node_file], check=True)
+                                str(args.seed)] + writes, check=True)
             for run in range(args.runs):
                 for program in programs:
                     if program in done:
@@ -144,6 +178,9 @@ def measure(args, programs, cases, save):
                     if program == TETGEN:
                         cmd = [args.tetgen, "-NEFIB", node_file]
                         result, error = tetgen_once(args, node_file, n, timeout)
+                    elif is_hxt(program):
+                        cmd = [args.hxt, "-i", msh_file, "-t", str(split_threads(program)[1]), "-s", "-v", "1"]
+                        result, error = run_peer(cmd, timeout, args.gnu_time, lambda text: parse_hxt(text, n))
                     else:
                         cmd = command(args, program, n, distribution)
                         result, error = run_once(cmd, timeout)
@@ -162,11 +199,12 @@ def measure(args, programs, cases, save):
                             done.add(program)
                         mb = result.get("peak_rss_mb")
                         progress(f"  n={n} {distribution} {program} run {run + 1}/{args.runs}: "
-                                 f"{result['seconds']:.3f} s, "
+                                 f"{result['seconds']:.3f} s, cpu {cpu:.3f} s, "
                                  + (f"{mb:.0f} MB" if mb is not None else "peak MB not measured"))
                     records.append(rec)
-            if os.path.exists(node_file):
-                os.remove(node_file)
+            for f in (node_file, msh_file):
+                if os.path.exists(f):
+                    os.remove(f)
             save(records)
     finally:
         shutil.rmtree(scratch, ignore_errors=True)
@@ -174,18 +212,21 @@ def measure(args, programs, cases, save):
 
 
 def summarise(records):
-    """{(n, distribution, program): {"seconds", "cpu", "mb", "elements", "errors", "runs"}}: min
-    seconds and CPU, max MB over the runs."""
+    """{(n, distribution, program): {"seconds", "cpu", "mb", "times", "cpus", "elements", "errors",
+    "runs"}}: seconds and cpu are the medians of the runs' lists times and cpus, mb the maximum."""
     out = {}
     for r in records:
-        s = out.setdefault((r["n"], r["distribution"], r["program"]), {"seconds": None, "cpu": None, "mb": None,
-                                                    "elements": set(), "errors": [], "runs": 0})
+        s = out.setdefault((r["n"], r["distribution"], r["program"]),
+                           {"seconds": None, "cpu": None, "mb": None, "times": [], "cpus": [], "elements": set(),
+                            "errors": [], "runs": 0})
         if "error" in r:
             s["errors"].append(r["error"])
             continue
         s["runs"] += 1
-        s["seconds"] = r["seconds"] if s["seconds"] is None else min(s["seconds"], r["seconds"])
-        s["cpu"] = r["process_cpu_seconds"] if s["cpu"] is None else min(s["cpu"], r["process_cpu_seconds"])
+        s["times"].append(r["seconds"])
+        s["cpus"].append(r["process_cpu_seconds"])
+        s["seconds"] = statistics.median(s["times"])
+        s["cpu"] = statistics.median(s["cpus"])
         if r.get("peak_rss_mb") is not None:
             s["mb"] = r["peak_rss_mb"] if s["mb"] is None else max(s["mb"], r["peak_rss_mb"])
         s["elements"].add(r["elements"])
@@ -196,9 +237,17 @@ def ratio(s, peer):
     return s["seconds"] / peer["seconds"] if peer.get("seconds") and s["seconds"] else None
 
 
+def hxt_peer(program, programs):
+    """The HXT program on as many threads as `program` (a sequential variant: 1), if it ran."""
+    threads = split_threads(program)[1] or 1
+    name = f"{HXT}-t{threads}"
+    return name if name in programs else None
+
+
 def table(summary, programs, cases, runs):
-    head = ["n", "distribution", "program", "seconds", "Mtets/min", "peak MB", "bytes/tet", "time / CGAL",
-            "time / TetGen", "time / uniform", "ns/point", "process CPU s"]
+    head = ["n", "distribution", "program", "seconds: median (min–max)", "process CPU s: median (min–max)",
+            "Mtets/min", "peak MB", "bytes/tet", "time / CGAL", "time / HXT same threads", "time / TetGen",
+            "time / uniform", "ns/point"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     notes = []
     for n, distribution in cases:
@@ -209,21 +258,25 @@ def table(summary, programs, cases, runs):
             s = summary.get((n, distribution, program))
             if s is None:
                 continue
-            counts |= s["elements"]
+            if not is_hxt(program):  # HXT's count holds its ghosts
+                counts |= s["elements"]
             if s["runs"] == 0:
                 lines.append(f"| {size_label(n)} | {distribution} | {program} | error: {s['errors'][0]} |"
                              + " |" * (len(head) - 4))
                 continue
             uniform = summary.get((n, "uniform", program), {})
+            hxt_name = hxt_peer(program, programs)
+            hxt = summary.get((n, distribution, hxt_name), {}) if hxt_name and not is_peer(program) else {}
             tets = min(s["elements"])
             per_minute = tets * 60.0 / s["seconds"] / 1e6 if s["seconds"] else None
             per_tet = s["mb"] * 1024 * 1024 / tets if s["mb"] is not None and tets else None
-            name = f"**{program}**" if program in PEERS else program
-            mark = (" †" if s["runs"] < runs else "") + (" ‡" if program == TETGEN else "")
+            name = f"**{program}**" if is_peer(program) else program
+            mark = (" †" if s["runs"] < runs else "") + (" ‡" if program == TETGEN else "") + \
+                (" §" if is_hxt(program) else "")
             lines.append("| " + " | ".join([
-                size_label(n), distribution, name, fmt(s["seconds"]) + mark,
-                fmt(per_minute), fmt(s["mb"]), fmt(per_tet), fmt(ratio(s, cgal), 2), fmt(ratio(s, tetgen), 2),
-                fmt(ratio(s, uniform), 2), fmt(s["seconds"] * 1e9 / n), fmt(s["cpu"])]) + " |")
+                size_label(n), distribution, name, fmt_spread(s["times"]) + mark, fmt_spread(s["cpus"]),
+                fmt(per_minute), fmt(s["mb"]), fmt(per_tet), fmt(ratio(s, cgal), 2), fmt(ratio(s, hxt), 2),
+                fmt(ratio(s, tetgen), 2), fmt(ratio(s, uniform), 2), fmt(s["seconds"] * 1e9 / n)]) + " |")
             if s["errors"]:
                 notes.append(f"{program} on {distribution} n={n}: {len(s['errors'])} failed run(s): "
                              f"{s['errors'][0]}")
@@ -232,6 +285,8 @@ def table(summary, programs, cases, runs):
             notes.append(f"† fewer runs than {runs}: a run longer than the --slow limit is not repeated")
         if TETGEN in programs and not any(note.startswith("‡") for note in notes):
             notes.append(TETGEN_NOTE)
+        if any(is_hxt(p) for p in programs) and not any(note.startswith("§") for note in notes):
+            notes.append(HXT_NOTE)
         if len(counts) > 1:
             notes.append(f"n={n} {distribution}: the programs disagree on the number of tetrahedra "
                          f"({sorted(counts)}): different points, duplicates or degeneracies handled "
@@ -240,30 +295,32 @@ def table(summary, programs, cases, runs):
 
 
 def flatness(summary, programs, cases):
-    """One line per program: ns per point on uniform points at each n >= 10^4 and the half-width
-    of the band around their middle that holds them all, (max - min) / (max + min)."""
-    sizes = sorted(n for n, d in cases if d == "uniform" and n >= 10_000)
+    """One line per (program, distribution) measured at two sizes >= 10^4 or more: ns per point
+    (median seconds / n) at each n and the half-width of the band around their middle that holds
+    them all, (max - min) / (max + min)."""
     lines = []
-    for program in programs:
-        per_point = [(n, summary[(n, "uniform", program)]["seconds"] * 1e9 / n) for n in sizes
-                     if summary.get((n, "uniform", program), {}).get("seconds")]
-        if len(per_point) < 2:
-            continue
-        values = [v for _, v in per_point]
-        band = 100.0 * (max(values) - min(values)) / (max(values) + min(values))
-        series = ", ".join(f"{fmt(v)} at {size_label(n)}" for n, v in per_point)
-        lines.append(f"{program}: ns per point {series}: flat within ±{band:.0f} %")
+    for distribution in dict.fromkeys(d for _, d in cases):
+        sizes = sorted(n for n, d in cases if d == distribution and n >= 10_000)
+        for program in programs:
+            per_point = [(n, summary[(n, distribution, program)]["seconds"] * 1e9 / n) for n in sizes
+                         if summary.get((n, distribution, program), {}).get("seconds")]
+            if len(per_point) < 2:
+                continue
+            values = [v for _, v in per_point]
+            band = 100.0 * (max(values) - min(values)) / (max(values) + min(values))
+            series = ", ".join(f"{fmt(v)} at {size_label(n)}" for n, v in per_point)
+            lines.append(f"{program}, {distribution}: ns per point {series}: flat within ±{band:.0f} %")
     return lines
 
 
 def machine_line(m, runs, seed):
-    load = ", ".join(f"{x:.1f}" for x in m.get("load_average", []))
-    return (f"Machine: {m['cpu']}, {m['cpus']} CPUs (load average {load} at the start); "
+    return (f"Machine: {m['cpu']}, {m['cpus']} CPUs (1-minute load average {load_text(m)}); "
             f"compiler {m['compiler']}; `{m.get('dtlab_version', 'dtlab')}` (tree at {m['commit']}); "
-            f"CGAL {m.get('cgal', 'unknown')}; TetGen {m.get('tetgen', 'unknown')}. One process per run, "
-            f"points of verify/generators/points3d.hpp, seed {seed}; seconds: each program's own timing of the "
-            f"tetrahedralization, minimum of {runs} runs; peak MB: maximum; bytes/tet: peak RSS per "
-            f"finite tetrahedron; ratios of minima from this one invocation.")
+            f"CGAL {m.get('cgal', 'unknown')}; TetGen {m.get('tetgen', 'unknown')}; HXT {m.get('hxt', 'not run')}. "
+            f"One process per run, points of verify/generators/points3d.hpp, seed {seed}, {runs} interleaved runs; "
+            f"seconds: each program's own timing of the tetrahedralization, median (min–max) of the runs; "
+            f"process CPU likewise; peak MB: maximum; bytes/tet: peak RSS per finite tetrahedron; ratios of "
+            f"medians from this one invocation.")
 
 
 def markdown(data):
@@ -274,7 +331,7 @@ def markdown(data):
     text = machine_line(data["machine"], data["runs"], data["seed"]) + "\n\n" + body + "\n"
     flat = flatness(summary, programs, cases)
     if flat:
-        text += "\nTime per point on uniform points from 10^4 up:\n\n" + "\n".join(f"- {line}" for line in flat) + "\n"
+        text += "\nTime per point from 10^4 up (medians):\n\n" + "\n".join(f"- {line}" for line in flat) + "\n"
     if notes:
         text += "\n" + "\n".join(f"- {note}" for note in notes) + "\n"
     return text
@@ -308,6 +365,12 @@ def programs_for(args):
             progress("TetGen needs the CGAL runner to write its points: left out")
         else:
             programs.append(TETGEN)
+    if args.hxt:
+        if not os.access(args.hxt, os.X_OK):
+            raise SystemExit(f"{args.hxt} is not an executable (--hxt)")
+        if not os.access(args.cgal, os.X_OK):
+            raise SystemExit("--hxt needs the CGAL runner, which writes HXT's points")
+        programs += [f"{HXT}-t{t}" for t in args.threads]
     return programs
 
 
@@ -316,11 +379,12 @@ def add_arguments(ap):
     ap.add_argument("--dtlab", help="the dtlab binary (default BUILD/dtlab)")
     ap.add_argument("--cgal", help="the CGAL runner (default BUILD/bench/cgal_delaunay3d_run_bench)")
     ap.add_argument("--tetgen", default="tetgen", help="the TetGen binary")
-    ap.add_argument("--gnu-time", default="/usr/bin/time", help="GNU time, for TetGen's peak RSS")
+    ap.add_argument("--gnu-time", default="/usr/bin/time", help="GNU time, for TetGen's and HXT's peak RSS")
     ap.add_argument("--variants", help="comma-separated programs (default: every built variant)")
     ap.add_argument("--threads", default="1,2", help="thread counts of a parallel variant")
     ap.add_argument("--no-cgal", action="store_true")
     ap.add_argument("--no-tetgen", action="store_true")
+    ap.add_argument("--hxt", help="Gmsh HXT's Delaunay_CLI: run it beside dtlab, once per --threads value")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=600,
                     help="seconds per run of 10^6 points (scaled up with n); a run past it is killed")
@@ -338,6 +402,7 @@ def run(args, cases, path):
     programs = programs_for(args)
     m = machine(args.dtlab)
     m["tetgen"] = tetgen_version(args.tetgen) if TETGEN in programs else "not run"
+    m["hxt"] = f"Gmsh contrib/hxt ({args.hxt})" if args.hxt else "not run"
     progress(f"3D: {len(cases)} cases x {len(programs)} programs x {args.runs} runs: {', '.join(programs)}")
     data = {"machine": m, "programs": programs, "cases": cases, "runs": args.runs, "seed": args.seed,
             "records": []}
@@ -362,7 +427,7 @@ def main():
                     help="other distributions (points3d.hpp names), at --distribution-sizes")
     ap.add_argument("--distribution-sizes", default="100000")
     ap.add_argument("--large", action="store_true", help="also 10^7 uniform points")
-    ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--json", help="write the measurements here (default BUILD/bench_delaunay3d.json)")
     ap.add_argument("--from-json", help="print the table of an earlier run instead of measuring")
     ap.add_argument("--update-readme", action="store_true", help="write the table into docs/performance.md")

@@ -3,7 +3,8 @@
 
 Runs build/bench/predicates_bench with --benchmark_format=json and repetitions (or reads a JSON
 file it wrote before), and prints ns per call (CPU time: the machine may be shared) as
-"min / median" over the repetitions, with ratios taken from the minima:
+"median (min–max)" over the repetitions, interleaved in random order
+(--benchmark_enable_random_interleaving), with ratios of the medians:
   1. the predicates as callers use them: plain double determinant, dtlab filtered, dtlab
      uncounted, CGAL Epick, filtered/plain and filtered/CGAL, per input distribution;
      one table per consumer of the sign (sum: the predicate's own cost; branch: what a caller
@@ -34,7 +35,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 def run_benchmark(binary, repetitions, min_time, bench_filter):
     cmd = [binary, "--benchmark_format=json", f"--benchmark_repetitions={repetitions}",
-           f"--benchmark_min_time={min_time}"]
+           f"--benchmark_min_time={min_time}", "--benchmark_enable_random_interleaving=true"]
     if bench_filter:
         cmd.append(f"--benchmark_filter={bench_filter}")
     print("running: " + " ".join(cmd), file=sys.stderr)
@@ -70,8 +71,8 @@ def cell(runs, key):
         return "–", None
     if e["error"]:
         return "error", None
-    lo, med = min(e["ns"]), statistics.median(e["ns"])
-    return f"{fmt_ns(lo)} / {fmt_ns(med)}", lo
+    med, lo, hi = statistics.median(e["ns"]), min(e["ns"]), max(e["ns"])
+    return f"{fmt_ns(med)} ({fmt_ns(lo)}–{fmt_ns(hi)})", med
 
 
 def ratio(a, b):
@@ -84,11 +85,11 @@ def caller_table(runs, dists, consumer):
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for p in PREDICATES:
         for d in dists:
-            row, mins = [p, d], {}
+            row, medians = [p, d], {}
             for impl, _ in CALLER_IMPLS:
-                text, mins[impl] = cell(runs, (p, impl, d, consumer))
+                text, medians[impl] = cell(runs, (p, impl, d, consumer))
                 row.append(text)
-            row += [ratio(mins["filtered"], mins["plain"]), ratio(mins["filtered"], mins["cgal_epick"])]
+            row += [ratio(medians["filtered"], medians["plain"]), ratio(medians["filtered"], medians["cgal_epick"])]
             if any(key[0] == p and key[2] == d for key in runs):
                 lines.append("| " + " | ".join(row) + " |")
     return "\n".join(lines)
@@ -127,7 +128,8 @@ def machine_line(data, repetitions):
             f"compiler {c.get('compiler')} ({c.get('build_type')}, flags `{c.get('flags')}`); "
             f"dtlab {c.get('dtlab_commit')}; CGAL {c.get('cgal', 'not built')}; "
             f"{c.get('cases_per_iteration')} cases per distribution; "
-            f"ns per call, CPU time, min / median of {repetitions} repetitions; ratios of minima.")
+            f"ns per call, CPU time, median (min–max) of {repetitions} repetitions in random interleaved "
+            f"order; ratios of medians.")
 
 
 PRODUCER = "Produced by `scripts/bench_predicates_table.py --update-readme` (bench/predicates_bench)."
@@ -144,10 +146,10 @@ def markdown(data, dists):
     out = [machine_line(data, repetitions) + "\n"]
     for consumer, what in (("sum", "sign summed, no branch on it: the predicate's own cost"),
                            ("branch", "caller branches on the sign, as a walk or cavity search does")):
-        out.append(f"**Predicates as called** ({what}); ns per call, min / median:\n")
+        out.append(f"**Predicates as called** ({what}); ns per call, median (min–max):\n")
         out.append(caller_table(runs, dists, consumer) + "\n")
     all_dists = ["random", "near", "degenerate"]
-    out.append("**Stages alone** (sign summed); ns per call, min / median, and the share of cases each "
+    out.append("**Stages alone** (sign summed); ns per call, median (min–max), and the share of cases each "
                "filter stage leaves undecided:\n")
     out.append(stage_table(runs, all_dists))
     return "\n".join(out)
@@ -158,7 +160,7 @@ def main():
     ap.add_argument("--binary", default=os.path.join(ROOT, "build", "bench", "predicates_bench"))
     ap.add_argument("--json", help="read this JSON output of predicates_bench instead of running it")
     ap.add_argument("--save-json", help="also write the raw JSON here")
-    ap.add_argument("--repetitions", type=int, default=3)
+    ap.add_argument("--repetitions", type=int, default=5)
     ap.add_argument("--min-time", type=float, default=0.2, help="seconds per repetition")
     ap.add_argument("--filter", default="", help="--benchmark_filter for the run")
     ap.add_argument("--dists", default="random,near,degenerate", help="distributions shown in the caller tables")
