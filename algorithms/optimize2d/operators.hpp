@@ -80,6 +80,9 @@ struct CollapseOptions {
   double long_length = kLongEdgeLength;    // no new edge may be longer than this
   double quality_limit = kCollapseQualityLimit;
   double margin = kImprovementMargin;
+  // try_boundary_collapse: how far the removed vertex may lie from the boundary edge that
+  // replaces its two (an absolute distance; 0: exactly on it, by orient2d).
+  double boundary_deviation = 0.0;
 };
 enum class CollapseCriterion : std::uint8_t {
   // The new worst Q_K of the ball is at most max(old worst, quality_limit): a size operation.
@@ -98,6 +101,18 @@ bool try_collapse(Mesh2& mesh, std::uint32_t h, const CollapseOptions& options =
 // join the queue). Returns the number of collapses.
 std::uint64_t collapse_pass(Mesh2& mesh, const CollapseOptions& options = {});
 
+// --- Boundary collapse (book §9.3.1; boundary_collapse.cpp) --------------------------------------
+// Removes boundary vertex v (kOnBoundary, not kFixed, exactly two constrained edges vu and vw of
+// one reference) onto w or u along the boundary, whichever leaves the better domain triangles:
+// every triangle around v (ghosts and exterior triangles included) takes the kept end, the two
+// boundary edges become one with their reference. Accepted when v lies within
+// options.boundary_deviation of the new boundary edge (0: on it, exactly), the link condition
+// holds, every new finite triangle is positive, no new domain edge is longer than long_length and
+// the domain triangles' worst Q_K stays at most max(old worst, quality_limit). True when done.
+bool try_boundary_collapse(Mesh2& mesh, std::uint32_t v, const CollapseOptions& options = {});
+// Collapses boundary edges shorter than short_length, shortest first. Returns the number done.
+std::uint64_t boundary_collapse_pass(Mesh2& mesh, const CollapseOptions& options = {});
+
 // --- Split (book §8.3.6) -----------------------------------------------------------------------
 struct SplitOptions {
   double long_length = kLongEdgeLength;  // split_pass: edges longer than this, in the metric
@@ -115,6 +130,11 @@ struct SplitOptions {
   // edge (ghosts included), the constraint and its reference carried to both halves, the new
   // vertex kOnBoundary. Off by default: the boundary discretisation is the input's.
   bool boundary = false;
+  // Where a boundary split puts its point (with `boundary`): given the constrained half-edge h
+  // (in a domain triangle) and the chord point a + s (b - a), a point of the boundary's smooth
+  // support (algorithms/adapt/boundary_curve2.hpp); empty: the chord point. A support point
+  // that would make a new triangle non-positive is replaced by the chord point.
+  std::function<Vec2(const Mesh2& mesh, std::uint32_t h, double s)> boundary_point;
   double swap_margin = kImprovementMargin;  // the swaps around each new vertex
   std::uint64_t max_vertices = 20'000'000;  // split_pass stops short of this many live vertices
 };
@@ -129,10 +149,14 @@ Vec2 metric_midpoint(const Vec2& a, const Metric2& ma, const Vec2& b, const Metr
 // options.short_length, or when the new domain triangles would be both worse (above the old
 // pair's worst and options.quality_limit) and thin (an altitude below options.min_height in the
 // metric). Returns the new vertex. No swaps here (split_pass does them).
-std::uint32_t try_split(Mesh2& mesh, std::uint32_t h, const MetricField2& field, const SplitOptions& options = {});
+// With options.boundary_point, a boundary split's point is the support's when valid; `fell_back`
+// (optional) tells whether the chord point had to be taken instead.
+std::uint32_t try_split(Mesh2& mesh, std::uint32_t h, const MetricField2& field, const SplitOptions& options = {},
+                        bool* fell_back = nullptr);
 struct SplitPassResult {
   std::uint64_t splits = 0;
   std::uint64_t swaps = 0;
+  std::uint64_t support_fallbacks = 0;  // boundary splits on the chord: the support point was refused
   bool limit_reached = false;  // stopped at options.max_vertices
 };
 // Splits every edge longer than long_length, longest first, each followed by swaps on the edges

@@ -33,6 +33,9 @@ struct Optimize2dOptions {
   std::uint32_t relocation_sweeps = 2;  // per round
   bool collapses = true;                // short edges (size) and needles (shape)
   bool splits = true;                   // long edges
+  // Boundary vertices that are neither kFixed nor corners collapsed along the boundary
+  // (boundary_collapse_pass, after collapse_pass): adaptation's coarsening of the boundary.
+  bool boundary_collapses = false;
   bool valence = false;                 // valence relaxation (§8.3.7) after the swaps
   double swap_margin = kImprovementMargin;  // try_swap's relative margin
   RelocateOptions relocate{};
@@ -47,7 +50,9 @@ struct Optimize2dStats {
   std::uint64_t relocations = 0;
   std::uint64_t swap_relocations = 0;  // try_swap_relocate moves kept (bad triangles only)
   std::uint64_t collapses = 0;
+  std::uint64_t boundary_collapses = 0;
   std::uint64_t splits = 0;
+  std::uint64_t boundary_support_fallbacks = 0;  // boundary splits put on the chord (support point refused)
   std::uint64_t valence_swaps = 0;
   std::uint32_t rounds = 0;
   // Q_K over the domain's triangles (kernel/quality.hpp, in the vertex metrics); the mean over

@@ -41,7 +41,9 @@ Vec2 metric_midpoint(const Vec2& a, const Metric2& ma, const Vec2& b, const Metr
   return a + s * (b - a);
 }
 
-std::uint32_t try_split(Mesh2& mesh, std::uint32_t h, const MetricField2& field, const SplitOptions& options) {
+std::uint32_t try_split(Mesh2& mesh, std::uint32_t h, const MetricField2& field, const SplitOptions& options,
+                        bool* fell_back) {
+  if (fell_back != nullptr) *fell_back = false;
   if (!mesh.in_domain(Mesh2::triangle_of(h))) {
     h = mesh.twin(h);
     if (!mesh.in_domain(Mesh2::triangle_of(h))) return Mesh2::kNone;
@@ -53,15 +55,27 @@ std::uint32_t try_split(Mesh2& mesh, std::uint32_t h, const MetricField2& field,
   // t1 = (p, a, b), t2 = (q, b, a); q is kInfinite when t2 is a ghost (its vertex 0).
   const std::uint32_t p = mesh.vertex_at(h), a = mesh.origin(h), b = mesh.destination(h), q = mesh.vertex_at(g);
   const double s = midpoint_parameter(mesh.point(a), mesh.metric(a), mesh.point(b), mesh.metric(b));
-  const Vec2 at = mesh.point(a) + s * (mesh.point(b) - mesh.point(a));
-  if (at == mesh.point(a) || at == mesh.point(b)) return Mesh2::kNone;
+  Vec2 at = mesh.point(a) + s * (mesh.point(b) - mesh.point(a));
   // The four new triangles, checked before anything changes (P is rounded: it may be a hair off ab).
-  auto positive = [&](std::uint32_t u, std::uint32_t w) {
-    return orient2d(mesh.point(u), mesh.point(w), at) == Sign::Positive;
+  auto valid = [&](const Vec2& x) {
+    if (x == mesh.point(a) || x == mesh.point(b)) return false;
+    auto positive = [&](std::uint32_t u, std::uint32_t w) {
+      return orient2d(mesh.point(u), mesh.point(w), x) == Sign::Positive;
+    };
+    // (p, a, P) and (p, P, b) positive: P strictly left of p -> a and right of p -> b.
+    if (!positive(p, a) || !positive(b, p)) return false;
+    return q == Mesh2::kInfinite || (positive(q, b) && positive(a, q));
   };
-  // (p, a, P) and (p, P, b) positive: P strictly left of p -> a and right of p -> b.
-  if (!positive(p, a) || !positive(b, p)) return Mesh2::kNone;
-  if (q != Mesh2::kInfinite && (!positive(q, b) || !positive(a, q))) return Mesh2::kNone;
+  bool chord = true;
+  if (locked && options.boundary_point && mesh.is_constrained(h)) {
+    const Vec2 on_support = options.boundary_point(mesh, h, s);
+    if (valid(on_support)) {
+      at = on_support;
+      chord = false;
+    }
+    if (fell_back != nullptr) *fell_back = chord;
+  }
+  if (chord && !valid(at)) return Mesh2::kNone;
   if (!coordinate_in_range(at.x) || !coordinate_in_range(at.y)) return Mesh2::kNone;
   const Metric2 metric = field ? field(at) : interpolate(mesh.metric(a), mesh.metric(b), s);
   // No spoke shorter than the unit bound: near an edge that may not be split (the input's
@@ -141,9 +155,11 @@ SplitPassResult split_pass(Mesh2& mesh, const MetricField2& field, const SplitOp
       result.limit_reached = true;
       break;
     }
-    const std::uint32_t v = try_split(mesh, h, field, options);
+    bool fell_back = false;
+    const std::uint32_t v = try_split(mesh, h, field, options, &fell_back);
     if (v == Mesh2::kNone) continue;
     ++result.splits;
+    if (fell_back) ++result.support_fallbacks;
     // Swaps on the edges of the new triangles (the ring of v and its spokes).
     mesh.ball(v, ring);
     seeds.clear();

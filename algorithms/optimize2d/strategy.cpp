@@ -130,9 +130,15 @@ Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const 
       stats.collapses += c;
       size_changes += c;
     }
+    if (options.boundary_collapses) {
+      const std::uint64_t c = boundary_collapse_pass(mesh, options.collapse);
+      stats.boundary_collapses += c;
+      size_changes += c;
+    }
     if (options.splits) {
       const SplitPassResult r = split_pass(mesh, field, options.split);
       stats.splits += r.splits;
+      stats.boundary_support_fallbacks += r.support_fallbacks;
       stats.swaps += r.swaps;
       size_changes += r.splits;
       if (r.limit_reached) {

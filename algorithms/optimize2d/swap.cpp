@@ -36,9 +36,21 @@ bool try_swap(Mesh2& mesh, std::uint32_t h, double margin) {
 
 SwapPassResult swap_pass(Mesh2& mesh, double margin, std::span<const std::uint32_t> seeds) {
   SwapPassResult result;
-  // One queue entry per edge: the smaller of its two half-edges, marked while queued.
-  std::vector<std::uint8_t> queued(3ull * mesh.triangle_capacity(), 0);
+  // One queue entry per edge: the smaller of its two half-edges, marked while queued. The marks
+  // live across calls (one buffer per thread, grown with the mesh, every mark cleared before
+  // returning): split_pass calls this after every split with a handful of seeds, and a fresh
+  // buffer per call would cost the size of the mesh each time.
+  thread_local std::vector<std::uint8_t> queued;
+  if (queued.size() < 3ull * mesh.triangle_capacity()) queued.resize(3ull * mesh.triangle_capacity(), 0);
   std::deque<std::uint32_t> queue;
+  // Every mark still set is cleared on the way out (the bound, or an exception).
+  struct ClearMarks {
+    std::vector<std::uint8_t>& marks;
+    std::deque<std::uint32_t>& left;
+    ~ClearMarks() {
+      for (const std::uint32_t h : left) marks[h] = 0;
+    }
+  } clear_marks{queued, queue};
   auto canonical = [&](std::uint32_t h) { return std::min(h, mesh.twin(h)); };
   auto push = [&](std::uint32_t h) {
     if (is_locked(mesh, h)) return;
