@@ -21,5 +21,6 @@ void add_mesh(CLI::App& app);
 void add_convert(CLI::App& app);
 void add_plot(CLI::App& app);
 void add_adapt(CLI::App& app);
+void add_metric(CLI::App& app);
 
 }  // namespace dtlab::cli

@@ -4,9 +4,11 @@ the CLI tests of `dtlab adapt`:
 
     analytic_sol.py MESH.mesh OUT.sol FIELD
 
-FIELD: size:H (the isotropic H^-2 I, written as the scalar H), linear:H0 (the 2D UGAWG "linear"
+FIELD: size:H (the isotropic H^-2 I, written as the scalar H), tanh:K (the scalar field
+tanh(K (y - 0.5 - 0.1 sin(2 pi x))), a solution with a layer), linear:H0 (the 2D UGAWG "linear"
 field: h_x = 0.1, h_y = H0 + 2 (0.1 - H0) |y - 0.5|, a symmetric tensor), or bad (a tensor that is
 not positive definite at vertex 2)."""
+import math
 import sys
 
 
@@ -26,6 +28,10 @@ def main():
     if field.startswith("size:"):
         kind = 1
         lines = [field[5:]] * len(points)
+    elif field.startswith("tanh:"):
+        kind = 1
+        k = float(field[5:])
+        lines = ["%.17g" % math.tanh(k * (p[1] - 0.5 - 0.1 * math.sin(2 * math.pi * p[0]))) for p in points]
     else:
         kind = 3
         for k, p in enumerate(points):

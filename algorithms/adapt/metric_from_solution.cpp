@@ -1,0 +1,230 @@
+// Metrics from solutions (metric_from_solution.hpp), one template for 2D and 3D.
+#include "algorithms/adapt/metric_from_solution.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+namespace {
+
+template <int D>
+struct Traits;
+template <>
+struct Traits<2> {
+  using Point = Vec2;
+  using Metric = Metric2;
+  using Eigen = MetricEigen2;
+  static constexpr double kLinfConstant = 2.0 / 9.0;
+};
+template <>
+struct Traits<3> {
+  using Point = Vec3;
+  using Metric = Metric3;
+  using Eigen = MetricEigen3;
+  static constexpr double kLinfConstant = 9.0 / 32.0;
+};
+
+template <int D>
+double element_measure(std::span<const typename Traits<D>::Point> points, const std::array<std::uint32_t, D + 1>& e) {
+  if constexpr (D == 2) {
+    return 0.5 * std::fabs(cross(points[e[1]] - points[e[0]], points[e[2]] - points[e[0]]));
+  } else {
+    return std::fabs(dot(cross(points[e[1]] - points[e[0]], points[e[2]] - points[e[0]]), points[e[3]] - points[e[0]])) /
+           6.0;
+  }
+}
+
+// ∫ q, P1: each element's measure times the mean of q at its vertices.
+template <int D>
+double integrate(std::span<const typename Traits<D>::Point> points,
+                 std::span<const std::array<std::uint32_t, D + 1>> elements, const std::vector<double>& q) {
+  double sum = 0.0;
+  for (const auto& e : elements) {
+    double mean = 0.0;
+    for (const std::uint32_t v : e) mean += q[v];
+    sum += element_measure<D>(points, e) * mean / (D + 1);
+  }
+  return sum;
+}
+
+template <int D>
+double diagonal(std::span<const typename Traits<D>::Point> points) {
+  typename Traits<D>::Point lo = points.empty() ? typename Traits<D>::Point{} : points[0], hi = lo;
+  for (const auto& p : points) {
+    lo.x = std::min(lo.x, p.x), hi.x = std::max(hi.x, p.x);
+    lo.y = std::min(lo.y, p.y), hi.y = std::max(hi.y, p.y);
+    if constexpr (D == 3) lo.z = std::min(lo.z, p.z), hi.z = std::max(hi.z, p.z);
+  }
+  return norm(hi - lo);
+}
+
+void check_positive(const std::optional<double>& x, const char* name) {
+  if (x && !(*x > 0.0 && std::isfinite(*x)))
+    throw InputError(std::string("metric from solution: ") + name + " = " + std::to_string(*x) +
+                     ": give a positive finite value");
+}
+
+template <int D>
+std::vector<typename Traits<D>::Metric> compute(std::span<const typename Traits<D>::Point> points,
+                                                std::span<const std::array<std::uint32_t, D + 1>> elements,
+                                                std::span<const std::vector<double>> fields,
+                                                const SolutionMetricOptions& options, SolutionMetricStats* stats) {
+  using Metric = typename Traits<D>::Metric;
+  if (fields.empty()) throw InputError("metric from solution: give at least one field");
+  if (options.complexity.has_value() == options.error.has_value())
+    throw InputError("metric from solution: give either a target complexity or a target error, not both nor neither");
+  check_positive(options.complexity, "complexity");
+  check_positive(options.error, "error");
+  check_positive(options.relative_cutoff, "relative cutoff");
+  check_positive(options.h_min, "h_min");
+  check_positive(options.h_max, "h_max");
+  if (!(options.p >= 1.0)) throw InputError("metric from solution: p = " + std::to_string(options.p) + ": give p >= 1");
+  const bool linf = std::isinf(options.p);
+  if (options.error && !linf) throw InputError("metric from solution: a target error goes with the L-infinity norm only; give a complexity for Lp");
+  if (options.gradation && !(*options.gradation >= 1.0 && std::isfinite(*options.gradation)))
+    throw InputError("metric from solution: gradation = " + std::to_string(*options.gradation) + ": give beta >= 1");
+  if (elements.empty()) throw InputError("metric from solution: the mesh has no element");
+  const double diag = diagonal<D>(points);
+  const double h_max = options.h_max.value_or(diag), h_min = options.h_min.value_or(1e-8 * diag);
+  if (!(h_min <= h_max))
+    throw InputError("metric from solution: h_min = " + std::to_string(h_min) + " exceeds h_max = " + std::to_string(h_max));
+  const std::size_t n = points.size();
+  std::vector<char> used(n, 0);
+  for (const auto& e : elements)
+    for (const std::uint32_t v : e)
+      if (v < n) used[v] = 1;
+
+  std::vector<Metric> result;
+  double complexity_before = 0.0;
+  for (std::size_t f = 0; f < fields.size(); ++f) {
+    const std::vector<double>& u = fields[f];
+    const auto hessian = recover_hessian(points, elements, std::span<const double>(u), options.recovery);
+    double u_max = 0.0;
+    for (std::size_t v = 0; v < n; ++v)
+      if (used[v]) u_max = std::max(u_max, std::fabs(u[v]));
+    // |H| per vertex, eigenvalues floored at a tiny fraction of the largest (det > 0 for the powers).
+    std::vector<typename Traits<D>::Eigen> abs_h(n);
+    double largest = 0.0;
+    for (std::size_t v = 0; v < n; ++v) {
+      if (!used[v]) continue;
+      Metric h;
+      std::copy(hessian[v].begin(), hessian[v].end(), h.m.begin());
+      abs_h[v] = eigen(h);
+      for (double& l : abs_h[v].values) {
+        l = std::fabs(l);
+        if (options.relative_cutoff) l /= std::max(std::fabs(u[v]), *options.relative_cutoff * u_max);
+        largest = std::max(largest, l);
+      }
+    }
+    if (!(largest > 0.0) && options.complexity)
+      throw InputError("metric from solution: field " + std::to_string(f + 1) +
+                       " is linear on the mesh (its recovered Hessian is 0): no complexity to distribute");
+    const double floor = largest > 0.0 ? 1e-12 * largest : 1.0;
+    std::vector<double> det(n, 0.0);
+    for (std::size_t v = 0; v < n; ++v) {
+      if (!used[v]) continue;
+      det[v] = 1.0;
+      for (double& l : abs_h[v].values) det[v] *= (l = std::max(l, floor));
+    }
+    // The scale of each vertex's |H|.
+    std::vector<double> scale(n, 0.0);
+    if (options.error) {
+      std::fill(scale.begin(), scale.end(), Traits<D>::kLinfConstant / *options.error);
+    } else {
+      const double exponent = linf ? 0.5 : options.p / (2.0 * options.p + D);
+      std::vector<double> q(n, 0.0);
+      for (std::size_t v = 0; v < n; ++v)
+        if (used[v]) q[v] = std::pow(det[v], exponent);
+      const double integral = integrate<D>(points, elements, q);
+      const double d_n = std::pow(*options.complexity, 2.0 / D) * std::pow(integral, -2.0 / D);
+      for (std::size_t v = 0; v < n; ++v)
+        if (used[v]) scale[v] = linf ? d_n : d_n * std::pow(det[v], -1.0 / (2.0 * options.p + D));
+    }
+    std::vector<Metric> m(n, Metric::isotropic(h_max));
+    for (std::size_t v = 0; v < n; ++v) {
+      if (!used[v]) continue;
+      typename Traits<D>::Eigen e = abs_h[v];
+      for (double& l : e.values) l *= scale[v];
+      m[v] = from_eigen(e);
+    }
+    if (result.empty()) {
+      result = std::move(m);
+    } else {
+      for (std::size_t v = 0; v < n; ++v)
+        if (used[v]) result[v] = intersect(result[v], m[v]);
+    }
+  }
+  complexity_before = metric_complexity(points, elements, std::span<const Metric>(result));
+  for (std::size_t v = 0; v < n; ++v) result[v] = used[v] ? clip(result[v], h_min, h_max) : Metric::isotropic(h_max);
+  std::uint32_t passes = 0;
+  if (options.gradation) {
+    std::set<std::pair<std::uint32_t, std::uint32_t>> unique;
+    for (const auto& e : elements)
+      for (int i = 0; i <= D; ++i)
+        for (int j = i + 1; j <= D; ++j) unique.emplace(std::min(e[i], e[j]), std::max(e[i], e[j]));
+    std::vector<std::array<std::uint32_t, 2>> edges;
+    for (const auto& [a, b] : unique) edges.push_back({a, b});
+    passes = apply_gradation(points, edges, std::span<Metric>(result), *options.gradation);
+  }
+  if (stats) {
+    stats->complexity_before_clipping = complexity_before;
+    stats->complexity = metric_complexity(points, elements, std::span<const Metric>(result));
+    stats->gradation_passes = passes;
+    stats->h_min = std::numeric_limits<double>::infinity();
+    stats->h_max = 0.0;
+    stats->max_anisotropy = 1.0;
+    for (std::size_t v = 0; v < n; ++v) {
+      if (!used[v]) continue;
+      const auto s = sizes(result[v]);
+      stats->h_max = std::max(stats->h_max, s.front());
+      stats->h_min = std::min(stats->h_min, s.back());
+      stats->max_anisotropy = std::max(stats->max_anisotropy, s.front() / s.back());
+    }
+  }
+  return result;
+}
+
+template <int D>
+double complexity_of(std::span<const typename Traits<D>::Point> points,
+                     std::span<const std::array<std::uint32_t, D + 1>> elements,
+                     std::span<const typename Traits<D>::Metric> metrics) {
+  std::vector<double> q(points.size(), 0.0);
+  for (const auto& e : elements)
+    for (const std::uint32_t v : e) q[v] = std::sqrt(std::max(0.0, metrics[v].determinant()));
+  return integrate<D>(points, elements, q);
+}
+
+}  // namespace
+
+std::vector<Metric2> metric_from_solutions(std::span<const Vec2> points,
+                                           std::span<const std::array<std::uint32_t, 3>> triangles,
+                                           std::span<const std::vector<double>> fields,
+                                           const SolutionMetricOptions& options, SolutionMetricStats* stats) {
+  return compute<2>(points, triangles, fields, options, stats);
+}
+
+std::vector<Metric3> metric_from_solutions(std::span<const Vec3> points,
+                                           std::span<const std::array<std::uint32_t, 4>> tetrahedra,
+                                           std::span<const std::vector<double>> fields,
+                                           const SolutionMetricOptions& options, SolutionMetricStats* stats) {
+  return compute<3>(points, tetrahedra, fields, options, stats);
+}
+
+double metric_complexity(std::span<const Vec2> points, std::span<const std::array<std::uint32_t, 3>> triangles,
+                         std::span<const Metric2> metrics) {
+  return complexity_of<2>(points, triangles, metrics);
+}
+
+double metric_complexity(std::span<const Vec3> points, std::span<const std::array<std::uint32_t, 4>> tetrahedra,
+                         std::span<const Metric3> metrics) {
+  return complexity_of<3>(points, tetrahedra, metrics);
+}
+
+}  // namespace dtlab

@@ -1,0 +1,77 @@
+// The metric that equidistributes the P1 interpolation error of a solution (book §12.2, whose
+// text the reference lost; the formulas are those of Frey and Alauzet 2005, "Anisotropic mesh
+// adaptation for CFD computations", CMAME 194, and of the continuous mesh framework, Loseille
+// and Alauzet 2011, SINUM 49):
+//  1. the Hessian H at the vertices (hessian.hpp), then |H| = R |Λ| R^T;
+//  2. relative error (optional, Frey–Alauzet §4.3): |H| / max(|u|, cutoff · max |u|);
+//  3. the norm:
+//     - L∞ with a target error ε: M = c_d / ε |H| (c_2 = 2/9, c_3 = 9/32: the constant of the
+//       interpolation error bound on a unit element);
+//     - Lp (p ≥ 1) with a target complexity N, the user's one knob (about the number of vertices):
+//       M = D_N det(|H|)^(-1/(2p+d)) |H|, D_N = N^(2/d) (∫ det(|H|)^(p/(2p+d)))^(-2/d), so that the
+//       continuous complexity ∫ sqrt(det M) is N; L∞ with a complexity is the limit p → ∞
+//       (D_N = N^(2/d) (∫ sqrt(det |H|))^(-2/d));
+//  4. the intersection of the metrics of several fields (book §9.5, §12.2.5: each field's metric
+//     by the same rule, then simultaneous reduction);
+//  5. the sizes clipped to [h_min, h_max] (an eigenvalue 0 of |H|, a direction where the field is
+//     linear, gets h_max), then the gradation (kernel/metric.hpp apply_gradation, h-grad β).
+// Integrals are P1 over the mesh: ∫ q = Σ_K |K| · (mean of q at K's vertices).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "algorithms/adapt/hessian.hpp"
+#include "kernel/metric.hpp"
+#include "kernel/vec.hpp"
+
+namespace dtlab {
+
+struct SolutionMetricOptions {
+  HessianRecovery recovery = HessianRecovery::LeastSquares;
+  // p of the Lp norm; infinity (the default) is the L∞ norm.
+  double p = std::numeric_limits<double>::infinity();
+  // Exactly one of the two: the target complexity N (> 0) or the target error ε (> 0, L∞ only).
+  std::optional<double> complexity;
+  std::optional<double> error;
+  // Relative error with this cutoff (> 0): |H| / max(|u|, cutoff · max |u|).
+  std::optional<double> relative_cutoff;
+  // Size bounds (0 < h_min <= h_max); absent: h_min = 1e-8 · diagonal, h_max = the diagonal.
+  std::optional<double> h_min, h_max;
+  // Gradation β >= 1 over the mesh's edges; absent: none.
+  std::optional<double> gradation;
+};
+
+struct SolutionMetricStats {
+  double complexity_before_clipping = 0.0;  // ∫ sqrt(det M) of the normalized metric (N when asked)
+  double complexity = 0.0;                  // the same of the final metric
+  double h_min = 0.0, h_max = 0.0;          // the smallest and largest size of the final metric
+  double max_anisotropy = 0.0;              // largest ratio of sizes at one vertex
+  std::uint32_t gradation_passes = 0;
+};
+
+// One field per entry of `fields` (each one value per point); the metric at every point (unused
+// points get h_max^-2 I). Throws InputError for bad options (naming them), for fields as
+// recover_hessian does, and when the fields are all exactly linear with a complexity asked (no
+// Hessian to distribute).
+std::vector<Metric2> metric_from_solutions(std::span<const Vec2> points,
+                                           std::span<const std::array<std::uint32_t, 3>> triangles,
+                                           std::span<const std::vector<double>> fields,
+                                           const SolutionMetricOptions& options, SolutionMetricStats* stats = nullptr);
+std::vector<Metric3> metric_from_solutions(std::span<const Vec3> points,
+                                           std::span<const std::array<std::uint32_t, 4>> tetrahedra,
+                                           std::span<const std::vector<double>> fields,
+                                           const SolutionMetricOptions& options, SolutionMetricStats* stats = nullptr);
+
+// ∫ sqrt(det M) over the mesh, P1: the continuous complexity (about the vertex count of a unit
+// mesh in M).
+double metric_complexity(std::span<const Vec2> points, std::span<const std::array<std::uint32_t, 3>> triangles,
+                         std::span<const Metric2> metrics);
+double metric_complexity(std::span<const Vec3> points, std::span<const std::array<std::uint32_t, 4>> tetrahedra,
+                         std::span<const Metric3> metrics);
+
+}  // namespace dtlab
