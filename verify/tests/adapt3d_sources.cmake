@@ -1,0 +1,5 @@
+# adapt3d_test calls run_adapt3 (apps/adapt3.cpp) directly, before apps/adapt.cpp registers it.
+if(TARGET adapt3d_test)
+  target_sources(adapt3d_test PRIVATE ${PROJECT_SOURCE_DIR}/apps/adapt3.cpp ${PROJECT_SOURCE_DIR}/apps/input_files.cpp)
+  target_include_directories(adapt3d_test PRIVATE ${PROJECT_SOURCE_DIR})
+endif()
