@@ -84,14 +84,14 @@ int run_adapt3(const AdaptRequest& request) {
   if (!request.output.empty()) write_mesh3(request.output, output_data(mesh, input));
 
   std::cout << "before:\n" << quality_table(stats.before) << "after:\n" << quality_table(stats.after);
-  std::cout << "operations: " << stats.collapses << " collapses, " << stats.splits << " splits, " << stats.face_swaps
+  std::cout << "operations: " << stats.collapses << " collapses, " << stats.splits << " splits, " << stats.boundary_splits << " boundary splits, " << stats.face_swaps
             << " face swaps, " << stats.shell_transformations << " shell transformations, " << stats.relocations
             << " relocations in " << stats.rounds << " rounds (" << stats.stopped_by << "), "
             << json_number(stats.seconds) << " s, " << json_number(stats.tetrahedra_per_second) << " tetrahedra/s\n";
   if (request.stats) {
     std::ostringstream json;
     json << "{\"input\":" << json_string(request.mesh) << ",\"dimension\":3,\"method\":" << json_string(request.method)
-         << ",\"collapses\":" << stats.collapses << ",\"splits\":" << stats.splits << ",\"face_swaps\":" << stats.face_swaps
+         << ",\"collapses\":" << stats.collapses << ",\"splits\":" << stats.splits << ",\"boundary_splits\":" << stats.boundary_splits << ",\"face_swaps\":" << stats.face_swaps
          << ",\"shell_transformations\":" << stats.shell_transformations << ",\"relocations\":" << stats.relocations
          << ",\"rounds\":" << stats.rounds << ",\"stopped_by\":" << json_string(stats.stopped_by)
          << ",\"seconds\":" << json_number(stats.seconds)

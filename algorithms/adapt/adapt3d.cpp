@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "algorithms/adapt/boundary_split3.hpp"
 #include "kernel/error.hpp"
 
 namespace dtlab {
@@ -39,6 +40,9 @@ Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOpti
   double share = stats.before.unit_edge_share;
   stats.stopped_by = "max_rounds";
   for (std::uint32_t r = 0; r < options.max_rounds; ++r) {
+    // The boundary first (§9.3.1: the surface mesh conforms to the metric, then the volume).
+    const std::uint64_t boundary_splits = options.boundary ? boundary_split_pass3(mesh, field, round.split) : 0;
+    stats.boundary_splits += boundary_splits;
     const Optimize3dStats s = optimize3d(mesh, round, field);
     ++stats.rounds;
     stats.collapses += s.collapses;
@@ -51,7 +55,7 @@ Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOpti
       break;
     }
     const QualityReport now = quality_in_metric(mesh);
-    const bool sizes_settled = (s.collapses + s.splits) * 1000 <= s.vertices_after;
+    const bool sizes_settled = (s.collapses + s.splits + boundary_splits) * 1000 <= s.vertices_after;
     const bool converged = std::fabs(now.unit_edge_share - share) < options.share_tolerance && sizes_settled;
     share = now.unit_edge_share;
     if (converged) {

@@ -5,9 +5,10 @@
 // transformations and relocations, all with the operators of algorithms/optimize3d, repeated in
 // rounds until the metric edge lengths stop changing.
 //
-// Scope of this version: the interior. The constrained boundary (facets, ridges, their vertices)
-// is kept as it is: boundary split, boundary collapse and the curved surface support are not
-// written yet (issue 18), so the boundary edges keep their input lengths.
+// Scope of this version: the interior, and the split of boundary edges (boundary_split3.hpp,
+// linear metric midpoint, references kept). Boundary collapse and the curved surface support are
+// not written yet (issue 18): boundary vertices are never removed and new ones lie on the
+// input's facets.
 #pragma once
 
 #include <cstdint>
@@ -27,11 +28,12 @@ struct Adapt3dOptions {
   double share_tolerance = 1e-3;
   std::uint32_t relocation_sweeps = 2;  // per round
   std::uint64_t max_vertices = 20'000'000;
+  bool boundary = true;  // split constrained edges longer than sqrt2 (boundary_split3.hpp)
 };
 
 struct Adapt3dStats {
   QualityReport before, after;  // measure_quality in the vertex metrics (UGAWG figures, book's Q)
-  std::uint64_t collapses = 0, splits = 0, face_swaps = 0, shell_transformations = 0, relocations = 0;
+  std::uint64_t collapses = 0, splits = 0, boundary_splits = 0, face_swaps = 0, shell_transformations = 0, relocations = 0;
   std::uint32_t rounds = 0;
   // "converged" (lengths stopped changing), "max_rounds", or optimize3d's "vertex_limit" /
   // "swap_limit".
@@ -43,7 +45,7 @@ struct Adapt3dStats {
 // The metrics of the mesh's live vertices are set from `metric` at their positions first.
 // Throws InputError when the mesh has no tetrahedron in its domain. The mesh passes
 // Mesh3::check() afterwards; constrained facets, edges and their references are unchanged.
-// Deterministic.
+// Deterministic. New boundary vertices stay kOnBoundary | kFixed.
 Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOptions& options = {});
 
 // measure_quality of the mesh's domain in its vertex metrics.
