@@ -1,0 +1,72 @@
+// 3D local mesh adaptation, book §9.3.1 (adapt3d.hpp): rounds of the optimize3d operators driven
+// by the background control space, stopped when the metric edge lengths converge.
+#include "algorithms/adapt/adapt3d.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "algorithms/adapt/boundary_split3.hpp"
+#include "kernel/error.hpp"
+
+namespace dtlab {
+
+QualityReport quality_in_metric(const Mesh3& mesh) {
+  std::vector<std::uint32_t> ids;
+  const MeshData3 data = mesh.domain(&ids);
+  std::vector<Metric3> metrics;
+  metrics.reserve(ids.size());
+  for (const std::uint32_t v : ids) metrics.push_back(mesh.metric(v));
+  return measure_quality(data.vertices, data.tetrahedra, metrics);
+}
+
+Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  Adapt3dStats stats;
+  // One walk hint shared by the calls: successive queries are near each other (same result
+  // whatever the hint: the walk ends in the tetrahedron holding the point).
+  auto hint = std::make_shared<std::uint32_t>(ControlSpace3::kNoHint);
+  const MetricField3 field = [&metric, hint](const Vec3& p) { return metric.metric_at(p, *hint); };
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v)
+    if (!mesh.is_dead_vertex(v)) mesh.set_metric(v, field(mesh.point(v)));
+  stats.before = quality_in_metric(mesh);
+  if (stats.before.elements == 0) throw InputError("adapt3d: the mesh has no tetrahedron in its domain");
+
+  Optimize3dOptions round;
+  round.max_rounds = 1;
+  round.relocation_sweeps = options.relocation_sweeps;
+  round.split.max_vertices = options.max_vertices;
+  double share = stats.before.unit_edge_share;
+  stats.stopped_by = "max_rounds";
+  for (std::uint32_t r = 0; r < options.max_rounds; ++r) {
+    // The boundary first (§9.3.1: the surface mesh conforms to the metric, then the volume).
+    const std::uint64_t boundary_splits = options.boundary ? boundary_split_pass3(mesh, field, round.split) : 0;
+    stats.boundary_splits += boundary_splits;
+    const Optimize3dStats s = optimize3d(mesh, round, field);
+    ++stats.rounds;
+    stats.collapses += s.collapses;
+    stats.splits += s.splits;
+    stats.face_swaps += s.face_swaps;
+    stats.shell_transformations += s.shell_transformations;
+    stats.relocations += s.relocations;
+    if (s.stopped_by == "vertex_limit" || s.stopped_by == "swap_limit") {
+      stats.stopped_by = s.stopped_by;
+      break;
+    }
+    const QualityReport now = quality_in_metric(mesh);
+    const bool sizes_settled = (s.collapses + s.splits + boundary_splits) * 1000 <= s.vertices_after;
+    const bool converged = std::fabs(now.unit_edge_share - share) < options.share_tolerance && sizes_settled;
+    share = now.unit_edge_share;
+    if (converged) {
+      stats.stopped_by = "converged";
+      break;
+    }
+  }
+  stats.after = quality_in_metric(mesh);
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats.tetrahedra_per_second = stats.seconds > 0.0 ? static_cast<double>(stats.after.elements) / stats.seconds : 0.0;
+  return stats;
+}
+
+}  // namespace dtlab

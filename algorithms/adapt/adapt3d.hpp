@@ -1,0 +1,54 @@
+// 3D local mesh adaptation (book §9.3.1): the mesh is modified in place toward a unit mesh in a
+// metric given on a background (the input mesh and its vertex metrics, algorithms/mesh3d/
+// control_space.hpp): collapses of edges shorter than 1/sqrt2, splits of edges longer than sqrt2
+// (new vertices take the metric interpolated in the background), face swaps, shell
+// transformations and relocations, all with the operators of algorithms/optimize3d, repeated in
+// rounds until the metric edge lengths stop changing.
+//
+// Scope of this version: the interior, and the split of boundary edges (boundary_split3.hpp,
+// linear metric midpoint, references kept). Boundary collapse and the curved surface support are
+// not written yet (issue 18): boundary vertices are never removed and new ones lie on the
+// input's facets.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "algorithms/mesh3d/control_space.hpp"
+#include "algorithms/optimize3d/optimize3d.hpp"
+#include "mesh/mesh3.hpp"
+#include "mesh/mesh_quality.hpp"
+
+namespace dtlab {
+
+struct Adapt3dOptions {
+  std::uint32_t max_rounds = 12;  // rounds of (collapse, split, swap, relocation)
+  // Stop when a round changes the share of unit edges by less than this (absolute) and
+  // collapses + splits by fewer than one per thousand live vertices.
+  double share_tolerance = 1e-3;
+  std::uint32_t relocation_sweeps = 2;  // per round
+  std::uint64_t max_vertices = 20'000'000;
+  bool boundary = true;  // split constrained edges longer than sqrt2 (boundary_split3.hpp)
+};
+
+struct Adapt3dStats {
+  QualityReport before, after;  // measure_quality in the vertex metrics (UGAWG figures, book's Q)
+  std::uint64_t collapses = 0, splits = 0, boundary_splits = 0, face_swaps = 0, shell_transformations = 0, relocations = 0;
+  std::uint32_t rounds = 0;
+  // "converged" (lengths stopped changing), "max_rounds", or optimize3d's "vertex_limit" /
+  // "swap_limit".
+  std::string stopped_by;
+  double seconds = 0.0;
+  double tetrahedra_per_second = 0.0;  // tetrahedra after / seconds
+};
+
+// The metrics of the mesh's live vertices are set from `metric` at their positions first.
+// Throws InputError when the mesh has no tetrahedron in its domain. The mesh passes
+// Mesh3::check() afterwards; constrained facets, edges and their references are unchanged.
+// Deterministic. New boundary vertices stay kOnBoundary | kFixed.
+Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOptions& options = {});
+
+// measure_quality of the mesh's domain in its vertex metrics.
+QualityReport quality_in_metric(const Mesh3& mesh);
+
+}  // namespace dtlab

@@ -1,0 +1,26 @@
+// Split of a constrained edge (book §9.3.1 with §8.3.6): the boundary part of 3D adaptation.
+#pragma once
+
+#include <cstdint>
+
+#include "algorithms/optimize3d/operators.hpp"
+#include "mesh/mesh3.hpp"
+
+namespace dtlab {
+
+// Splits constrained edge ab at its metric midpoint m (on the segment: planar faces stay planar
+// up to the rounding of m). Every tetrahedron of ab's closed shell, in the domain, exterior or
+// ghost, becomes two, (.., m, ..) in place of b and of a; each constrained facet (a, b, c) becomes
+// (a, m, c) and (m, b, c) with its reference; am, mb and every mc of such a facet become
+// constrained edges. m is flagged kOnBoundary | kFixed (the interior operators leave it).
+// Refused (kNone) when ab is no constrained edge, when a new finite tetrahedron is not positive
+// (exact orient3d), when an edge from m to a domain ring vertex is shorter than short_length or
+// the new domain tetrahedra's worst Q_K exceeds both the shell's and quality_limit.
+std::uint32_t try_boundary_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const MetricField3& field,
+                                  const Split3Options& options = {});
+
+// Splits every constrained edge longer than long_length, longest first; halves still too long
+// are queued again. At most max_vertices live vertices. Returns the number of splits.
+std::uint64_t boundary_split_pass3(Mesh3& mesh, const MetricField3& field, const Split3Options& options = {});
+
+}  // namespace dtlab

@@ -1,0 +1,106 @@
+// `dtlab adapt` on a 3D mesh (adapt3.hpp): the input mesh with its vertex metrics is the
+// background control space (algorithms/mesh3d/control_space.hpp); the mesh is adapted in place
+// (book §9.3.1) and written with its references.
+#include "apps/adapt3.hpp"
+
+#include <algorithm>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "algorithms/adapt/adapt3d.hpp"
+#include "apps/cli_util.hpp"
+#include "apps/input_files.hpp"
+#include "kernel/error.hpp"
+#include "mesh/io/medit_sol.hpp"
+#include "mesh/mesh3_from_data.hpp"
+#include "mesh/mesh_quality.hpp"
+
+namespace dtlab::cli {
+
+namespace {
+
+// The domain as a file: the input's vertex references kept for boundary vertices, its Edges
+// (ridges) that are still edges with their references.
+MeshData3 output_data(const Mesh3& mesh, const MeshData3& input) {
+  std::vector<std::uint32_t> ids;
+  MeshData3 out = mesh.domain(&ids);
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const std::uint32_t v = ids[i];
+    if (v < input.vertex_refs.size() && (mesh.flags(v) & Mesh3::kOnBoundary) != 0) out.vertex_refs[i] = input.vertex_refs[v];
+  }
+  for (std::size_t e = 0; e < input.edges.size(); ++e) {
+    const auto [a, b] = input.edges[e];
+    const auto ia = std::lower_bound(ids.begin(), ids.end(), a), ib = std::lower_bound(ids.begin(), ids.end(), b);
+    if (ia == ids.end() || *ia != a || ib == ids.end() || *ib != b) continue;
+    out.edges.push_back({static_cast<std::uint32_t>(ia - ids.begin()), static_cast<std::uint32_t>(ib - ids.begin())});
+    out.edge_refs.push_back(input.edge_refs.empty() ? 0 : input.edge_refs[e]);
+  }
+  return out;
+}
+
+}  // namespace
+
+int run_adapt3(const AdaptRequest& request) {
+  if (request.method == "reconstruct")
+    throw InputError("--method reconstruct: the reconstruction (book §9.3.2) is 2D only; use --method local for " +
+                     request.mesh);
+  if (request.method != "local") throw InputError("--method " + request.method + ": give local or reconstruct");
+  if (request.max_rounds == 0 || request.max_rounds > 1000)
+    throw InputError("--rounds " + std::to_string(request.max_rounds) + ": give 1 to 1000 rounds");
+  const MeshData3 input = read_mesh3(request.mesh);
+  if (input.tetrahedra.empty()) throw InputError(request.mesh + ": no Tetrahedra (a 3D mesh is needed)");
+  const SolData sol = read_medit_sol(request.metric);
+  check_sol_matches(sol, input.vertices.size(), request.metric);
+  std::vector<Metric3> metrics = metrics3_from_sol(sol, request.metric);
+  if (request.hgrad) {
+    if (!(*request.hgrad > 1.0))
+      throw InputError("--hgrad " + json_number(*request.hgrad) + ": give a gradation above 1");
+    std::vector<std::array<std::uint32_t, 2>> edges;
+    for (const auto& t : input.tetrahedra)
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) edges.push_back({std::min(t[i], t[j]), std::max(t[i], t[j])});
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    apply_gradation(input.vertices, edges, metrics, *request.hgrad);
+  }
+  Mesh3 mesh;
+  try {
+    mesh = mesh3_from_data(input);
+  } catch (const InputError& e) {
+    throw InputError(request.mesh + ": " + e.what(), e.items());
+  }
+  ControlSpace3 control = [&] {
+    try {
+      return ControlSpace3(input, metrics);
+    } catch (const InputError& e) {
+      throw InputError(request.mesh + " / " + request.metric + ": " + e.what(), e.items());
+    }
+  }();
+  Adapt3dOptions options;
+  options.max_rounds = request.max_rounds;
+  const Adapt3dStats stats = adapt3d(mesh, control, options);
+  if (!request.output.empty()) write_mesh3(request.output, output_data(mesh, input));
+
+  std::cout << "before:\n" << quality_table(stats.before) << "after:\n" << quality_table(stats.after);
+  std::cout << "operations: " << stats.collapses << " collapses, " << stats.splits << " splits, " << stats.boundary_splits << " boundary splits, " << stats.face_swaps
+            << " face swaps, " << stats.shell_transformations << " shell transformations, " << stats.relocations
+            << " relocations in " << stats.rounds << " rounds (" << stats.stopped_by << "), "
+            << json_number(stats.seconds) << " s, " << json_number(stats.tetrahedra_per_second) << " tetrahedra/s\n";
+  if (request.stats) {
+    std::ostringstream json;
+    json << "{\"input\":" << json_string(request.mesh) << ",\"dimension\":3,\"method\":" << json_string(request.method)
+         << ",\"collapses\":" << stats.collapses << ",\"splits\":" << stats.splits << ",\"boundary_splits\":" << stats.boundary_splits << ",\"face_swaps\":" << stats.face_swaps
+         << ",\"shell_transformations\":" << stats.shell_transformations << ",\"relocations\":" << stats.relocations
+         << ",\"rounds\":" << stats.rounds << ",\"stopped_by\":" << json_string(stats.stopped_by)
+         << ",\"seconds\":" << json_number(stats.seconds)
+         << ",\"tetrahedra_per_second\":" << json_number(stats.tetrahedra_per_second)
+         << ",\"peak_rss_mb\":" << json_number(peak_rss_mb()) << ",\"before\":" << quality_json(stats.before)
+         << ",\"after\":" << quality_json(stats.after) << "}";
+    std::cout << json.str() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace dtlab::cli
