@@ -1,5 +1,6 @@
 // `dtlab adapt MESH.mesh --metric M.sol -o OUT.mesh [--method local] [--hgrad G] [--stats]`: adapts
-// a triangle mesh to a metric given at its vertices (book §9.3.1, local modification,
+// a triangle mesh (or a tetrahedral one: apps/adapt3.hpp, algorithms/adapt/adapt3d.hpp) to a
+// metric given at its vertices (book §9.3.1, local modification,
 // algorithms/adapt/adapt2d.hpp): the result has unit edges in the metric, its boundary corners
 // and references kept, new boundary points on a smooth support of the boundary. The metric is a
 // Medit .sol at the mesh's vertices (a size h, or a symmetric tensor), interpolated on the input
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "algorithms/adapt/adapt2d.hpp"
+#include "apps/adapt3.hpp"
 #include "apps/adapt_request.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/input_files.hpp"
@@ -125,9 +127,7 @@ int run_adapt(const AdaptRequest& request) {
     throw InputError("--hausd " + std::to_string(*request.boundary_deviation) + ": give a distance >= 0");
   if (!(request.ridge_angle >= 0.0 && request.ridge_angle <= 180.0))
     throw InputError("--ridge-angle " + std::to_string(request.ridge_angle) + ": give an angle in [0, 180] degrees");
-  if (input_dimension(request.mesh) == 3)
-    throw InputError(request.mesh + ": a 3D mesh; dtlab adapt adapts 2D meshes in this build");
-  return run_adapt2(request);
+  return input_dimension(request.mesh) == 3 ? run_adapt3(request) : run_adapt2(request);
 }
 
 }  // namespace

@@ -1,15 +1,15 @@
 #!/usr/bin/env python3
-"""UGAWG adaptation benchmarks (github.com/UGAWG/adapt-benchmarks; data/ugawg/README.md).
+"""UGAWG adaptation benchmarks (github.com/UGAWG/adapt-benchmarks; data/ugawg/README.md says
+where to get the initial meshes, which are not in this repository: --meshes DIR).
 
 For each case and cycle: the analytic metric (linear, polar-1, polar-2 of the benchmark's README
 files) is evaluated at the current mesh's vertices and written as a Medit .sol, the mesh is
-adapted (build/adapt3_driver, which calls run_adapt3 of apps/adapt3.hpp, until `dtlab adapt`
-handles 3D meshes; --adapt overrides the command), and the result is measured by
+adapted by `build/dtlab adapt MESH --metric SOL -o OUT --rounds R`, and the result is measured by
 `build/dtlab quality --metric --json` against the field at its own vertices. Prints the table
 min Q / mean Q / % edges in [1/sqrt2, sqrt2] / max L beside the best published rows.
 
   scripts/ugawg_adapt.py [--cases cube-linear,cube-cylinder-polar-1,cube-cylinder-polar-2]
-                         [--cycles N] [--rounds R] [--work DIR]
+                         [--cycles N] [--rounds R] [--work DIR] --meshes DIR
 """
 import argparse
 import json
@@ -78,7 +78,8 @@ def main():
     ap.add_argument("--cycles", type=int, default=2)
     ap.add_argument("--rounds", type=int, default=12)
     ap.add_argument("--work", default=os.path.join(ROOT, "build", "ugawg"))
-    ap.add_argument("--adapt", default=os.path.join(ROOT, "build", "adapt3_driver"))
+    ap.add_argument("--meshes", required=True,
+                    help="folder with cube-linear-00.mesh and cube-cylinder.mesh (data/ugawg/README.md)")
     ap.add_argument("--dtlab", default=os.path.join(ROOT, "build", "dtlab"))
     args = ap.parse_args()
     os.makedirs(args.work, exist_ok=True)
@@ -87,7 +88,9 @@ def main():
         if case not in CASES:
             sys.exit("unknown case %s (known: %s)" % (case, ", ".join(CASES)))
         mesh_name, field = CASES[case]
-        mesh = os.path.join(ROOT, "data", "ugawg", mesh_name)
+        mesh = os.path.join(args.meshes, mesh_name)
+        if not os.path.exists(mesh):
+            sys.exit("ugawg_adapt.py: %s not found (data/ugawg/README.md says where to get it)" % mesh)
         seconds = 0.0
         stats = {}
         for cycle in range(args.cycles):
@@ -95,7 +98,8 @@ def main():
             out = os.path.join(args.work, "%s-%02d.mesh" % (case, cycle + 1))
             write_sol(sol, field, read_vertices(mesh))
             start = time.perf_counter()
-            run = subprocess.run([args.adapt, mesh, sol, out, str(args.rounds)], capture_output=True, text=True)
+            run = subprocess.run([args.dtlab, "adapt", mesh, "--metric", sol, "-o", out, "--rounds", str(args.rounds), "--stats"],
+                                 capture_output=True, text=True)
             seconds += time.perf_counter() - start
             if run.returncode != 0:
                 sys.exit("%s cycle %d: %s%s" % (case, cycle + 1, run.stdout[-2000:], run.stderr))
