@@ -65,8 +65,7 @@ std::uint32_t scan(const Mesh2& mesh, const Vec2& p) {
   return Mesh2::kNone;
 }
 
-void interpolate_in(const Mesh2& mesh, std::uint32_t t, const Vec2& p, std::span<const double> field, std::size_t nc,
-                    double* out) {
+P1Weights weights_in(const Mesh2& mesh, std::uint32_t t, const Vec2& p) {
   const std::uint32_t v0 = mesh.vertex(t, 0), v1 = mesh.vertex(t, 1), v2 = mesh.vertex(t, 2);
   const Vec2 &a = mesh.point(v0), &b = mesh.point(v1), &c = mesh.point(v2);
   const double area = cross(b - a, c - a);
@@ -81,9 +80,7 @@ void interpolate_in(const Mesh2& mesh, std::uint32_t t, const Vec2& p, std::span
     if (d1 < d0 && d1 <= d2) std::swap(w0, w1);
     else if (d2 < d0 && d2 < d1) std::swap(w0, w2);
   }
-  for (std::size_t k = 0; k < nc; ++k) {
-    out[k] = w0 * field[v0 * nc + k] + w1 * field[v1 * nc + k] + w2 * field[v2 * nc + k];
-  }
+  return P1Weights{{v0, v1, v2}, {w0, w1, w2}};
 }
 
 void check_triangles(const MeshData2& mesh, const char* which) {
@@ -114,14 +111,8 @@ double integrate_p1(const MeshData2& mesh, std::span<const double> field, std::s
   return sum;
 }
 
-std::vector<double> transfer_field2(const MeshData2& old_mesh, std::span<const double> field, std::size_t components,
-                                    const MeshData2& new_mesh, const TransferOptions& options, TransferStats* stats) {
-  if (components == 0) throw InputError("a field to transfer needs at least one component");
-  if (field.size() != components * old_mesh.vertices.size()) {
-    throw InputError("the field has " + std::to_string(field.size()) + " values but the old mesh has " +
-                     std::to_string(old_mesh.vertices.size()) + " vertices x " + std::to_string(components) +
-                     " components");
-  }
+std::vector<P1Weights> transfer_weights2(const MeshData2& old_mesh, const MeshData2& new_mesh,
+                                         const TransferOptions& options, TransferStats* stats) {
   if (old_mesh.triangles.empty()) throw InputError("the old mesh has no triangle");
   check_triangles(new_mesh, "new");
   const Mesh2 mesh = mesh2_from_data(old_mesh);  // names an invalid old mesh (numbered from 1)
@@ -137,19 +128,18 @@ std::vector<double> transfer_field2(const MeshData2& old_mesh, std::span<const d
   for (std::uint32_t t = 0; t < mesh.triangle_capacity() && hint == Mesh2::kNone; ++t) {
     if (mesh.is_alive(t) && !mesh.is_ghost(t)) hint = t;
   }
-  std::vector<double> out(new_mesh.vertices.size() * components, 0.0);
+  std::vector<P1Weights> out(new_mesh.vertices.size());
   for (std::uint32_t v : order) {
     const Vec2& p = new_mesh.vertices[v];
-    double* dst = out.data() + static_cast<std::size_t>(v) * components;
     const Mesh2::Location loc = mesh.locate(p, hint);
     if (loc.where == Mesh2::Where::Vertex) {
-      for (std::size_t k = 0; k < components; ++k) dst[k] = field[loc.handle * components + k];
+      out[v] = P1Weights{{loc.handle, loc.handle, loc.handle}, {1.0, 0.0, 0.0}};
       hint = loc.triangle;
       ++st.located;
       continue;
     }
     if (loc.where != Mesh2::Where::Outside) {
-      interpolate_in(mesh, loc.triangle, p, field, components, dst);
+      out[v] = weights_in(mesh, loc.triangle, p);
       hint = loc.triangle;
       ++st.located;
       continue;
@@ -161,7 +151,7 @@ std::vector<double> transfer_field2(const MeshData2& old_mesh, std::span<const d
     if (orient2d(mesh.point(snap.a), mesh.point(snap.b), p) != Sign::Negative) {
       const std::uint32_t t = scan(mesh, p);
       if (t != Mesh2::kNone) {
-        interpolate_in(mesh, t, p, field, components, dst);
+        out[v] = weights_in(mesh, t, p);
         hint = t;
         ++st.located;
         ++st.rescanned;
@@ -174,11 +164,53 @@ std::vector<double> transfer_field2(const MeshData2& old_mesh, std::span<const d
                            " x the length of the nearest old boundary edge (" + std::to_string(snap.edge_length) + ")",
                        {std::uint64_t{v} + 1});
     }
-    for (std::size_t k = 0; k < components; ++k) {
-      dst[k] = (1.0 - snap.s) * field[snap.a * components + k] + snap.s * field[snap.b * components + k];
-    }
+    out[v] = P1Weights{{snap.a, snap.b, snap.b}, {1.0 - snap.s, snap.s, 0.0}};
     ++st.snapped;
     st.max_outside_distance = std::max(st.max_outside_distance, snap.distance);
+  }
+  return out;
+}
+
+std::vector<Metric2> transfer_metrics2(const MeshData2& old_mesh, std::span<const Metric2> metrics,
+                                       const MeshData2& new_mesh, const TransferOptions& options,
+                                       TransferStats* stats, MetricInterpolation mode) {
+  if (metrics.size() != old_mesh.vertices.size()) {
+    throw InputError("the old mesh has " + std::to_string(old_mesh.vertices.size()) + " vertices but " +
+                     std::to_string(metrics.size()) + " metrics are given");
+  }
+  const std::vector<P1Weights> weights = transfer_weights2(old_mesh, new_mesh, options, stats);
+  std::vector<Metric2> out;
+  out.reserve(weights.size());
+  for (const P1Weights& w : weights) {
+    const std::array<Metric2, 3> m{metrics[w.vertices[0]], metrics[w.vertices[1]], metrics[w.vertices[2]]};
+    // Rounding may leave a weight at -1e-17: clamp, the interpolation wants non-negative weights.
+    std::array<double, 3> c{std::max(w.weights[0], 0.0), std::max(w.weights[1], 0.0), std::max(w.weights[2], 0.0)};
+    const double sum = c[0] + c[1] + c[2];
+    for (double& x : c) x /= sum;
+    out.push_back(interpolate(m, c, mode));
+  }
+  return out;
+}
+
+std::vector<double> transfer_field2(const MeshData2& old_mesh, std::span<const double> field, std::size_t components,
+                                    const MeshData2& new_mesh, const TransferOptions& options, TransferStats* stats) {
+  if (components == 0) throw InputError("a field to transfer needs at least one component");
+  if (field.size() != components * old_mesh.vertices.size()) {
+    throw InputError("the field has " + std::to_string(field.size()) + " values but the old mesh has " +
+                     std::to_string(old_mesh.vertices.size()) + " vertices x " + std::to_string(components) +
+                     " components");
+  }
+  TransferStats local;
+  TransferStats& st = stats ? *stats : local;
+  const std::vector<P1Weights> weights = transfer_weights2(old_mesh, new_mesh, options, &st);
+  std::vector<double> out(new_mesh.vertices.size() * components, 0.0);
+  for (std::size_t v = 0; v < weights.size(); ++v) {
+    const P1Weights& w = weights[v];
+    for (std::size_t k = 0; k < components; ++k) {
+      out[v * components + k] = w.weights[0] * field[w.vertices[0] * components + k] +
+                                w.weights[1] * field[w.vertices[1] * components + k] +
+                                w.weights[2] * field[w.vertices[2] * components + k];
+    }
   }
 
   double new_area = 0.0;

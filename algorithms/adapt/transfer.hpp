@@ -9,10 +9,12 @@
 #pragma once
 
 #include <cstddef>
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "kernel/metric.hpp"
 #include "mesh/io/mesh_data.hpp"
 
 namespace dtlab {
@@ -36,12 +38,29 @@ struct TransferStats {
   std::vector<double> integral_old, integral_new;  // per component, after the correction
 };
 
+// Where each new vertex takes its value from: three old vertices and their weights (non-negative
+// up to rounding, summing to 1; a snapped vertex has weights on a boundary edge's two ends, an old
+// vertex hit exactly weight 1 on it). Throws as transfer_field2 does, field size aside.
+struct P1Weights {
+  std::array<std::uint32_t, 3> vertices{};
+  std::array<double, 3> weights{};
+};
+std::vector<P1Weights> transfer_weights2(const MeshData2& old_mesh, const MeshData2& new_mesh,
+                                         const TransferOptions& options = {}, TransferStats* stats = nullptr);
+
 // `field` holds `components` values per old vertex (vertex-major). Returns `components` values
 // per new vertex. Throws InputError for a field size that is not components x old vertices, an
 // invalid old mesh (mesh2_from_data's checks, numbered from 1), a new vertex beyond the limit.
 std::vector<double> transfer_field2(const MeshData2& old_mesh, std::span<const double> field, std::size_t components,
                                     const MeshData2& new_mesh, const TransferOptions& options = {},
                                     TransferStats* stats = nullptr);
+
+// Metrics transferred as metrics (kernel/metric.hpp interpolate with the weights above), so the
+// result stays positive definite; InputError if the counts differ. No conservative option.
+std::vector<Metric2> transfer_metrics2(const MeshData2& old_mesh, std::span<const Metric2> metrics,
+                                       const MeshData2& new_mesh, const TransferOptions& options = {},
+                                       TransferStats* stats = nullptr,
+                                       MetricInterpolation mode = MetricInterpolation::Sizes);
 
 // Integral of a P1 field (one component, `component` of `components`) over the triangles.
 double integrate_p1(const MeshData2& mesh, std::span<const double> field, std::size_t components,

@@ -142,6 +142,28 @@ TEST(AdaptTransfer, PointsOutsideACircleTakeTheNearestBoundaryValue) {
   }
 }
 
+TEST(AdaptTransfer, MetricsStayPositiveDefinite) {
+  const MeshData2 a = grid(9, 0.3), b = disc(30);  // b shrunk into a below
+  MeshData2 c = b;
+  for (Vec2& p : c.vertices) p = {0.5 + 0.45 * p.x, 0.5 + 0.45 * p.y};
+  std::vector<Metric2> m;
+  for (const Vec2& p : a.vertices) {
+    // Strongly anisotropic, rotating: a component-wise mix of these would still be SPD, but the
+    // size interpolation is what the control space uses (kernel/metric.hpp).
+    const double th = 3.0 * p.x, l1 = 1e4, l2 = 1.0;
+    const double co = std::cos(th), si = std::sin(th);
+    m.push_back(Metric2{{l1 * co * co + l2 * si * si, (l1 - l2) * co * si, l1 * si * si + l2 * co * co}});
+  }
+  const std::vector<Metric2> w = transfer_metrics2(a, m, c);
+  ASSERT_EQ(w.size(), c.vertices.size());
+  for (std::size_t v = 0; v < w.size(); ++v) EXPECT_TRUE(w[v].is_positive_definite()) << v;
+  const std::vector<Metric2> same = transfer_metrics2(a, m, a);
+  for (std::size_t v = 0; v < m.size(); ++v) {
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(same[v].m[k], m[v].m[k], 1e-9 * 1e4) << v;
+  }
+  EXPECT_THROW(transfer_metrics2(a, std::span<const Metric2>(m).first(3), c), InputError);
+}
+
 TEST(AdaptTransfer, FarOutsideIsNamed) {
   const MeshData2 a = disc(16);
   MeshData2 b = disc(16);
