@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   dtlab::cli::add_convert(app);
   dtlab::cli::add_quality(app);
   dtlab::cli::add_plot(app);
+  dtlab::cli::add_transfer(app);
   dtlab::cli::add_selfcheck(app);
   try {
     app.parse(argc, argv);

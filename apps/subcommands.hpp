@@ -20,5 +20,6 @@ void add_quality(CLI::App& app);
 void add_mesh(CLI::App& app);
 void add_convert(CLI::App& app);
 void add_plot(CLI::App& app);
+void add_transfer(CLI::App& app);
 
 }  // namespace dtlab::cli
