@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   dtlab::cli::add_adapt(app);
   dtlab::cli::add_metric(app);
   dtlab::cli::add_plot(app);
+  dtlab::cli::add_transfer(app);
   dtlab::cli::add_selfcheck(app);
   try {
     app.parse(argc, argv);

@@ -22,5 +22,6 @@ void add_convert(CLI::App& app);
 void add_plot(CLI::App& app);
 void add_adapt(CLI::App& app);
 void add_metric(CLI::App& app);
+void add_transfer(CLI::App& app);
 
 }  // namespace dtlab::cli

@@ -1,0 +1,234 @@
+// Solution transfer (transfer.hpp): walk, P1 weights, boundary snap, global correction.
+#include "algorithms/adapt/transfer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "algorithms/spatial_sort.hpp"
+#include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
+#include "mesh/mesh2.hpp"
+#include "mesh/mesh2_from_data.hpp"
+
+namespace dtlab {
+namespace {
+
+struct Snap {
+  double distance = 0.0;
+  double edge_length = 0.0;
+  std::uint32_t a = 0, b = 0;  // segment a -> b (domain on its left)
+  double s = 0.0;              // nearest point a + s (b - a)
+  bool found = false;
+};
+
+void consider(const Mesh2& mesh, std::uint32_t ghost, const Vec2& p, Snap& best) {
+  // Ghost (kInfinite, b, a): the boundary edge runs a -> b in the inner triangle.
+  const std::uint32_t b = mesh.vertex(ghost, 1), a = mesh.vertex(ghost, 2);
+  const Vec2 &pa = mesh.point(a), &pb = mesh.point(b);
+  const Vec2 d = pb - pa;
+  const double len2 = dot(d, d);
+  double s = len2 > 0.0 ? dot(p - pa, d) / len2 : 0.0;
+  s = std::clamp(s, 0.0, 1.0);
+  const Vec2 q{pa.x + s * d.x, pa.y + s * d.y};
+  const double dist = norm(p - q);
+  if (!best.found || dist < best.distance) best = Snap{dist, std::sqrt(len2), a, b, s, true};
+}
+
+// The nearest point of the old boundary among `bound` boundary edges on each side of the ghost
+// where the walk stopped (ghosts are linked around kInfinite along each boundary loop).
+Snap nearest_boundary(const Mesh2& mesh, std::uint32_t ghost, const Vec2& p, std::uint32_t bound) {
+  Snap best;
+  consider(mesh, ghost, p, best);
+  for (std::uint32_t side : {1u, 2u}) {
+    std::uint32_t g = ghost;
+    for (std::uint32_t k = 0; k < bound; ++k) {
+      g = Mesh2::triangle_of(mesh.twin(Mesh2::half_edge(g, side)));
+      if (g == ghost || !mesh.is_ghost(g)) break;
+      consider(mesh, g, p, best);
+    }
+  }
+  return best;
+}
+
+// Full scan for a point the walk lost through a concavity or a hole: the triangle holding it
+// (exact orient2d, closed triangles), or kNone.
+std::uint32_t scan(const Mesh2& mesh, const Vec2& p) {
+  for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) {
+    if (!mesh.is_alive(t) || mesh.is_ghost(t)) continue;
+    const Vec2 &a = mesh.point(mesh.vertex(t, 0)), &b = mesh.point(mesh.vertex(t, 1)), &c = mesh.point(mesh.vertex(t, 2));
+    if (orient2d(a, b, p) != Sign::Negative && orient2d(b, c, p) != Sign::Negative && orient2d(c, a, p) != Sign::Negative) {
+      return t;
+    }
+  }
+  return Mesh2::kNone;
+}
+
+P1Weights weights_in(const Mesh2& mesh, std::uint32_t t, const Vec2& p) {
+  const std::uint32_t v0 = mesh.vertex(t, 0), v1 = mesh.vertex(t, 1), v2 = mesh.vertex(t, 2);
+  const Vec2 &a = mesh.point(v0), &b = mesh.point(v1), &c = mesh.point(v2);
+  const double area = cross(b - a, c - a);
+  double w0 = 1.0, w1 = 0.0, w2 = 0.0;
+  if (area > 0.0) {
+    w0 = cross(b - p, c - p) / area;
+    w1 = cross(c - p, a - p) / area;
+    w2 = 1.0 - w0 - w1;
+  } else {
+    // A sliver whose area rounds to 0: the value of its vertex nearest to p.
+    const double d0 = norm(a - p), d1 = norm(b - p), d2 = norm(c - p);
+    if (d1 < d0 && d1 <= d2) std::swap(w0, w1);
+    else if (d2 < d0 && d2 < d1) std::swap(w0, w2);
+  }
+  return P1Weights{{v0, v1, v2}, {w0, w1, w2}};
+}
+
+void check_triangles(const MeshData2& mesh, const char* which) {
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    for (std::uint32_t v : mesh.triangles[t]) {
+      if (v >= mesh.vertices.size()) {
+        throw InputError(std::string("the ") + which + " mesh's triangle " + std::to_string(t + 1) + " uses vertex " +
+                             std::to_string(v + 1) + " of " + std::to_string(mesh.vertices.size()),
+                         {t + 1});
+      }
+    }
+  }
+}
+
+}  // namespace
+
+double integrate_p1(const MeshData2& mesh, std::span<const double> field, std::size_t components,
+                    std::size_t component) {
+  check_triangles(mesh, "integrated");
+  if (field.size() != components * mesh.vertices.size()) throw InputError("integrate_p1: field size mismatch");
+  double sum = 0.0;
+  for (const auto& tri : mesh.triangles) {
+    const Vec2 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
+    const double area = 0.5 * cross(b - a, c - a);
+    sum += area * (field[tri[0] * components + component] + field[tri[1] * components + component] +
+                   field[tri[2] * components + component]) / 3.0;
+  }
+  return sum;
+}
+
+std::vector<P1Weights> transfer_weights2(const MeshData2& old_mesh, const MeshData2& new_mesh,
+                                         const TransferOptions& options, TransferStats* stats) {
+  if (old_mesh.triangles.empty()) throw InputError("the old mesh has no triangle");
+  check_triangles(new_mesh, "new");
+  const Mesh2 mesh = mesh2_from_data(old_mesh);  // names an invalid old mesh (numbered from 1)
+  TransferStats local;
+  TransferStats& st = stats ? *stats : local;
+  st = TransferStats{};
+
+  std::vector<std::uint32_t> order(new_mesh.vertices.size());
+  std::iota(order.begin(), order.end(), 0u);
+  hilbert_sort(new_mesh.vertices, order);
+
+  std::uint32_t hint = Mesh2::kNone;
+  for (std::uint32_t t = 0; t < mesh.triangle_capacity() && hint == Mesh2::kNone; ++t) {
+    if (mesh.is_alive(t) && !mesh.is_ghost(t)) hint = t;
+  }
+  std::vector<P1Weights> out(new_mesh.vertices.size());
+  for (std::uint32_t v : order) {
+    const Vec2& p = new_mesh.vertices[v];
+    const Mesh2::Location loc = mesh.locate(p, hint);
+    if (loc.where == Mesh2::Where::Vertex) {
+      out[v] = P1Weights{{loc.handle, loc.handle, loc.handle}, {1.0, 0.0, 0.0}};
+      hint = loc.triangle;
+      ++st.located;
+      continue;
+    }
+    if (loc.where != Mesh2::Where::Outside) {
+      out[v] = weights_in(mesh, loc.triangle, p);
+      hint = loc.triangle;
+      ++st.located;
+      continue;
+    }
+    const Snap snap = nearest_boundary(mesh, loc.triangle, p, options.boundary_search);
+    hint = Mesh2::triangle_of(mesh.twin(Mesh2::half_edge(loc.triangle, 0)));
+    // On the domain's side of its nearest boundary edge: the walk left through a concavity or a
+    // hole, p may be inside after all.
+    if (orient2d(mesh.point(snap.a), mesh.point(snap.b), p) != Sign::Negative) {
+      const std::uint32_t t = scan(mesh, p);
+      if (t != Mesh2::kNone) {
+        out[v] = weights_in(mesh, t, p);
+        hint = t;
+        ++st.located;
+        ++st.rescanned;
+        continue;
+      }
+    }
+    if (snap.distance > options.outside_limit * snap.edge_length) {
+      throw InputError("new vertex " + std::to_string(v + 1) + " lies " + std::to_string(snap.distance) +
+                           " outside the old mesh, more than " + std::to_string(options.outside_limit) +
+                           " x the length of the nearest old boundary edge (" + std::to_string(snap.edge_length) + ")",
+                       {std::uint64_t{v} + 1});
+    }
+    out[v] = P1Weights{{snap.a, snap.b, snap.b}, {1.0 - snap.s, snap.s, 0.0}};
+    ++st.snapped;
+    st.max_outside_distance = std::max(st.max_outside_distance, snap.distance);
+  }
+  return out;
+}
+
+std::vector<Metric2> transfer_metrics2(const MeshData2& old_mesh, std::span<const Metric2> metrics,
+                                       const MeshData2& new_mesh, const TransferOptions& options,
+                                       TransferStats* stats, MetricInterpolation mode) {
+  if (metrics.size() != old_mesh.vertices.size()) {
+    throw InputError("the old mesh has " + std::to_string(old_mesh.vertices.size()) + " vertices but " +
+                     std::to_string(metrics.size()) + " metrics are given");
+  }
+  const std::vector<P1Weights> weights = transfer_weights2(old_mesh, new_mesh, options, stats);
+  std::vector<Metric2> out;
+  out.reserve(weights.size());
+  for (const P1Weights& w : weights) {
+    const std::array<Metric2, 3> m{metrics[w.vertices[0]], metrics[w.vertices[1]], metrics[w.vertices[2]]};
+    // Rounding may leave a weight at -1e-17: clamp, the interpolation wants non-negative weights.
+    std::array<double, 3> c{std::max(w.weights[0], 0.0), std::max(w.weights[1], 0.0), std::max(w.weights[2], 0.0)};
+    const double sum = c[0] + c[1] + c[2];
+    for (double& x : c) x /= sum;
+    out.push_back(interpolate(m, c, mode));
+  }
+  return out;
+}
+
+std::vector<double> transfer_field2(const MeshData2& old_mesh, std::span<const double> field, std::size_t components,
+                                    const MeshData2& new_mesh, const TransferOptions& options, TransferStats* stats) {
+  if (components == 0) throw InputError("a field to transfer needs at least one component");
+  if (field.size() != components * old_mesh.vertices.size()) {
+    throw InputError("the field has " + std::to_string(field.size()) + " values but the old mesh has " +
+                     std::to_string(old_mesh.vertices.size()) + " vertices x " + std::to_string(components) +
+                     " components");
+  }
+  TransferStats local;
+  TransferStats& st = stats ? *stats : local;
+  const std::vector<P1Weights> weights = transfer_weights2(old_mesh, new_mesh, options, &st);
+  std::vector<double> out(new_mesh.vertices.size() * components, 0.0);
+  for (std::size_t v = 0; v < weights.size(); ++v) {
+    const P1Weights& w = weights[v];
+    for (std::size_t k = 0; k < components; ++k) {
+      out[v * components + k] = w.weights[0] * field[w.vertices[0] * components + k] +
+                                w.weights[1] * field[w.vertices[1] * components + k] +
+                                w.weights[2] * field[w.vertices[2] * components + k];
+    }
+  }
+
+  double new_area = 0.0;
+  for (const auto& tri : new_mesh.triangles) {
+    new_area += 0.5 * cross(new_mesh.vertices[tri[1]] - new_mesh.vertices[tri[0]],
+                            new_mesh.vertices[tri[2]] - new_mesh.vertices[tri[0]]);
+  }
+  for (std::size_t k = 0; k < components; ++k) {
+    const double before = integrate_p1(old_mesh, field, components, k);
+    st.integral_old.push_back(before);
+    // Global correction (§12.2.6): a constant c with c x |new domain| the missing integral.
+    if (options.conservative && new_area > 0.0) {
+      const double c = (before - integrate_p1(new_mesh, out, components, k)) / new_area;
+      for (std::size_t v = 0; v < new_mesh.vertices.size(); ++v) out[v * components + k] += c;
+    }
+    st.integral_new.push_back(integrate_p1(new_mesh, out, components, k));
+  }
+  return out;
+}
+
+}  // namespace dtlab
