@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <type_traits>
 #include <vector>
 
 #include "kernel/constructions.hpp"
@@ -394,5 +395,25 @@ std::string quality_table(const QualityReport& r) {
   line(out, "inverted / flat", std::to_string(r.inverted) + " / " + std::to_string(r.flat));
   return out;
 }
+
+namespace {
+
+template <class Mesh, class Metric>
+QualityReport domain_quality_of(const Mesh& mesh) {
+  std::vector<std::uint32_t> ids;
+  const auto data = mesh.domain(&ids);
+  std::vector<Metric> metrics;
+  metrics.reserve(ids.size());
+  for (const std::uint32_t v : ids) metrics.push_back(mesh.metric(v));
+  if constexpr (std::is_same_v<Metric, Metric2>)
+    return measure_quality(data.vertices, data.triangles, metrics);
+  else
+    return measure_quality(data.vertices, data.tetrahedra, metrics);
+}
+
+}  // namespace
+
+QualityReport domain_quality(const Mesh2& mesh) { return domain_quality_of<Mesh2, Metric2>(mesh); }
+QualityReport domain_quality(const Mesh3& mesh) { return domain_quality_of<Mesh3, Metric3>(mesh); }
 
 }  // namespace dtlab

@@ -13,6 +13,8 @@
 
 #include "kernel/metric.hpp"
 #include "kernel/vec.hpp"
+#include "mesh/mesh2.hpp"
+#include "mesh/mesh3.hpp"
 
 namespace dtlab {
 
@@ -75,6 +77,10 @@ QualityReport measure_quality(std::span<const Vec2> points, std::span<const std:
                               std::span<const Metric2> metrics = {});
 QualityReport measure_quality(std::span<const Vec3> points, std::span<const std::array<std::uint32_t, 4>> tetrahedra,
                               std::span<const Metric3> metrics = {});
+
+// The report of a shared mesh's domain (Mesh2::domain / Mesh3::domain) in its vertex metrics.
+QualityReport domain_quality(const Mesh2& mesh);
+QualityReport domain_quality(const Mesh3& mesh);
 
 // One JSON object on one line, keys in a fixed order (the same set for every report of one
 // dimension; the angle keys are min_angle_deg / max_angle_deg in 2D, min_dihedral_deg /

@@ -13,15 +13,6 @@
 
 namespace dtlab {
 
-QualityReport domain_quality(const Mesh2& mesh) {
-  std::vector<std::uint32_t> ids;
-  const MeshData2 data = mesh.domain(&ids);
-  std::vector<Metric2> metrics;
-  metrics.reserve(ids.size());
-  for (const std::uint32_t v : ids) metrics.push_back(mesh.metric(v));
-  return measure_quality(data.vertices, data.triangles, metrics);
-}
-
 Adapt2dStats adapt2d(Mesh2& mesh, const ControlSpace2& metric, const Adapt2dOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   Adapt2dStats stats;

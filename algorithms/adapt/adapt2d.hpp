@@ -55,7 +55,4 @@ struct Adapt2dStats {
 // InputError when the mesh has no domain triangle.
 Adapt2dStats adapt2d(Mesh2& mesh, const ControlSpace2& metric, const Adapt2dOptions& options = {});
 
-// The quality report of the mesh's domain in its vertex metrics.
-QualityReport domain_quality(const Mesh2& mesh);
-
 }  // namespace dtlab

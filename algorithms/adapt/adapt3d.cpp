@@ -12,15 +12,6 @@
 
 namespace dtlab {
 
-QualityReport quality_in_metric(const Mesh3& mesh) {
-  std::vector<std::uint32_t> ids;
-  const MeshData3 data = mesh.domain(&ids);
-  std::vector<Metric3> metrics;
-  metrics.reserve(ids.size());
-  for (const std::uint32_t v : ids) metrics.push_back(mesh.metric(v));
-  return measure_quality(data.vertices, data.tetrahedra, metrics);
-}
-
 Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   Adapt3dStats stats;
@@ -30,7 +21,7 @@ Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOpti
   const MetricField3 field = [&metric, hint](const Vec3& p) { return metric.metric_at(p, *hint); };
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v)
     if (!mesh.is_dead_vertex(v)) mesh.set_metric(v, field(mesh.point(v)));
-  stats.before = quality_in_metric(mesh);
+  stats.before = domain_quality(mesh);
   if (stats.before.elements == 0) throw InputError("adapt3d: the mesh has no tetrahedron in its domain");
 
   Optimize3dOptions round;
@@ -54,7 +45,7 @@ Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOpti
       stats.stopped_by = s.stopped_by;
       break;
     }
-    const QualityReport now = quality_in_metric(mesh);
+    const QualityReport now = domain_quality(mesh);
     const bool sizes_settled = (s.collapses + s.splits + boundary_splits) * 1000 <= s.vertices_after;
     const bool converged = std::fabs(now.unit_edge_share - share) < options.share_tolerance && sizes_settled;
     share = now.unit_edge_share;
@@ -63,7 +54,7 @@ Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOpti
       break;
     }
   }
-  stats.after = quality_in_metric(mesh);
+  stats.after = domain_quality(mesh);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   stats.tetrahedra_per_second = stats.seconds > 0.0 ? static_cast<double>(stats.after.elements) / stats.seconds : 0.0;
   return stats;

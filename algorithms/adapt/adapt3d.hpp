@@ -48,7 +48,4 @@ struct Adapt3dStats {
 // Deterministic. New boundary vertices stay kOnBoundary | kFixed.
 Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOptions& options = {});
 
-// measure_quality of the mesh's domain in its vertex metrics.
-QualityReport quality_in_metric(const Mesh3& mesh);
-
 }  // namespace dtlab
