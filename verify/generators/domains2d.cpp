@@ -25,8 +25,7 @@ std::vector<Vec2> circle_polygon(const Vec2& c, double r, int n) {
   return out;
 }
 
-Domain2 square_minus_disc(int n) {
-  Domain2 d;
+std::vector<Vec2> unit_square_loop(int n) {
   std::vector<Vec2> square;
   for (int s = 0; s < 4; ++s) {
     for (int i = 0; i < n; ++i) {
@@ -34,7 +33,17 @@ Domain2 square_minus_disc(int n) {
       square.push_back(s == 0 ? Vec2{t, 0} : s == 1 ? Vec2{1, t} : s == 2 ? Vec2{1 - t, 1} : Vec2{0, 1 - t});
     }
   }
-  add_loop(d, square, 1);
+  return square;
+}
+
+Domain2 unit_square(int n, int marker) {
+  Domain2 d;
+  add_loop(d, unit_square_loop(n), marker);
+  return d;
+}
+
+Domain2 square_minus_disc(int n) {
+  Domain2 d = unit_square(n, 1);
   add_loop(d, circle_polygon({0.5, 0.5}, 0.2, static_cast<int>(std::ceil(2 * std::numbers::pi * 0.2 * n))), 2);
   d.holes.push_back({0.5, 0.5});
   return d;

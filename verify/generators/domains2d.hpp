@@ -23,6 +23,10 @@ struct Domain2 {
 void add_loop(Domain2& d, const std::vector<Vec2>& loop, int marker);
 // The n vertices of the regular polygon inscribed in the circle (c, r), counter-clockwise.
 std::vector<Vec2> circle_polygon(const Vec2& c, double r, int n);
+// The boundary of the unit square, each side cut into n pieces, counter-clockwise from (0, 0).
+std::vector<Vec2> unit_square_loop(int n);
+// The unit square, each side cut into n pieces, all with `marker`.
+Domain2 unit_square(int n, int marker = 1);
 // The unit square, each side cut into n pieces (marker 1), minus the disc of radius 0.2 at its
 // centre cut at the same spacing (marker 2, a hole).
 Domain2 square_minus_disc(int n);

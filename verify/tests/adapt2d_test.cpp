@@ -38,17 +38,7 @@ MeshData2 mesh_of(const gen::Domain2& d, double h) {
   return mesh2d(d.input(), options).output;
 }
 
-gen::Domain2 unit_square(int n) {
-  gen::Domain2 d;
-  std::vector<Vec2> square;
-  for (int s = 0; s < 4; ++s)
-    for (int i = 0; i < n; ++i) {
-      const double t = static_cast<double>(i) / n;
-      square.push_back(s == 0 ? Vec2{t, 0} : s == 1 ? Vec2{1, t} : s == 2 ? Vec2{1 - t, 1} : Vec2{0, 1 - t});
-    }
-  gen::add_loop(d, square, 7);
-  return d;
-}
+gen::Domain2 unit_square(int n) { return gen::unit_square(n, 7); }
 
 // The UGAWG "linear" field in 2D: h_x = 0.1, h_y = h0 + 2 (0.1 - h0) |y - 0.5|.
 ControlSpace2 linear_layer(const MeshData2& mesh, double h0) {
