@@ -3,21 +3,25 @@
 (Mesh.Algorithm 7) on the same metric fields, measured by the same `dtlab quality --metric`.
 
 The fields are the 2D analogues of the UGAWG benchmark's (github UGAWG/adapt-benchmarks, README),
-on the unit square, h0 = 0.001 / SCALE:
-  linear   h_x = 0.1 / SCALE, h_y = h0 + 2 (0.1 / SCALE - h0) |y - 0.5|
-  polar-1  in polar coordinates (r, t) about the origin: h_r = h0 + 2 (0.1 / SCALE - h0) |r - 0.5|,
-           h_t = 0.1 / SCALE
+h0 = 0.001 / SCALE, on the 2D sections of their domains:
+  linear   on the unit square: h_x = 0.1 / SCALE, h_y = h0 + 2 (0.1 / SCALE - h0) |y - 0.5|
+  polar-1  on the square minus the quarter disc r < 0.5 (the section of the cube-cylinder; in
+           polar coordinates (r, t) about the origin): h_r = h0 + 2 (0.1 / SCALE - h0) |r - 0.5|,
+           h_t = 0.1 / SCALE: a layer along the curved wall
   polar-2  h_r as polar-1, h_t = 0.1 / SCALE for r > 0.6, else d / 40 + (1 - d) 0.1 (over SCALE),
-           d = 10 (0.6 - r)
-As in the UGAWG runs, every code starts from the same mesh (a 10 x 10 square split into 200
-triangles) and makes CYCLES cycles; before each the field is evaluated analytically at the
-current vertices (dtlab and Gmsh: a .sol / .pos this script writes; FreeFem++: the same formulas
-interpolated in P1 on its mesh, which is the value at the vertices). Each code adapts its own
-previous mesh: dtlab by local modification (dtlab adapt), FreeFem++ by BAMG's adaptmesh (no
-metric smoothing, ratio=0, since the field is given), Gmsh by BAMG remeshing the square with the
-current mesh as the background. The last mesh of each is measured with the field at its vertices:
-the share of edges of metric length in [1/sqrt2, sqrt2], the length extremes, and the worst and
-mean metric mean ratio as the UGAWG MEASURES define them (dtlab quality --metric).
+           d = 10 (0.6 - r) (in [0, 1] on the domain, r >= 0.5: the formula has no meaning below)
+As in the UGAWG runs, every code starts from the same mesh (200 triangles: the square's 10 x 10
+grid, or the quarter domain's polar 10 x 10 grid with the arc cut into 10 chords) and makes
+CYCLES cycles; before each the field is evaluated analytically at the current vertices (dtlab
+and Gmsh: a .sol / .pos this script writes; FreeFem++: the same formulas interpolated in P1 on
+its mesh, which is the value at the vertices). Each code adapts its own previous mesh: dtlab by
+local modification (dtlab adapt, boundary points on its smooth support of the polygonal arc),
+FreeFem++ by BAMG's adaptmesh (no metric smoothing, ratio=0, since the field is given; its
+geometry is the start mesh's boundary), Gmsh by BAMG remeshing the domain's exact geometry (a
+true circular arc) with the current mesh as the background. The last mesh of each is measured
+with the field at its vertices: the share of edges of metric length in [1/sqrt2, sqrt2], the
+length extremes, and the worst and mean metric mean ratio as the UGAWG MEASURES define them
+(dtlab quality --metric).
 
 Times: each code's own time for its cycles (dtlab adapt's "seconds", FreeFem++'s clock() around
 adaptmesh, Gmsh's "Done meshing 2D (Wall ...)"), summed over the cycles; the median of RUNS
@@ -117,16 +121,34 @@ def write_medit(path, vertices, edges, triangles):
         f.write("End\n")
 
 
-def start_mesh(path, n=10):
-    vertices = [(i / n, j / n) for j in range(n + 1) for i in range(n + 1)]
+def start_mesh(path, domain, n=10):
+    """The square's n x n grid, or the quarter domain's: the arc r = 0.5 and the square's sides
+    x = 1, y = 1 joined along rays, n cells each way; each cell two counter-clockwise triangles.
+    Edge references: square 1; quarter domain 1 (y = 0), 2 (outer sides), 3 (x = 0), 4 (arc)."""
+    def point(i, j):
+        if domain == "square":
+            return i / n, j / n
+        a = 0.5 * math.pi * i / n
+        inner = (0.5 * math.cos(a), 0.5 * math.sin(a))
+        outer = (1.0, math.tan(a)) if 2 * i <= n else (1.0 / math.tan(a), 1.0)
+        if 2 * i == n:
+            outer = (1.0, 1.0)
+        t = j / n
+        return (1 - t) * inner[0] + t * outer[0], (1 - t) * inner[1] + t * outer[1]
+    vertices = [point(i, j) for j in range(n + 1) for i in range(n + 1)]
     triangles, edges = [], []
     for j in range(n):
         for i in range(n):
             a = j * (n + 1) + i
-            triangles += [(a, a + 1, a + n + 2, 1), (a, a + n + 2, a + n + 1, 1)]
+            for tri in ((a, a + 1, a + n + 2), (a, a + n + 2, a + n + 1)):
+                (ax, ay), (bx, by), (cx, cy) = (vertices[v] for v in tri)
+                ccw = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) > 0
+                triangles.append(tri + (1,) if ccw else (tri[0], tri[2], tri[1], 1))
+    quarter = domain != "square"
     for i in range(n):
-        edges += [(i, i + 1, 1), (n * (n + 1) + i + 1, n * (n + 1) + i, 1),
-                  ((i + 1) * (n + 1) - 1, (i + 2) * (n + 1) - 1, 1), ((i + 1) * (n + 1), i * (n + 1), 1)]
+        top, left, right = n * (n + 1), i * (n + 1), i * (n + 1) + n
+        edges += [(i, i + 1, 4 if quarter else 1), (top + i + 1, top + i, 2 if quarter else 1),
+                  (right, right + n + 1, 1 if quarter else 1), (left + n + 1, left, 3 if quarter else 1)]
     write_medit(path, vertices, edges, triangles)
 
 
@@ -150,11 +172,21 @@ def write_pos(path, field, vertices, triangles, scale):
         f.write("};\n")
 
 
-SQUARE_GEO = """Point(1) = {0, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1}; Point(3) = {1, 1, 0, 0.1}; Point(4) = {0, 1, 0, 0.1};
+GEO = {"square": """Point(1) = {0, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1}; Point(3) = {1, 1, 0, 0.1}; Point(4) = {0, 1, 0, 0.1};
 Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
 Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
 Physical Curve(1) = {1, 2, 3, 4}; Physical Surface(1) = {1};
-"""
+""", "quarter": """Point(1) = {0.5, 0, 0, 0.1}; Point(2) = {1, 0, 0, 0.1}; Point(3) = {1, 1, 0, 0.1}; Point(4) = {0, 1, 0, 0.1};
+Point(5) = {0, 0.5, 0, 0.1}; Point(6) = {0, 0, 0, 0.1};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 5}; Circle(5) = {5, 6, 1};
+Curve Loop(1) = {1, 2, 3, 4, 5}; Plane Surface(1) = {1};
+Physical Curve(1) = {1}; Physical Curve(2) = {2, 3}; Physical Curve(3) = {4}; Physical Curve(4) = {5};
+Physical Surface(1) = {1};
+"""}
+
+
+def domain_of(field):
+    return "square" if field == "linear" else "quarter"
 
 
 # --- one cycle of each code ---------------------------------------------------------------------
@@ -189,9 +221,9 @@ def cycle_freefem(args, work, field, current, nxt):
 def cycle_gmsh(args, work, field, current, nxt):
     vertices, _, triangles = read_medit(os.path.join(work, current))
     write_pos(os.path.join(work, "metric.pos"), field, vertices, triangles, args.scale)
-    with open(os.path.join(work, "square.geo"), "w") as f:
-        f.write(SQUARE_GEO)
-    out, wall = run([args.gmsh, "square.geo", "-2", "-algo", "bamg", "-bgm", "metric.pos", "-o", "gmsh_out.mesh"], work)
+    with open(os.path.join(work, "domain.geo"), "w") as f:
+        f.write(GEO[domain_of(field)])
+    out, wall = run([args.gmsh, "domain.geo", "-2", "-algo", "bamg", "-bgm", "metric.pos", "-o", "gmsh_out.mesh"], work)
     seconds = float(re.search(r"Done meshing 2D \(Wall ([0-9.eE+-]+)s", out).group(1))
     v, e, t = read_medit(os.path.join(work, "gmsh_out.mesh"))
     # Gmsh lists its triangles' orientation as the surface's normal gives it: made counter-clockwise.
@@ -209,7 +241,7 @@ CODES = {"dtlab": cycle_dtlab, "FreeFem++ adaptmesh": cycle_freefem, "Gmsh BAMG"
 def chain(args, code, field, work):
     """The CYCLES cycles of one code from the start mesh; (own seconds, process seconds, last mesh)."""
     os.makedirs(work, exist_ok=True)
-    shutil.copy(os.path.join(args.work, "start.mesh"), os.path.join(work, "mesh0.mesh"))
+    shutil.copy(os.path.join(args.work, f"start_{domain_of(field)}.mesh"), os.path.join(work, "mesh0.mesh"))
     own = wall = 0.0
     for c in range(args.cycles):
         s, w = CODES[code](args, work, field, f"mesh{c}.mesh", f"mesh{c + 1}.mesh")
@@ -255,9 +287,10 @@ def main():
             print(f"note: {exe} not found, {code} skipped", file=sys.stderr)
     args.work = os.path.abspath(args.work or tempfile.mkdtemp(prefix="bench_adapt2d_"))
     os.makedirs(args.work, exist_ok=True)
-    start_mesh(os.path.join(args.work, "start.mesh"))
+    for domain in ("square", "quarter"):
+        start_mesh(os.path.join(args.work, f"start_{domain}.mesh"), domain)
 
-    lines = [f"2D adaptation, {args.cycles} cycles from the same 200-triangle square, fields at scale {args.scale:g}; "
+    lines = [f"2D adaptation, {args.cycles} cycles from the same 200-triangle mesh, fields at scale {args.scale:g}; "
              f"time: median (min-max) of {args.runs} interleaved runs of each code's own time over the cycles; "
              "quality of the last mesh by dtlab quality --metric (UGAWG measures)", "",
              "| field | code | vertices | triangles | edges in [1/√2, √2] | min L | max L | worst mean ratio | mean mean ratio "

@@ -27,7 +27,10 @@ cmake --build build -j"$jobs"
 # once, with ASan + UBSan and libFuzzer's coverage instrumentation (fuzz/CMakeLists.txt), and the
 # whole suite runs under a second compiler (the Release build is gcc's).
 step "sanitizer and fuzz build (clang-14, ASan + UBSan, libFuzzer)"
+# Line tables only (not full debug information): the sanitizers' stack traces keep their files
+# and lines, and the cold build takes 10 minutes instead of 19 on 2 cores (2026-12-03).
 cmake -S . -B build-asan -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDTLAB_SANITIZE=ON \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
       -DDTLAB_BUILD_FUZZ=ON -DDTLAB_WITH_CGAL=OFF -DDTLAB_BUILD_BENCH=OFF >/dev/null
 cmake --build build-asan -j"$jobs"
 step "sanitizer suite"

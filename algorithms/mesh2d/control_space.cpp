@@ -1,5 +1,5 @@
 // The control space (control_space.hpp): point location in the background by the visibility walk
-// of Mesh2, then the metric interpolated from the triangle's vertices (kernel/metric.hpp).
+// of Mesh2 (settled by a bucket grid when it leaves the domain), then the metric interpolated from the triangle's vertices (kernel/metric.hpp).
 #include "algorithms/mesh2d/control_space.hpp"
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <string>
 
 #include "kernel/error.hpp"
+#include "kernel/predicates.hpp"
 #include "mesh/mesh2_from_data.hpp"
 
 namespace dtlab {
@@ -34,6 +35,14 @@ ControlSpace2::ControlSpace2(Mesh2 background, std::vector<Metric2> metrics, Met
                      std::to_string(mesh_.vertex_capacity()) + " background vertices");
   }
   validate();
+  std::vector<std::array<std::uint32_t, 3>> triangles(mesh_.triangle_capacity(), {0, 0, 0});
+  std::vector<bool> skip(mesh_.triangle_capacity(), true);
+  for (std::uint32_t t = 0; t < mesh_.triangle_capacity(); ++t) {
+    if (!mesh_.is_alive(t) || mesh_.is_ghost(t)) continue;
+    triangles[t] = {mesh_.vertex(t, 0), mesh_.vertex(t, 1), mesh_.vertex(t, 2)};
+    skip[t] = false;
+  }
+  grid_ = ElementGrid<Vec2>(mesh_.points(), std::span<const std::array<std::uint32_t, 3>>(triangles), &skip);
 }
 
 ControlSpace2 ControlSpace2::uniform(const Metric2& metric, const Vec2& lo, const Vec2& hi) {
@@ -56,8 +65,20 @@ void ControlSpace2::validate() const {
 
 Metric2 ControlSpace2::metric_at(const Vec2& p, std::uint32_t& hint) const {
   DTLAB_ASSERT(start_ != kNoHint);
-  std::uint32_t from = hint < mesh_.triangle_capacity() && mesh_.is_alive(hint) ? hint : start_;
+  std::uint32_t from = start_;
+  if (hint < mesh_.triangle_capacity() && mesh_.is_alive(hint)) from = hint;
+  else if (const auto near = grid_.candidates(p); !near.empty()) from = near.front();
   Mesh2::Location loc = mesh_.locate(p, from);
+  if (loc.where == Mesh2::Where::Outside) {
+    // The walk left through a hole or a concavity, or p is outside: the triangles of its bucket.
+    for (const std::uint32_t t : grid_.candidates(p)) {
+      const Vec2 &a = mesh_.point(mesh_.vertex(t, 0)), &b = mesh_.point(mesh_.vertex(t, 1)), &c = mesh_.point(mesh_.vertex(t, 2));
+      if (orient2d(a, b, p) != Sign::Negative && orient2d(b, c, p) != Sign::Negative && orient2d(c, a, p) != Sign::Negative) {
+        loc = mesh_.locate(p, t);
+        break;
+      }
+    }
+  }
   std::uint32_t t = loc.triangle;
   if (mesh_.is_ghost(t)) t = Mesh2::triangle_of(mesh_.twin(Mesh2::half_edge(t, 0)));
   hint = t;

@@ -10,6 +10,7 @@
 
 #include "kernel/metric.hpp"
 #include "kernel/vec.hpp"
+#include "mesh/element_grid.hpp"
 #include "mesh/io/mesh_data.hpp"
 #include "mesh/mesh2.hpp"
 
@@ -27,8 +28,10 @@ class ControlSpace2 {
 
   // The metric at p: located in the background by a walk from `hint` (a triangle of the
   // background, updated to where p was found; start with kNoHint), interpolated from the
-  // vertices of the triangle holding p with its barycentric weights. A point outside the
-  // background takes the metric at the nearest point of the triangle the walk stopped at.
+  // vertices of the triangle holding p with its barycentric weights. A walk that leaves the
+  // domain through a hole or a concavity is settled by the triangles of p's bucket
+  // (mesh/element_grid.hpp); a point outside the background takes the metric at the nearest point
+  // of the triangle the walk stopped at.
   static constexpr std::uint32_t kNoHint = 0xFFFFFFFFu;
   // The same metric everywhere: a background of two triangles over the box [lo, hi] (a point
   // outside it takes the same metric all the same).
@@ -45,6 +48,7 @@ class ControlSpace2 {
   std::vector<Metric2> metrics_;
   MetricInterpolation mode_;
   std::uint32_t start_ = kNoHint;  // a live finite triangle to walk from
+  ElementGrid<Vec2> grid_;         // the live finite triangles by bucket
 };
 
 }  // namespace dtlab

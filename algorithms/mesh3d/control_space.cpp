@@ -103,6 +103,16 @@ void ControlSpace3::build(MetricInterpolation mode) {
     const auto& v = tets_[t];
     uniform_[t] = metrics_[v[0]] == metrics_[v[1]] && metrics_[v[1]] == metrics_[v[2]] && metrics_[v[2]] == metrics_[v[3]];
   }
+  grid_ = ElementGrid<Vec3>(points_, std::span<const std::array<std::uint32_t, 4>>(tets_));
+}
+
+bool ControlSpace3::contains(std::uint32_t t, const Vec3& p) const {
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    const auto& f = kFacetVertex[i];
+    const auto& v = tets_[t];
+    if (orient3d(points_[v[f[0]]], points_[v[f[1]]], points_[v[f[2]]], p) == Sign::Negative) return false;
+  }
+  return true;
 }
 
 ControlSpace3 ControlSpace3::uniform(const Metric3& metric, const Vec3& lo, const Vec3& hi) {
@@ -157,7 +167,19 @@ std::uint32_t ControlSpace3::walk(const Vec3& p, std::uint32_t t) const {
 }
 
 Metric3 ControlSpace3::metric_at(const Vec3& p, std::uint32_t& hint) const {
-  const std::uint32_t t = walk(p, hint < tets_.size() ? hint : 0);
+  std::uint32_t start = 0;
+  if (hint < tets_.size()) start = hint;
+  else if (const auto near = grid_.candidates(p); !near.empty()) start = near.front();
+  std::uint32_t t = walk(p, start);
+  if (!contains(t, p)) {
+    // The walk stopped at the boundary: through a hole or a concavity, or p is outside.
+    for (const std::uint32_t c : grid_.candidates(p)) {
+      if (contains(c, p)) {
+        t = c;
+        break;
+      }
+    }
+  }
   hint = t;
   const auto& v = tets_[t];
   if (uniform_[t]) return metrics_[v[0]];

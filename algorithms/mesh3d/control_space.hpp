@@ -15,6 +15,7 @@
 
 #include "kernel/metric.hpp"
 #include "kernel/vec.hpp"
+#include "mesh/element_grid.hpp"
 #include "mesh/io/mesh_data3.hpp"
 
 namespace dtlab {
@@ -44,9 +45,10 @@ class ControlSpace3 {
 
   // The metric at p: located by a visibility walk (exact orient3d) from `hint` (a background
   // tetrahedron, updated to where p was found), interpolated from the vertices of the
-  // tetrahedron holding p with its barycentric weights. A point outside the background (or past
-  // the walk's bound in a non-convex background) takes the metric at the nearest point, up to
-  // clamping, of the tetrahedron the walk stopped at.
+  // tetrahedron holding p with its barycentric weights. A walk that leaves the domain through a
+  // hole or a concavity (the cylinder of the UGAWG cube-cylinder) is settled by the tetrahedra
+  // of p's bucket (mesh/element_grid.hpp); a point outside the background takes the metric at the
+  // nearest point, up to clamping, of the tetrahedron the walk stopped at.
   Metric3 metric_at(const Vec3& p, std::uint32_t& hint) const;
 
   std::uint32_t tetrahedron_count() const noexcept { return static_cast<std::uint32_t>(tets_.size()); }
@@ -59,6 +61,7 @@ class ControlSpace3 {
  private:
   void build(MetricInterpolation mode);
   std::uint32_t walk(const Vec3& p, std::uint32_t start) const;
+  bool contains(std::uint32_t t, const Vec3& p) const;
 
   std::vector<Vec3> points_;
   std::vector<Metric3> metrics_;
@@ -66,6 +69,7 @@ class ControlSpace3 {
   std::vector<std::array<std::uint32_t, 4>> neighbours_;  // tetrahedron across facet i, or kNone
   std::vector<std::uint8_t> uniform_;                     // per tetrahedron: its four metrics equal
   MetricInterpolation mode_ = MetricInterpolation::Sizes;
+  ElementGrid<Vec3> grid_;                                // the tetrahedra by bucket
 };
 
 }  // namespace dtlab

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -126,6 +127,13 @@ struct SplitOptions {
   // would flatten triangles without end.
   double quality_limit = kSplitQualityLimit;
   double min_height = 0.5 * kShortEdgeLength;
+  // An edge longer than this is split without that guard (the default: never). Adaptation sets
+  // 3 (adapt2d.cpp): beside a curved wall in a strongly anisotropic metric the wall's edges must be short
+  // (a chord's sagitta is bounded by the small size), the first layer's triangles are thin in
+  // the metric, and the splits of their long edges thin them further before the swaps improve
+  // them. The flattening stays bounded: with a value above 2 sqrt2 the halves of an edge are split
+  // unguarded only while they are still more than twice too long, at most log2(length) times.
+  double unguarded_length = std::numeric_limits<double>::infinity();
   // Split constrained edges (and edges between regions) too: 1 -> 2 in each triangle beside the
   // edge (ghosts included), the constraint and its reference carried to both halves, the new
   // vertex kOnBoundary. Off by default: the boundary discretisation is the input's.

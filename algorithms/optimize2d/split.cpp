@@ -103,7 +103,8 @@ std::uint32_t try_split(Mesh2& mesh, std::uint32_t h, const MetricField2& field,
     const double longest = std::max({metric.length(e - o), metric.length(at - e), metric.length(o - at)});
     lowest = std::min(lowest, root_det * std::fabs(cross(e - o, at - o)) / longest);  // 2 area / base
   }
-  if (!(after <= std::max(before, options.quality_limit)) && !(lowest >= options.min_height)) return Mesh2::kNone;
+  const bool guarded = !(edge_length(mesh, a, b) > options.unguarded_length);
+  if (guarded && !(after <= std::max(before, options.quality_limit)) && !(lowest >= options.min_height)) return Mesh2::kNone;
   const bool constrained = mesh.is_constrained(h);
   const int edge_ref = mesh.edge_ref(h);
   const std::uint32_t v = mesh.add_vertex(at, metric, constrained ? Mesh2::kOnBoundary : 0);

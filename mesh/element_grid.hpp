@@ -1,0 +1,127 @@
+// A uniform grid of buckets over a mesh's bounding box, each bucket listing the elements whose
+// bounding box meets it: the fallback of point location in a background mesh that is not convex.
+// A visibility walk stops at the boundary when the straight path to the point leaves the domain
+// through a hole or a concavity (the wall of the UGAWG cube-cylinder, the arc of a quarter
+// annulus), so a point inside the domain would take the metric of a far element; the elements of
+// the point's bucket are the candidates that settle it (George and Borouchaki §9.5: the control
+// space must answer anywhere in the domain). Deterministic: elements are listed in their order.
+//
+//   ElementGrid<Vec2> grid(points, triangles);     // elements: arrays of vertex numbers
+//   for (std::uint32_t t : grid.candidates(p)) ... // exact containment tests by the caller
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+#include "kernel/vec.hpp"
+
+namespace dtlab {
+
+template <class Point>
+class ElementGrid {
+ public:
+  static constexpr int kDim = std::is_same_v<Point, Vec2> ? 2 : 3;
+
+  ElementGrid() = default;
+  // `elements` holds the vertex numbers of each element (kDim + 1 of them, into `points`);
+  // `skip` (optional, one per element) marks elements left out (dead slots, ghosts). About
+  // `cells_per_element` buckets per listed element.
+  template <class Element>
+  ElementGrid(std::span<const Point> points, std::span<const Element> elements, const std::vector<bool>* skip = nullptr,
+              double cells_per_element = 1.0) {
+    std::uint64_t listed = 0;
+    bool first = true;
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      if (skip != nullptr && (*skip)[e]) continue;
+      ++listed;
+      for (const auto v : elements[e]) {
+        const Point& p = points[v];
+        for (int d = 0; d < kDim; ++d) {
+          lo_[d] = first ? coord(p, d) : std::min(lo_[d], coord(p, d));
+          hi_[d] = first ? coord(p, d) : std::max(hi_[d], coord(p, d));
+        }
+        first = false;
+      }
+    }
+    if (listed == 0) return;
+    // Cells as cubic as the box allows, about cells_per_element * listed of them, at most 2^24.
+    double volume = 1.0;
+    std::array<double, 3> extent{};
+    for (int d = 0; d < kDim; ++d) {
+      extent[d] = std::max(hi_[d] - lo_[d], 1e-300);
+      volume *= extent[d];
+    }
+    const double target = std::clamp(cells_per_element * static_cast<double>(listed), 1.0, 16777216.0);
+    const double side = std::pow(volume / target, 1.0 / kDim);
+    std::uint64_t total = 1;
+    for (int d = 0; d < kDim; ++d) {
+      n_[d] = static_cast<std::uint32_t>(std::clamp(std::ceil(extent[d] / side), 1.0, 4096.0));
+      scale_[d] = n_[d] / extent[d];
+      total *= n_[d];
+    }
+    // Two passes: count per bucket, then fill (compressed rows).
+    offsets_.assign(total + 1, 0);
+    auto each_cell = [&](const auto& element, auto&& visit) {
+      std::array<std::uint32_t, 3> a{}, b{};
+      for (int d = 0; d < kDim; ++d) {
+        double mn = coord(points[element[0]], d), mx = mn;
+        for (const auto v : element) {
+          mn = std::min(mn, coord(points[v], d));
+          mx = std::max(mx, coord(points[v], d));
+        }
+        a[d] = cell(mn, d);
+        b[d] = cell(mx, d);
+      }
+      for (std::uint32_t z = a[2]; z <= b[2]; ++z)
+        for (std::uint32_t y = a[1]; y <= b[1]; ++y)
+          for (std::uint32_t x = a[0]; x <= b[0]; ++x) visit(index(x, y, z));
+    };
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      if (skip != nullptr && (*skip)[e]) continue;
+      each_cell(elements[e], [&](std::uint64_t c) { ++offsets_[c + 1]; });
+    }
+    for (std::uint64_t c = 0; c < total; ++c) offsets_[c + 1] += offsets_[c];
+    items_.resize(offsets_[total]);
+    std::vector<std::uint64_t> fill(offsets_.begin(), offsets_.end() - 1);
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      if (skip != nullptr && (*skip)[e]) continue;
+      each_cell(elements[e], [&](std::uint64_t c) { items_[fill[c]++] = static_cast<std::uint32_t>(e); });
+    }
+  }
+
+  bool empty() const noexcept { return items_.empty(); }
+  // The elements whose bounding box meets p's bucket (p outside the box: the nearest bucket).
+  std::span<const std::uint32_t> candidates(const Point& p) const noexcept {
+    if (items_.empty()) return {};
+    std::array<std::uint32_t, 3> c{};
+    for (int d = 0; d < kDim; ++d) c[d] = cell(coord(p, d), d);
+    const std::uint64_t i = index(c[0], c[1], c[2]);
+    return {items_.data() + offsets_[i], static_cast<std::size_t>(offsets_[i + 1] - offsets_[i])};
+  }
+
+ private:
+  static double coord(const Point& p, int d) noexcept {
+    if constexpr (kDim == 2) return d == 0 ? p.x : p.y;
+    else return d == 0 ? p.x : d == 1 ? p.y : p.z;
+  }
+  std::uint32_t cell(double x, int d) const noexcept {
+    const double c = std::floor((x - lo_[d]) * scale_[d]);
+    if (!(c > 0.0)) return 0;  // below, or NaN
+    return c >= n_[d] ? n_[d] - 1 : static_cast<std::uint32_t>(c);
+  }
+  std::uint64_t index(std::uint32_t x, std::uint32_t y, std::uint32_t z) const noexcept {
+    return (static_cast<std::uint64_t>(z) * n_[1] + y) * n_[0] + x;
+  }
+
+  std::array<double, 3> lo_{}, hi_{}, scale_{};
+  std::array<std::uint32_t, 3> n_{1, 1, 1};
+  std::vector<std::uint64_t> offsets_;
+  std::vector<std::uint32_t> items_;
+};
+
+}  // namespace dtlab
