@@ -15,7 +15,9 @@ grid, or the quarter domain's polar 10 x 10 grid with the arc cut into 10 chords
 CYCLES cycles; before each the field is evaluated analytically at the current vertices (dtlab
 and Gmsh: a .sol / .pos this script writes; FreeFem++: the same formulas interpolated in P1 on
 its mesh, which is the value at the vertices). Each code adapts its own previous mesh: dtlab by
-local modification (dtlab adapt, boundary points on its smooth support of the polygonal arc),
+local modification (dtlab adapt, boundary points on its smooth support of the polygonal arc) and
+by complete reconstruction (dtlab adapt --method reconstruct: the boundary cut anew on the
+previous mesh's chords, the domain generated anew),
 FreeFem++ by BAMG's adaptmesh (no metric smoothing, ratio=0, since the field is given; its
 geometry is the start mesh's boundary), Gmsh by BAMG remeshing the domain's exact geometry (a
 true circular arc) with the current mesh as the background. The last mesh of each is measured
@@ -206,6 +208,14 @@ def cycle_dtlab(args, work, field, current, nxt):
     return json.loads(out.strip().splitlines()[-1])["seconds"], wall
 
 
+def cycle_dtlab_reconstruct(args, work, field, current, nxt):
+    vertices, _, _ = read_medit(os.path.join(work, current))
+    write_sol(os.path.join(work, "metric.sol"), field, vertices, args.scale)
+    out, wall = run([args.dtlab, "adapt", current, "--metric", "metric.sol", "--method", "reconstruct", "-o", nxt,
+                     "--stats"], work)
+    return json.loads(out.strip().splitlines()[-1])["seconds"], wall
+
+
 def cycle_freefem(args, work, field, current, nxt):
     script = (f'mesh Th = readmesh("{current}");\nfespace Vh(Th, P1);\n' + freefem_metric(field, args.scale) +
               "real t0 = clock();\n"
@@ -235,7 +245,8 @@ def cycle_gmsh(args, work, field, current, nxt):
     return seconds, wall
 
 
-CODES = {"dtlab": cycle_dtlab, "FreeFem++ adaptmesh": cycle_freefem, "Gmsh BAMG": cycle_gmsh}
+CODES = {"dtlab": cycle_dtlab, "dtlab reconstruct": cycle_dtlab_reconstruct, "FreeFem++ adaptmesh": cycle_freefem,
+         "Gmsh BAMG": cycle_gmsh}
 
 
 def chain(args, code, field, work):
@@ -279,7 +290,7 @@ def main():
     args.dtlab = os.path.abspath(args.dtlab)
     if not os.access(args.dtlab, os.X_OK):
         ap.error(f"no dtlab at {args.dtlab} (build it, or give --dtlab)")
-    codes = ["dtlab"]
+    codes = ["dtlab", "dtlab reconstruct"]
     for code, exe in (("FreeFem++ adaptmesh", args.freefem), ("Gmsh BAMG", args.gmsh)):
         if shutil.which(exe):
             codes.append(code)
@@ -303,7 +314,7 @@ def main():
         last = {}
         for r in range(args.runs):
             for code in codes:
-                work = os.path.join(args.work, field, code.split()[0] + f"_run{r}")
+                work = os.path.join(args.work, field, code.replace(" ", "_") + f"_run{r}")
                 own, wall, mesh = chain(args, code, field, work)
                 times[code].append(own)
                 walls[code].append(wall)

@@ -1,6 +1,6 @@
 # CTest tests of `dtlab adapt`: a mesh of data/square_disc.poly made by `dtlab mesh` is adapted
 # to the 2D UGAWG linear field (unit edges, references kept, the same bytes twice, the metric at
-# the output written) and coarsened to a size (boundary vertices removed, corners kept); a cube's
+# the output written), generated anew for it (--method reconstruct: the hole kept) and coarsened to a size (boundary vertices removed, corners kept); a cube's
 # tetrahedral mesh (data/quad_cube.off) is refined to a size; bad input
 # (missing file, a .sol of the wrong count, a metric that is not positive definite, --hgrad below
 # 1) fails with a message naming it. Each case runs cli/adapt_check.cmake in a scratch directory.
@@ -8,7 +8,7 @@ if(NOT TARGET dtlab_cli)
   return()
 endif()
 
-foreach(_dtlab_case linear_layer coarsen three_d bad_input)
+foreach(_dtlab_case linear_layer coarsen reconstruct three_d bad_input)
   add_test(NAME cli_adapt_${_dtlab_case}
            COMMAND ${CMAKE_COMMAND} -DDTLAB=$<TARGET_FILE:dtlab_cli>
                    -DPOLY=${PROJECT_SOURCE_DIR}/data/square_disc.poly
