@@ -13,8 +13,9 @@
 // are those of poisson_p1.hpp: the P1 interpolation error of u in L∞ (optimal order N^-1 in 2D
 // with anisotropic meshes, Loseille and Alauzet 2011, §4), the finite element error in L∞ and L2.
 //
-//   adapt_loop [--quick] [--cycles C] [--tsv FILE] [--check]
-// --quick: fewer, smaller meshes and 3 cycles (CTest); --check: fail (exit 1) unless the anisotropic series
+//   adapt_loop [--quick] [--cycles C] [--hgrad G] [--complexities N1,N2,...] [--tsv FILE] [--check]
+// --hgrad: the metric's gradation (1.5 by default, 0 for none); --complexities: these adaptive runs only
+// (no uniform series, no slopes); --quick: fewer, smaller meshes and 3 cycles (CTest); --check: fail (exit 1) unless the anisotropic series
 // has a slope at least as steep as -0.8 and the anisotropic error is below the isotropic one and
 // that below the uniform one at the same number of vertices.
 #include <chrono>
@@ -66,9 +67,11 @@ const char* name(Series s) {
 
 // The L∞ metric of u_h at complexity n; isotropic: λ_max I, normalized again to n (in 2D the
 // complexity of α M is α times that of M).
-std::vector<Metric2> metric_of(const MeshData2& mesh, const std::vector<double>& uh, double n, bool isotropic) {
+std::vector<Metric2> metric_of(const MeshData2& mesh, const std::vector<double>& uh, double n, bool isotropic,
+                               double hgrad) {
   SolutionMetricOptions options;
   options.complexity = n;
+  if (hgrad > 0) options.gradation = hgrad;
   options.h_min = 1e-5;
   options.h_max = 0.3;
   const std::vector<std::vector<double>> fields{uh};
@@ -94,7 +97,7 @@ struct Row {
   double seconds = 0.0;
 };
 
-Row run(Series series, double target, int cycles) {
+Row run(Series series, double target, int cycles, double hgrad) {
   const auto start = std::chrono::steady_clock::now();
   Row row;
   row.series = series;
@@ -102,7 +105,7 @@ Row run(Series series, double target, int cycles) {
   MeshData2 mesh = uniform_mesh(series == Series::Uniform ? target : 0.05);
   std::vector<double> uh = solve_poisson(mesh, source, exact);
   for (int c = 0; series != Series::Uniform && c < cycles; ++c) {
-    const ControlSpace2 control(mesh, metric_of(mesh, uh, target, series == Series::Isotropic));
+    const ControlSpace2 control(mesh, metric_of(mesh, uh, target, series == Series::Isotropic, hgrad));
     Mesh2 adapted = mesh2_from_data(mesh);
     const Adapt2dStats stats = adapt2d(adapted, control);
     row.unit_edge_share = stats.after.unit_edge_share;
@@ -147,18 +150,32 @@ double error_at(const std::vector<Row>& rows, Series s, double FieldErrors::*err
 int main_loop(int argc, char** argv) {
   bool quick = false, check = false;
   int cycles = 0;  // 0: 5, 3 with --quick
+  // The metric's gradation (Borouchaki, Hecht, Frey 1998): 1.5 by default. Without it the
+  // anisotropic meshes past 10^4 vertices had a worst mean ratio of 0.26 and an L-inf error no
+  // better than the isotropic one; with 1.5, 0.74 and 6 times smaller (README.md).
+  double hgrad = 1.5;  // 0: none
+  std::vector<double> only;  // --complexities: these adaptive runs only, no uniform series
   std::string tsv;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--check")) check = true;
     else if (!std::strcmp(argv[i], "--cycles") && i + 1 < argc) cycles = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--tsv") && i + 1 < argc) tsv = argv[++i];
+    else if (!std::strcmp(argv[i], "--hgrad") && i + 1 < argc) hgrad = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--complexities") && i + 1 < argc) {
+      for (char* t = std::strtok(argv[++i], ","); t != nullptr; t = std::strtok(nullptr, ",")) only.push_back(std::atof(t));
+    }
     else {
-      std::fprintf(stderr, "adapt_loop: unknown argument '%s' (usage: adapt_loop [--quick] [--cycles C] [--tsv FILE] [--check])\n", argv[i]);
+      std::fprintf(stderr, "adapt_loop: unknown argument '%s' (usage: adapt_loop [--quick] [--cycles C] [--hgrad G] "
+                   "[--complexities N1,N2,...] [--tsv FILE] [--check])\n", argv[i]);
       return 2;
     }
   }
   if (cycles == 0) cycles = quick ? 3 : 5;
+  if (hgrad != 0.0 && !(hgrad >= 1.0 && hgrad < 100.0)) {
+    std::fprintf(stderr, "adapt_loop: --hgrad must be 0 (none) or in [1, 100), not %g\n", hgrad);
+    return 2;
+  }
   if (cycles < 1 || cycles > 50) {
     std::fprintf(stderr, "adapt_loop: --cycles must be in [1, 50], not %d\n", cycles);
     return 2;
@@ -168,10 +185,11 @@ int main_loop(int argc, char** argv) {
   const std::vector<double> complexities = quick ? std::vector<double>{300, 1200, 2400}
                                                  : std::vector<double>{250, 500, 1000, 2000, 4000, 8000, 16000, 32000};
   std::vector<Row> rows;
-  for (double h : sizes) rows.push_back(run(Series::Uniform, h, cycles));
-  for (double n : complexities) {
-    rows.push_back(run(Series::Isotropic, n, cycles));
-    rows.push_back(run(Series::Anisotropic, n, cycles));
+  if (only.empty())
+    for (double h : sizes) rows.push_back(run(Series::Uniform, h, cycles, hgrad));
+  for (double n : only.empty() ? complexities : only) {
+    rows.push_back(run(Series::Isotropic, n, cycles, hgrad));
+    rows.push_back(run(Series::Anisotropic, n, cycles, hgrad));
   }
 
   std::FILE* out = stdout;
@@ -189,6 +207,7 @@ int main_loop(int argc, char** argv) {
     std::fputs(line, out);
     if (file) file << line;
   }
+  if (!only.empty()) return 0;  // no uniform series: no slopes or comparison
   std::printf("\nslopes (least squares of log error on log vertices; optimal P1 order: -1 in L-inf, -1 in L2)\n");
   for (Series s : {Series::Uniform, Series::Isotropic, Series::Anisotropic})
     std::printf("  %-12s interp_max %6.3f   fe_max %6.3f   fe_l2 %6.3f\n", name(s), slope(rows, s, &FieldErrors::interp_max),
