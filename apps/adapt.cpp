@@ -10,7 +10,6 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
-#include <set>
 #include <span>
 #include <sstream>
 #include <string>
@@ -25,23 +24,13 @@
 #include "apps/input_files.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
+#include "mesh/element_edges.hpp"
 #include "mesh/io/medit_sol.hpp"
 #include "mesh/mesh2_from_data.hpp"
 
 namespace dtlab::cli {
 
 namespace {
-
-// The input mesh's edges, each once (for the gradation).
-std::vector<std::array<std::uint32_t, 2>> mesh_edges(const MeshData2& mesh) {
-  std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
-  for (const auto& t : mesh.triangles)
-    for (int i = 0; i < 3; ++i) edges.emplace(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
-  std::vector<std::array<std::uint32_t, 2>> out;
-  out.reserve(edges.size());
-  for (const auto& [a, b] : edges) out.push_back({a, b});
-  return out;
-}
 
 // The domain with its vertex references: an input vertex still in the mesh (same slot, same
 // point) keeps its own; a new boundary vertex takes the reference of its boundary edge; the
@@ -111,7 +100,7 @@ int run_adapt2(const AdaptRequest& request) {
   const SolData sol = read_medit_sol(request.metric);
   check_sol_matches(sol, input.vertices.size(), request.metric);
   std::vector<Metric2> metrics = metrics2_from_sol(sol, request.metric);
-  if (request.hgrad) apply_gradation(input.vertices, mesh_edges(input), metrics, *request.hgrad);
+  if (request.hgrad) apply_gradation(input.vertices, element_edges(std::span<const std::array<std::uint32_t, 3>>(input.triangles)), metrics, *request.hgrad);
   Mesh2 mesh;
   try {
     mesh = mesh2_from_data(input);

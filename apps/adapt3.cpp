@@ -13,6 +13,7 @@
 #include "apps/cli_util.hpp"
 #include "apps/input_files.hpp"
 #include "kernel/error.hpp"
+#include "mesh/element_edges.hpp"
 #include "mesh/io/medit_sol.hpp"
 #include "mesh/mesh3_from_data.hpp"
 #include "mesh/mesh_quality.hpp"
@@ -57,13 +58,8 @@ int run_adapt3(const AdaptRequest& request) {
   if (request.hgrad) {
     if (!(*request.hgrad > 1.0))
       throw InputError("--hgrad " + json_number(*request.hgrad) + ": give a gradation above 1");
-    std::vector<std::array<std::uint32_t, 2>> edges;
-    for (const auto& t : input.tetrahedra)
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) edges.push_back({std::min(t[i], t[j]), std::max(t[i], t[j])});
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    apply_gradation(input.vertices, edges, metrics, *request.hgrad);
+    apply_gradation(input.vertices, element_edges(std::span<const std::array<std::uint32_t, 4>>(input.tetrahedra)), metrics,
+                    *request.hgrad);
   }
   Mesh3 mesh;
   try {

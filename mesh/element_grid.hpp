@@ -8,6 +8,7 @@
 //
 //   ElementGrid<Vec2> grid(points, triangles);     // elements: arrays of vertex numbers
 //   for (std::uint32_t t : grid.candidates(p)) ... // exact containment tests by the caller
+//                                                   // (closed_triangle_holds in 2D)
 #pragma once
 
 #include <algorithm>
@@ -18,9 +19,16 @@
 #include <type_traits>
 #include <vector>
 
+#include "kernel/predicates.hpp"
 #include "kernel/vec.hpp"
 
 namespace dtlab {
+
+// The exact test the grid's callers make on its candidates: p in the closed triangle abc
+// (counter-clockwise), by three orient2d.
+inline bool closed_triangle_holds(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& p) {
+  return orient2d(a, b, p) != Sign::Negative && orient2d(b, c, p) != Sign::Negative && orient2d(c, a, p) != Sign::Negative;
+}
 
 template <class Point>
 class ElementGrid {

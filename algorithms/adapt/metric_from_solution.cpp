@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
 #include <string>
 #include <utility>
 
 #include "kernel/error.hpp"
+#include "mesh/element_edges.hpp"
 
 namespace dtlab {
 
@@ -165,13 +165,7 @@ std::vector<typename Traits<D>::Metric> compute(std::span<const typename Traits<
   for (std::size_t v = 0; v < n; ++v) result[v] = used[v] ? clip(result[v], h_min, h_max) : Metric::isotropic(h_max);
   std::uint32_t passes = 0;
   if (options.gradation) {
-    std::set<std::pair<std::uint32_t, std::uint32_t>> unique;
-    for (const auto& e : elements)
-      for (int i = 0; i <= D; ++i)
-        for (int j = i + 1; j <= D; ++j) unique.emplace(std::min(e[i], e[j]), std::max(e[i], e[j]));
-    std::vector<std::array<std::uint32_t, 2>> edges;
-    for (const auto& [a, b] : unique) edges.push_back({a, b});
-    passes = apply_gradation(points, edges, std::span<Metric>(result), *options.gradation);
+    passes = apply_gradation(points, element_edges(elements), std::span<Metric>(result), *options.gradation);
   }
   if (stats) {
     stats->complexity_before_clipping = complexity_before;

@@ -158,9 +158,7 @@ std::vector<Vec2> hole_seeds(const MeshData2& d) {
   auto inside_some_triangle = [&](const Vec2& p) {
     for (const std::uint32_t t : grid.candidates(p)) {
       const auto& v = d.triangles[t];
-      const Vec2 &a = d.vertices[v[0]], &b = d.vertices[v[1]], &c = d.vertices[v[2]];
-      if (orient2d(a, b, p) != Sign::Negative && orient2d(b, c, p) != Sign::Negative && orient2d(c, a, p) != Sign::Negative)
-        return true;
+      if (closed_triangle_holds(d.vertices[v[0]], d.vertices[v[1]], d.vertices[v[2]], p)) return true;
     }
     return false;
   };

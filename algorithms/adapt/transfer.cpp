@@ -6,9 +6,11 @@
 #include <numeric>
 #include <string>
 
+#include "algorithms/adapt/transfer_apply.hpp"
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/element_grid.hpp"
 #include "mesh/mesh2.hpp"
 #include "mesh/mesh2_from_data.hpp"
 
@@ -52,15 +54,12 @@ Snap nearest_boundary(const Mesh2& mesh, std::uint32_t ghost, const Vec2& p, std
   return best;
 }
 
-// Full scan for a point the walk lost through a concavity or a hole: the triangle holding it
-// (exact orient2d, closed triangles), or kNone.
-std::uint32_t scan(const Mesh2& mesh, const Vec2& p) {
-  for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) {
-    if (!mesh.is_alive(t) || mesh.is_ghost(t)) continue;
-    const Vec2 &a = mesh.point(mesh.vertex(t, 0)), &b = mesh.point(mesh.vertex(t, 1)), &c = mesh.point(mesh.vertex(t, 2));
-    if (orient2d(a, b, p) != Sign::Negative && orient2d(b, c, p) != Sign::Negative && orient2d(c, a, p) != Sign::Negative) {
+// The triangle holding a point the walk lost through a concavity or a hole, among the candidates
+// of its bucket (exact orient2d, closed triangles), or kNone.
+std::uint32_t settle(const Mesh2& mesh, const ElementGrid<Vec2>& grid, const Vec2& p) {
+  for (const std::uint32_t t : grid.candidates(p)) {
+    if (closed_triangle_holds(mesh.point(mesh.vertex(t, 0)), mesh.point(mesh.vertex(t, 1)), mesh.point(mesh.vertex(t, 2)), p))
       return t;
-    }
   }
   return Mesh2::kNone;
 }
@@ -83,23 +82,11 @@ P1Weights weights_in(const Mesh2& mesh, std::uint32_t t, const Vec2& p) {
   return P1Weights{{v0, v1, v2}, {w0, w1, w2}};
 }
 
-void check_triangles(const MeshData2& mesh, const char* which) {
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    for (std::uint32_t v : mesh.triangles[t]) {
-      if (v >= mesh.vertices.size()) {
-        throw InputError(std::string("the ") + which + " mesh's triangle " + std::to_string(t + 1) + " uses vertex " +
-                             std::to_string(v + 1) + " of " + std::to_string(mesh.vertices.size()),
-                         {t + 1});
-      }
-    }
-  }
-}
-
 }  // namespace
 
 double integrate_p1(const MeshData2& mesh, std::span<const double> field, std::size_t components,
                     std::size_t component) {
-  check_triangles(mesh, "integrated");
+  transfer_detail::check_elements(mesh, "integrated");
   if (field.size() != components * mesh.vertices.size()) throw InputError("integrate_p1: field size mismatch");
   double sum = 0.0;
   for (const auto& tri : mesh.triangles) {
@@ -114,7 +101,7 @@ double integrate_p1(const MeshData2& mesh, std::span<const double> field, std::s
 std::vector<P1Weights> transfer_weights2(const MeshData2& old_mesh, const MeshData2& new_mesh,
                                          const TransferOptions& options, TransferStats* stats) {
   if (old_mesh.triangles.empty()) throw InputError("the old mesh has no triangle");
-  check_triangles(new_mesh, "new");
+  transfer_detail::check_elements(new_mesh, "new");
   const Mesh2 mesh = mesh2_from_data(old_mesh);  // names an invalid old mesh (numbered from 1)
   TransferStats local;
   TransferStats& st = stats ? *stats : local;
@@ -128,6 +115,9 @@ std::vector<P1Weights> transfer_weights2(const MeshData2& old_mesh, const MeshDa
   for (std::uint32_t t = 0; t < mesh.triangle_capacity() && hint == Mesh2::kNone; ++t) {
     if (mesh.is_alive(t) && !mesh.is_ghost(t)) hint = t;
   }
+  // Triangle t of the old mesh is slot t of `mesh` (mesh2_from_data).
+  const ElementGrid<Vec2> grid(std::span<const Vec2>(old_mesh.vertices),
+                               std::span<const std::array<std::uint32_t, 3>>(old_mesh.triangles));
   std::vector<P1Weights> out(new_mesh.vertices.size());
   for (std::uint32_t v : order) {
     const Vec2& p = new_mesh.vertices[v];
@@ -149,7 +139,7 @@ std::vector<P1Weights> transfer_weights2(const MeshData2& old_mesh, const MeshDa
     // On the domain's side of its nearest boundary edge: the walk left through a concavity or a
     // hole, p may be inside after all.
     if (orient2d(mesh.point(snap.a), mesh.point(snap.b), p) != Sign::Negative) {
-      const std::uint32_t t = scan(mesh, p);
+      const std::uint32_t t = settle(mesh, grid, p);
       if (t != Mesh2::kNone) {
         out[v] = weights_in(mesh, t, p);
         hint = t;
@@ -174,61 +164,17 @@ std::vector<P1Weights> transfer_weights2(const MeshData2& old_mesh, const MeshDa
 std::vector<Metric2> transfer_metrics2(const MeshData2& old_mesh, std::span<const Metric2> metrics,
                                        const MeshData2& new_mesh, const TransferOptions& options,
                                        TransferStats* stats, MetricInterpolation mode) {
-  if (metrics.size() != old_mesh.vertices.size()) {
-    throw InputError("the old mesh has " + std::to_string(old_mesh.vertices.size()) + " vertices but " +
-                     std::to_string(metrics.size()) + " metrics are given");
-  }
-  const std::vector<P1Weights> weights = transfer_weights2(old_mesh, new_mesh, options, stats);
-  std::vector<Metric2> out;
-  out.reserve(weights.size());
-  for (const P1Weights& w : weights) {
-    const std::array<Metric2, 3> m{metrics[w.vertices[0]], metrics[w.vertices[1]], metrics[w.vertices[2]]};
-    // Rounding may leave a weight at -1e-17: clamp, the interpolation wants non-negative weights.
-    std::array<double, 3> c{std::max(w.weights[0], 0.0), std::max(w.weights[1], 0.0), std::max(w.weights[2], 0.0)};
-    const double sum = c[0] + c[1] + c[2];
-    for (double& x : c) x /= sum;
-    out.push_back(interpolate(m, c, mode));
-  }
-  return out;
+  transfer_detail::check_metrics(old_mesh.vertices.size(), metrics.size());
+  return transfer_detail::apply_metrics(metrics, transfer_weights2(old_mesh, new_mesh, options, stats), mode);
 }
 
 std::vector<double> transfer_field2(const MeshData2& old_mesh, std::span<const double> field, std::size_t components,
                                     const MeshData2& new_mesh, const TransferOptions& options, TransferStats* stats) {
-  if (components == 0) throw InputError("a field to transfer needs at least one component");
-  if (field.size() != components * old_mesh.vertices.size()) {
-    throw InputError("the field has " + std::to_string(field.size()) + " values but the old mesh has " +
-                     std::to_string(old_mesh.vertices.size()) + " vertices x " + std::to_string(components) +
-                     " components");
-  }
+  transfer_detail::check_field(old_mesh, field, components);
   TransferStats local;
   TransferStats& st = stats ? *stats : local;
   const std::vector<P1Weights> weights = transfer_weights2(old_mesh, new_mesh, options, &st);
-  std::vector<double> out(new_mesh.vertices.size() * components, 0.0);
-  for (std::size_t v = 0; v < weights.size(); ++v) {
-    const P1Weights& w = weights[v];
-    for (std::size_t k = 0; k < components; ++k) {
-      out[v * components + k] = w.weights[0] * field[w.vertices[0] * components + k] +
-                                w.weights[1] * field[w.vertices[1] * components + k] +
-                                w.weights[2] * field[w.vertices[2] * components + k];
-    }
-  }
-
-  double new_area = 0.0;
-  for (const auto& tri : new_mesh.triangles) {
-    new_area += 0.5 * cross(new_mesh.vertices[tri[1]] - new_mesh.vertices[tri[0]],
-                            new_mesh.vertices[tri[2]] - new_mesh.vertices[tri[0]]);
-  }
-  for (std::size_t k = 0; k < components; ++k) {
-    const double before = integrate_p1(old_mesh, field, components, k);
-    st.integral_old.push_back(before);
-    // Global correction (§12.2.6): a constant c with c x |new domain| the missing integral.
-    if (options.conservative && new_area > 0.0) {
-      const double c = (before - integrate_p1(new_mesh, out, components, k)) / new_area;
-      for (std::size_t v = 0; v < new_mesh.vertices.size(); ++v) out[v * components + k] += c;
-    }
-    st.integral_new.push_back(integrate_p1(new_mesh, out, components, k));
-  }
-  return out;
+  return transfer_detail::apply_field(old_mesh, field, components, new_mesh, weights, options.conservative, st);
 }
 
 }  // namespace dtlab

@@ -1,4 +1,4 @@
-// Transfer of vertex fields from an old triangle mesh to the vertices of a new one (book §9.8,
+// Transfer of vertex fields from an old triangle (or tetrahedral) mesh to the vertices of a new one (book §9.8,
 // §12.2.6): P1 interpolation at each new vertex, located by the exact visibility walk of Mesh2
 // (each walk starts where the previous one ended, new vertices visited in Hilbert order, so the
 // total cost is near linear). A new vertex outside the old mesh (a curved boundary discretised
@@ -16,6 +16,7 @@
 
 #include "kernel/metric.hpp"
 #include "mesh/io/mesh_data.hpp"
+#include "mesh/io/mesh_data3.hpp"
 
 namespace dtlab {
 
@@ -33,7 +34,7 @@ struct TransferOptions {
 struct TransferStats {
   std::size_t located = 0;   // new vertices found inside the old mesh
   std::size_t snapped = 0;   // new vertices outside, given the nearest boundary point's value
-  std::size_t rescanned = 0; // walks that left through a concavity, located by a full scan
+  std::size_t rescanned = 0; // walks that left through a concavity, settled by the bucket grid (mesh/element_grid.hpp)
   double max_outside_distance = 0.0;
   std::vector<double> integral_old, integral_new;  // per component, after the correction
 };
@@ -64,6 +65,28 @@ std::vector<Metric2> transfer_metrics2(const MeshData2& old_mesh, std::span<cons
 
 // Integral of a P1 field (one component, `component` of `components`) over the triangles.
 double integrate_p1(const MeshData2& mesh, std::span<const double> field, std::size_t components,
+                    std::size_t component);
+
+// --- 3D (transfer3.cpp): the same on tetrahedral meshes. A new vertex is located by the exact
+// walk of Mesh3 from the previous one's tetrahedron (Hilbert order), settled by the bucket grid
+// of the old tetrahedra when the walk leaves through a concavity; a vertex outside takes the
+// value at its nearest point on the old boundary triangles (those of its bucket in a grid over
+// them, all of them when the bucket has none). outside_limit is taken against the longest edge
+// of the nearest boundary triangle; boundary_search is not used.
+struct P1Weights3 {
+  std::array<std::uint32_t, 4> vertices{};
+  std::array<double, 4> weights{};
+};
+std::vector<P1Weights3> transfer_weights3(const MeshData3& old_mesh, const MeshData3& new_mesh,
+                                          const TransferOptions& options = {}, TransferStats* stats = nullptr);
+std::vector<double> transfer_field3(const MeshData3& old_mesh, std::span<const double> field, std::size_t components,
+                                    const MeshData3& new_mesh, const TransferOptions& options = {},
+                                    TransferStats* stats = nullptr);
+std::vector<Metric3> transfer_metrics3(const MeshData3& old_mesh, std::span<const Metric3> metrics,
+                                       const MeshData3& new_mesh, const TransferOptions& options = {},
+                                       TransferStats* stats = nullptr,
+                                       MetricInterpolation mode = MetricInterpolation::Sizes);
+double integrate_p1(const MeshData3& mesh, std::span<const double> field, std::size_t components,
                     std::size_t component);
 
 }  // namespace dtlab

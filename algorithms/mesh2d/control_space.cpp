@@ -7,7 +7,6 @@
 #include <string>
 
 #include "kernel/error.hpp"
-#include "kernel/predicates.hpp"
 #include "mesh/mesh2_from_data.hpp"
 
 namespace dtlab {
@@ -72,8 +71,7 @@ Metric2 ControlSpace2::metric_at(const Vec2& p, std::uint32_t& hint) const {
   if (loc.where == Mesh2::Where::Outside) {
     // The walk left through a hole or a concavity, or p is outside: the triangles of its bucket.
     for (const std::uint32_t t : grid_.candidates(p)) {
-      const Vec2 &a = mesh_.point(mesh_.vertex(t, 0)), &b = mesh_.point(mesh_.vertex(t, 1)), &c = mesh_.point(mesh_.vertex(t, 2));
-      if (orient2d(a, b, p) != Sign::Negative && orient2d(b, c, p) != Sign::Negative && orient2d(c, a, p) != Sign::Negative) {
+      if (closed_triangle_holds(mesh_.point(mesh_.vertex(t, 0)), mesh_.point(mesh_.vertex(t, 1)), mesh_.point(mesh_.vertex(t, 2)), p)) {
         loc = mesh_.locate(p, t);
         break;
       }

@@ -1,47 +1,24 @@
 // Solution transfer (algorithms/adapt/transfer.hpp): exact on linear fields, identity on the
-// same mesh, O(h^2) on a quadratic, the conservative option, boundary snap, bad input named.
+// same mesh, O(h^2) on a quadratic, the conservative option, boundary snap, bad input named; in
+// 3D exact on linear fields (across a hole too), the snap outside, the limit, conservation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "algorithms/adapt/transfer.hpp"
 #include "kernel/error.hpp"
+#include "verify/generators/grid_meshes.hpp"
+#include "verify/generators/kuhn_cubes.hpp"
 
 namespace dtlab {
 namespace {
 
-// An n x n grid of [0,1]^2 with jittered interior vertices (deterministic), diagonals alternating.
-MeshData2 grid(int n, double jitter) {
-  MeshData2 m;
-  for (int j = 0; j <= n; ++j) {
-    for (int i = 0; i <= n; ++i) {
-      double x = double(i) / n, y = double(j) / n;
-      if (i > 0 && i < n && j > 0 && j < n) {
-        x += jitter / n * std::sin(12.9898 * i + 78.233 * j);
-        y += jitter / n * std::cos(39.3468 * i + 11.135 * j);
-      }
-      m.vertices.push_back({x, y});
-      m.vertex_refs.push_back(0);
-    }
-  }
-  auto id = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      if ((i + j) % 2 == 0) {
-        m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-        m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-      } else {
-        m.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
-        m.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-      }
-      m.triangle_refs.push_back(1);
-      m.triangle_refs.push_back(1);
-    }
-  }
-  return m;
-}
+MeshData2 grid(int n, double jitter) { return gen::jittered_grid(n, jitter); }
 
 // A polygon of k sides inscribed in the unit circle, fanned from its centre.
 MeshData2 disc(int k) {
@@ -192,6 +169,86 @@ TEST(AdaptTransfer, BadInputNamed) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("6"), std::string::npos) << e.what();
   }
+}
+
+// The cells of an n x n x m block of unit cubes (minus the cells `hole` says), Kuhn-cut, scaled.
+MeshData3 block(int n, int m, double scale, bool (*hole)(int, int, int) = nullptr) {
+  std::vector<std::array<int, 3>> cells;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < m; ++k)
+        if (hole == nullptr || !hole(i, j, k)) cells.push_back({i, j, k});
+  MeshData3 d = gen::kuhn_cubes(cells);
+  for (Vec3& p : d.vertices) p = scale * p;
+  return d;
+}
+
+double linear3(const Vec3& p) { return 1.0 + 2.0 * p.x - p.y + 0.5 * p.z; }
+
+std::vector<double> sample3(const MeshData3& m, double (*f)(const Vec3&)) {
+  std::vector<double> out;
+  for (const Vec3& p : m.vertices) out.push_back(f(p));
+  return out;
+}
+
+TEST(AdaptTransfer3, ExactOnLinearFields) {
+  const MeshData3 a = block(2, 2, 1.0), b = block(3, 3, 2.0 / 3.0);  // the same cube [0, 2]^3
+  TransferStats st;
+  const std::vector<double> w = transfer_field3(a, sample3(a, linear3), 1, b, {}, &st);
+  EXPECT_EQ(st.located, b.vertices.size());
+  EXPECT_EQ(st.snapped, 0u);
+  for (std::size_t v = 0; v < b.vertices.size(); ++v) EXPECT_NEAR(w[v], linear3(b.vertices[v]), 1e-12);
+}
+
+TEST(AdaptTransfer3, AcrossAHole) {
+  // A ring of cells around the hole [1, 2] x [1, 2] x [0, 1], old at size 1, new at size 1/2.
+  const MeshData3 a = block(3, 1, 1.0, [](int i, int j, int) { return i == 1 && j == 1; });
+  const MeshData3 b = block(6, 2, 0.5, [](int i, int j, int) { return (i == 2 || i == 3) && (j == 2 || j == 3); });
+  TransferStats st;
+  const std::vector<double> w = transfer_field3(a, sample3(a, linear3), 1, b, {}, &st);
+  EXPECT_EQ(st.located, b.vertices.size());
+  EXPECT_EQ(st.snapped, 0u);
+  for (std::size_t v = 0; v < b.vertices.size(); ++v) EXPECT_NEAR(w[v], linear3(b.vertices[v]), 1e-12);
+}
+
+TEST(AdaptTransfer3, OutsideTakesTheNearestBoundaryPointAndFarIsNamed) {
+  const MeshData3 a = block(2, 2, 1.0);
+  MeshData3 b = block(2, 2, 1.0);
+  for (Vec3& p : b.vertices) p = Vec3{1, 1, 1} + 1.01 * (p - Vec3{1, 1, 1});  // 1 % larger
+  TransferStats st;
+  const std::vector<double> w = transfer_field3(a, sample3(a, linear3), 1, b, {}, &st);
+  EXPECT_GT(st.snapped, 0u);
+  EXPECT_NEAR(st.max_outside_distance, 0.01 * std::sqrt(3.0), 1e-12);  // a corner of the cube
+  for (std::size_t v = 0; v < b.vertices.size(); ++v) {
+    const Vec3& p = b.vertices[v];
+    const Vec3 nearest{std::clamp(p.x, 0.0, 2.0), std::clamp(p.y, 0.0, 2.0), std::clamp(p.z, 0.0, 2.0)};
+    EXPECT_NEAR(w[v], linear3(nearest), 1e-12);
+  }
+  for (Vec3& p : b.vertices) p = 3.0 * p;
+  try {
+    transfer_field3(a, sample3(a, linear3), 1, b);
+    FAIL() << "a mesh three times larger was transferred";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("outside the old mesh"), std::string::npos) << e.what();
+  }
+}
+
+TEST(AdaptTransfer3, ConservativePreservesTheIntegralAndMetricsStayPositive) {
+  const MeshData3 a = block(2, 2, 1.0);
+  MeshData3 b = block(3, 3, 0.7);  // [0, 2.1]^3: larger, so the plain transfer gains mass
+  auto f = [](const Vec3& p) { return 2.0 + p.x * p.x + std::sin(3 * p.y) * p.z; };
+  std::vector<double> u;
+  std::vector<Metric3> m;
+  for (const Vec3& p : a.vertices) {
+    u.push_back(f(p));
+    m.push_back(Metric3::from_sizes({1, 0, 0}, {0, 1, 0}, 0.1 + p.x, 0.01 + 0.1 * p.y, 0.5));
+  }
+  TransferStats st;
+  const std::vector<double> w = transfer_field3(a, u, 1, b, {.conservative = true}, &st);
+  EXPECT_NEAR(integrate_p1(b, w, 1, 0), integrate_p1(a, u, 1, 0), 1e-12 * std::abs(integrate_p1(a, u, 1, 0)));
+  for (const Metric3& x : transfer_metrics3(a, m, b)) EXPECT_TRUE(x.is_positive_definite());
+  EXPECT_THROW(transfer_metrics3(a, std::vector<Metric3>(3), b), InputError);
+  EXPECT_THROW(transfer_field3(a, std::vector<double>(5), 1, b), InputError);
 }
 
 }  // namespace
