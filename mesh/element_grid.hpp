@@ -29,6 +29,11 @@ namespace dtlab {
 inline bool closed_triangle_holds(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& p) {
   return orient2d(a, b, p) != Sign::Negative && orient2d(b, c, p) != Sign::Negative && orient2d(c, a, p) != Sign::Negative;
 }
+// The same in 3D: p in the closed positive tetrahedron abcd (p put for each vertex in turn).
+inline bool closed_tetrahedron_holds(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& p) {
+  return orient3d(p, b, c, d) != Sign::Negative && orient3d(a, p, c, d) != Sign::Negative &&
+         orient3d(a, b, p, d) != Sign::Negative && orient3d(a, b, c, p) != Sign::Negative;
+}
 
 template <class Point>
 class ElementGrid {

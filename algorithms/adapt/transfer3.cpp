@@ -24,13 +24,6 @@ namespace {
 
 double det3(const Vec3& a, const Vec3& b, const Vec3& c) { return dot(a, cross(b, c)); }
 
-bool tetrahedron_holds(const std::array<Vec3, 4>& v, const Vec3& p) {
-  // Positive (a, b, c, d): p is in the closed tetrahedron iff replacing any vertex by p leaves
-  // the orientation non-negative.
-  return orient3d(p, v[1], v[2], v[3]) != Sign::Negative && orient3d(v[0], p, v[2], v[3]) != Sign::Negative &&
-         orient3d(v[0], v[1], p, v[3]) != Sign::Negative && orient3d(v[0], v[1], v[2], p) != Sign::Negative;
-}
-
 P1Weights3 weights_in(const MeshData3& mesh, std::uint32_t t, const Vec3& p) {
   const auto& ids = mesh.tetrahedra[t];
   const std::array<Vec3, 4> v{mesh.vertices[ids[0]], mesh.vertices[ids[1]], mesh.vertices[ids[2]], mesh.vertices[ids[3]]};
@@ -146,9 +139,8 @@ std::vector<P1Weights3> transfer_weights3(const MeshData3& old_mesh, const MeshD
     } else {
       for (const std::uint32_t c : grid.candidates(p)) {
         const auto& ids = old_mesh.tetrahedra[c];
-        if (tetrahedron_holds({old_mesh.vertices[ids[0]], old_mesh.vertices[ids[1]], old_mesh.vertices[ids[2]],
-                               old_mesh.vertices[ids[3]]},
-                              p)) {
+        if (closed_tetrahedron_holds(old_mesh.vertices[ids[0]], old_mesh.vertices[ids[1]], old_mesh.vertices[ids[2]],
+                                     old_mesh.vertices[ids[3]], p)) {
           t = c;
           ++st.rescanned;
           break;

@@ -1,5 +1,6 @@
 // The control space (control_space.hpp): point location in the background by the visibility walk
-// of Mesh2 (settled by a bucket grid when it leaves the domain), then the metric interpolated from the triangle's vertices (kernel/metric.hpp).
+// of Mesh2 (settled by a bucket grid when it leaves the domain), then the metric interpolated
+// from the triangle's vertices (kernel/metric.hpp).
 #include "algorithms/mesh2d/control_space.hpp"
 
 #include <algorithm>
@@ -71,7 +72,8 @@ Metric2 ControlSpace2::metric_at(const Vec2& p, std::uint32_t& hint) const {
   if (loc.where == Mesh2::Where::Outside) {
     // The walk left through a hole or a concavity, or p is outside: the triangles of its bucket.
     for (const std::uint32_t t : grid_.candidates(p)) {
-      if (closed_triangle_holds(mesh_.point(mesh_.vertex(t, 0)), mesh_.point(mesh_.vertex(t, 1)), mesh_.point(mesh_.vertex(t, 2)), p)) {
+      if (closed_triangle_holds(mesh_.point(mesh_.vertex(t, 0)), mesh_.point(mesh_.vertex(t, 1)),
+                                mesh_.point(mesh_.vertex(t, 2)), p)) {
         loc = mesh_.locate(p, t);
         break;
       }

@@ -107,12 +107,8 @@ void ControlSpace3::build(MetricInterpolation mode) {
 }
 
 bool ControlSpace3::contains(std::uint32_t t, const Vec3& p) const {
-  for (std::uint32_t i = 0; i < 4; ++i) {
-    const auto& f = kFacetVertex[i];
-    const auto& v = tets_[t];
-    if (orient3d(points_[v[f[0]]], points_[v[f[1]]], points_[v[f[2]]], p) == Sign::Negative) return false;
-  }
-  return true;
+  const auto& v = tets_[t];
+  return closed_tetrahedron_holds(points_[v[0]], points_[v[1]], points_[v[2]], points_[v[3]], p);
 }
 
 ControlSpace3 ControlSpace3::uniform(const Metric3& metric, const Vec3& lo, const Vec3& hi) {
