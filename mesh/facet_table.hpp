@@ -28,6 +28,22 @@ class FacetTable {
 
   std::size_t size() const noexcept { return size_; }
 
+  // Room for n facets without a rehash.
+  void reserve(std::size_t n) {
+    std::size_t capacity = slots_.size();
+    while (capacity < 2 * n + 2) capacity *= 2;
+    if (capacity != slots_.size()) rehash(capacity);
+  }
+
+  // A hash of the facet, independent of the table's size (home() is this one, masked).
+  static std::uint64_t hash(const Key& k) noexcept {
+    std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
+    h ^= (h >> 29) + k[1] * 0xBF58476D1CE4E5B9ull;
+    h ^= (h >> 31) + k[2] * 0x94D049BB133111EBull;
+    h ^= h >> 32;
+    return h;
+  }
+
   // If `k` is in the table, removes it and returns its value; else records it with `handle` and
   // returns kAbsent.
   std::uint32_t take_or_insert(const Key& k, std::uint32_t handle) {
@@ -86,13 +102,7 @@ class FacetTable {
 
   static bool same(const Key& s, const Key& t) noexcept { return s[0] == t[0] && s[1] == t[1] && s[2] == t[2]; }
 
-  std::size_t home(const Key& k) const noexcept {
-    std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
-    h ^= (h >> 29) + k[1] * 0xBF58476D1CE4E5B9ull;
-    h ^= (h >> 31) + k[2] * 0x94D049BB133111EBull;
-    h ^= h >> 32;
-    return static_cast<std::size_t>(h) & mask_;
-  }
+  std::size_t home(const Key& k) const noexcept { return static_cast<std::size_t>(hash(k)) & mask_; }
 
   // Backward-shift deletion: moves later entries of the probe run into the hole when their home
   // is not between the hole and them, so that lookups never need tombstones.

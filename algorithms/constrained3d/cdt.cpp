@@ -48,8 +48,6 @@
 
 namespace dtlab {
 
-void constrained3d_recover(Constrained3dContext& context);  // recover.cpp
-
 namespace {
 
 constexpr int kRounds = 8;
@@ -102,10 +100,12 @@ std::vector<std::uint8_t> dropped_tetrahedra(const Constrained3dContext& c,
 // Method recover on `work`; true if it succeeds, false with `why` if it throws. Recover may
 // cascade for minutes before it ends (CGAL's anchor.off): held to one Steiner point more than
 // there are input edges, where construction A gives up anyway. `limit` is restored after.
-bool recover_held(Constrained3dContext& work, std::uint32_t limit, std::string& why) {
+// `delaunay`: as constrained3d_recover takes it.
+bool recover_held(Constrained3dContext& work, std::uint32_t limit, std::string& why,
+                  const Tetrahedralization3* delaunay = nullptr) {
   work.steiner_limit = static_cast<std::uint32_t>(std::min<std::size_t>(limit, work.edges.size() + 1));
   try {
-    constrained3d_recover(work);
+    constrained3d_recover(work, delaunay);
   } catch (const InputError& e) {
     why = std::string("recover failed: ") + e.what();
     return false;
@@ -206,10 +206,37 @@ bool recover_then_flip(Constrained3dContext& c, std::string& why) {
 // face is locally Delaunay already, its two tetrahedra unchanged since it was. False with `why` (c
 // unchanged) where a split cannot be made so (a tetrahedron made would not be positive) or as
 // recover_then_flip stops; that one, from the Delaunay tetrahedralization, is tried next.
+// c is worked on in place: where this fails it goes back to the Delaunay tetrahedralization with
+// no Steiner point (reset_to_delaunay; copying the whole context, a vector or two per edge, cost
+// as much as the recovery of a surface that needs none), or to a copy where it had some already.
 bool flip_with_splits_in_place(Constrained3dContext& c, std::string& why) {
   using Clock = std::chrono::steady_clock;
-  Constrained3dContext work = c;
-  if (!recover_held(work, c.steiner_limit, why)) return false;
+  const bool fresh = c.steiner.empty();
+  Tetrahedralization3 delaunay;
+  std::optional<Constrained3dContext> copy;
+  if (fresh) {
+    delaunay = c.mesh;
+  } else {
+    copy = c;
+  }
+  const std::uint32_t rounds = c.rounds, rounding_checks_failed = c.rounding_checks_failed, limit = c.steiner_limit;
+  const double edge_seconds = c.edge_seconds, face_seconds = c.face_seconds;
+  const std::size_t messages = c.messages.size();
+  const auto restore = [&] {
+    if (fresh) {
+      reset_to_delaunay(c, std::move(delaunay));
+    } else {
+      c = std::move(*copy);
+    }
+    c.rounds = rounds, c.rounding_checks_failed = rounding_checks_failed, c.steiner_limit = limit;
+    c.edge_seconds = edge_seconds, c.face_seconds = face_seconds;
+    c.messages.resize(messages);
+  };
+  Constrained3dContext& work = c;
+  if (!recover_held(work, c.steiner_limit, why, fresh ? &delaunay : nullptr)) {
+    restore();
+    return false;
+  }
   const auto begin = Clock::now();
   std::vector<std::vector<std::uint32_t>> facets_of(work.edges.size());  // the triangles at each edge
   for (std::uint32_t f = 0; f < work.facets.size(); ++f)
@@ -219,6 +246,7 @@ bool flip_with_splits_in_place(Constrained3dContext& c, std::string& why) {
   FlipRecovery recovery(work.mesh, edge_piece_keys(work), std::move(walls));
   const auto stop = [&](std::string reason) {
     recovery.finish();
+    restore();
     why = std::move(reason);
     return false;
   };
@@ -248,7 +276,6 @@ bool flip_with_splits_in_place(Constrained3dContext& c, std::string& why) {
     if (left.empty()) {
       recovery.finish();
       work.face_seconds += std::chrono::duration<double>(Clock::now() - begin).count();
-      c = std::move(work);
       c.constrained_delaunay = true;
       return true;
     }

@@ -90,17 +90,31 @@ void recover_by_rounds(Constrained3dContext& c, const std::function<void()>& on_
 std::string recover_in_place(Constrained3dContext& c);  // recover_in_place.cpp
 void constrained3d_conforming(Constrained3dContext& c);  // conforming.cpp
 
-void constrained3d_recover(Constrained3dContext& c) {
+void reset_to_delaunay(Constrained3dContext& c, Tetrahedralization3 delaunay) {
+  c.mesh = std::move(delaunay);
+  c.changed.clear();
+  c.steiner.clear();
+  for (ConstraintEdge3& e : c.edges) e.chain = {e.a, e.b}, e.t = {0.0, 1.0};
+  for (ConstraintFacet3& f : c.facets) {
+    f.interior.clear(), f.interior_st.clear(), f.pieces.clear();
+    f.pieces_vertex_count = 0;
+  }
+}
+
+void constrained3d_recover(Constrained3dContext& c) { constrained3d_recover(c, nullptr); }
+
+void constrained3d_recover(Constrained3dContext& c, const Tetrahedralization3* delaunay) {
   // First with every Steiner point placed into the transformed tetrahedralization (TetGen's way,
   // fewer points); where that gets stuck, the rounds from the Delaunay tetrahedralization.
   // What to go back to: from the input's state (no Steiner point yet) only the tetrahedralization
-  // is copied and the chains are reset after, since copying every edge's vectors costs as much
-  // as building them; otherwise (method cdt hands over after its splits) the whole context.
+  // is copied (or the caller's copy, `delaunay`, taken) and the chains are reset after, since
+  // copying every edge's vectors costs as much as building them; otherwise (method cdt hands
+  // over after its splits) the whole context.
   const bool fresh = c.steiner.empty();
   Tetrahedralization3 saved_mesh;
   Constrained3dContext saved;
   if (fresh) {
-    saved_mesh = c.mesh;
+    if (delaunay == nullptr) saved_mesh = c.mesh;
   } else {
     saved = c;
   }
@@ -112,14 +126,7 @@ void constrained3d_recover(Constrained3dContext& c) {
     why = e.what();
   }
   if (fresh) {
-    c.mesh = std::move(saved_mesh);
-    c.changed.clear();
-    c.steiner.clear();
-    for (ConstraintEdge3& e : c.edges) e.chain = {e.a, e.b}, e.t = {0.0, 1.0};
-    for (ConstraintFacet3& f : c.facets) {
-      f.interior.clear(), f.interior_st.clear(), f.pieces.clear();
-      f.pieces_vertex_count = 0;
-    }
+    reset_to_delaunay(c, delaunay == nullptr ? std::move(saved_mesh) : *delaunay);
   } else {
     c = std::move(saved);
   }

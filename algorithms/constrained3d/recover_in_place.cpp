@@ -186,6 +186,7 @@ std::string recover_in_place(Constrained3dContext& c) {
   };
   std::vector<Made> made(c.facets.size());
   constexpr std::uint32_t kPointsPerTriangle = 16;
+  bool inserted = false;  // a triangle's point went in
   for (;;) {
     ++c.rounds;
     points.clear();
@@ -225,9 +226,12 @@ std::string recover_in_place(Constrained3dContext& c) {
           if (ok) ok = recovery.recover_face(t[0], t[1], t[2]);
         }
         if (ok) {
-          for (int r = 0; r < 3; ++r) recovery.protect_edge(t[r], t[(r + 1) % 3]);
-          recovery.protect_face(t[0], t[1], t[2]);
-          if (vertex_count > 3) made[f].pieces.push_back(t), made[f].vertex_count = vertex_count;
+          // (A triangle with no Steiner point: its edges and face are protected since the start.)
+          if (vertex_count > 3) {
+            for (int r = 0; r < 3; ++r) recovery.protect_edge(t[r], t[(r + 1) % 3]);
+            recovery.protect_face(t[0], t[1], t[2]);
+            made[f].pieces.push_back(t), made[f].vertex_count = vertex_count;
+          }
           continue;
         }
         all_made = false;
@@ -252,16 +256,21 @@ std::string recover_in_place(Constrained3dContext& c) {
       if (all_made) done[f] = vertex_count;
     }
     // A boundary piece a facet point's fallback split goes back to the edges' flips above; a
-    // piece missing now makes the rounds take over.
-    for (const ConstraintEdge3& e : c.edges)
-      for (std::size_t i = 0; i + 1 < e.chain.size() && !edges_missing; ++i)
-        if (recovery.has_edge(e.chain[i], e.chain[i + 1]) || recovery.recover_edge(e.chain[i], e.chain[i + 1]))
-          recovery.protect_edge(e.chain[i], e.chain[i + 1]);
-        else
-          edges_missing = true;
+    // piece missing now makes the rounds take over. (Before any point, every piece is still
+    // there: the edge pass made them all, protected, and flips keep protected edges.)
+    if (inserted) {
+      for (const ConstraintEdge3& e : c.edges)
+        for (std::size_t i = 0; i + 1 < e.chain.size() && !edges_missing; ++i) {
+          if (recovery.has_edge(e.chain[i], e.chain[i + 1]) || recovery.recover_edge(e.chain[i], e.chain[i + 1]))
+            recovery.protect_edge(e.chain[i], e.chain[i + 1]);
+          else
+            edges_missing = true;
+        }
+    }
     if (edges_missing) return "an edge piece made by a triangle's point is missing";
     if (points.empty()) break;
     if (inserter.insert({}, points) == 0) return "triangle points repeat points already there";
+    inserted = true;
   }
   recovery.finish();
   c.face_seconds += seconds(start);
@@ -270,10 +279,20 @@ std::string recover_in_place(Constrained3dContext& c) {
   // triangulation of the triangle in its plane, so they cover it); found in the mesh otherwise.
   // (Found, a face that joins its vertices off the pieces, a sliver of rounded Steiner points
   // a hair off the plane, can mislead the search: couplingdown.off did that.)
+  // A triangle with no Steiner point, recovered whole, none of whose vertices is in a tetrahedron
+  // made since the start (c.changed: a flip or a split that removed its face would have made
+  // tetrahedra on all three), is the face it was when it was found: no search.
+  const auto unchanged = [&](std::uint32_t v) { return v >= c.changed.size() || !c.changed[v]; };
   const MeshIndex index(c.mesh);
   std::vector<std::array<std::uint32_t, 2>> missing;
   for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
     const std::size_t vertex_count = facet_vertex_count(c, f);
+    const auto& corners = c.facets[f].corners;
+    if (vertex_count == 3 && done[f] == 3 && unchanged(corners[0]) && unchanged(corners[1]) && unchanged(corners[2])) {
+      c.facets[f].pieces.assign(1, corners);
+      c.facets[f].pieces_vertex_count = 3;
+      continue;
+    }
     auto& pieces = made[f].pieces;
     std::sort(pieces.begin(), pieces.end());
     pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());

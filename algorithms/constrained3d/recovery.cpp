@@ -458,12 +458,18 @@ void request_facet_point(const Constrained3dContext& c, std::uint32_t f, const F
   if (!encroached) points.push_back({f, s, t, cs, ct, piece});
 }
 
-SteinerInserter::SteinerInserter(Constrained3dContext& c) : c_(c), inserter_(c.mesh) {
-  const auto p = c.mesh.points();
+SteinerInserter::SteinerInserter(Constrained3dContext& c) : c_(c), inserter_(c.mesh) {}
+
+void SteinerInserter::index_points() const {
+  if (indexed_) return;
+  indexed_ = true;
+  const auto p = c_.mesh.points();
+  by_coordinates_.reserve(p.size());
   for (std::uint32_t v = 0; v < p.size(); ++v) by_coordinates_[coordinate_hash(p[v])].push_back(v);
 }
 
 bool SteinerInserter::is_vertex(const Vec3& p) const {
+  index_points();
   const auto it = by_coordinates_.find(coordinate_hash(p));
   if (it == by_coordinates_.end()) return false;
   for (const std::uint32_t v : it->second)
@@ -480,6 +486,7 @@ std::uint32_t SteinerInserter::add_vertex(const Vec3& p, const std::string& what
   if (!coordinate_in_range(p.x) || !coordinate_in_range(p.y) || !coordinate_in_range(p.z))
     throw InputError("constrained3d: a Steiner point of " + what + " is out of the supported coordinate range",
                      {item});
+  index_points();
   auto& same = by_coordinates_[coordinate_hash(p)];
   for (const std::uint32_t v : same)
     if (c_.mesh.points()[v] == p)

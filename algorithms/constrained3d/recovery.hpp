@@ -55,6 +55,15 @@ class MeshIndex {
   mutable std::uint32_t stamp_ = 0;
 };
 
+// Method recover (recover.cpp); `delaunay`, where given, is c.mesh as it is now, with no
+// Steiner point in c yet: what recover goes back to if its in-place recovery gives up, instead
+// of a copy of its own.
+void constrained3d_recover(Constrained3dContext& c);
+void constrained3d_recover(Constrained3dContext& c, const Tetrahedralization3* delaunay);
+// Back to the input's state: `delaunay` (the tetrahedralization of the input's points) as the
+// mesh, no Steiner point, every chain its edge's two ends, no triangle pieces.
+void reset_to_delaunay(Constrained3dContext& c, Tetrahedralization3 delaunay);
+
 // MeshIndex::key of every edge piece of every chain, sorted: the protected edges of a
 // FlipRecovery (flip_recovery.hpp).
 std::vector<std::uint64_t> edge_piece_keys(const Constrained3dContext& c);
@@ -160,10 +169,14 @@ class SteinerInserter {
   std::uint32_t add_vertex(const Vec3& p, const std::string& what, std::uint32_t item, std::uint32_t hint);
   bool is_vertex(const Vec3& p) const;
   bool insert_split(const EdgeSplit& r);
+  // by_coordinates_ of the mesh's points, built at the first request (most inserters of a surface
+  // that needs no Steiner point are never asked: the map cost a tenth of cdt's time there).
+  void index_points() const;
   Constrained3dContext& c_;
   DelaunayInserter inserter_;
   Placement place_;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> by_coordinates_;
+  mutable std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> by_coordinates_;
+  mutable bool indexed_ = false;
   std::uint32_t rounding_failed_ = 0;
   std::uint32_t stuck_facet_ = Tetrahedralization3::kNone;
 };
