@@ -1,5 +1,6 @@
 #include "mesh/element_sets3.hpp"
 
+#include <algorithm>
 #include <string>
 #include <unordered_set>
 
@@ -43,6 +44,67 @@ std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet) {
     }
   }
   return out;
+}
+
+void find_in_mesh(const Tetrahedralization3& tet, std::span<const std::array<std::uint32_t, 2>> edges,
+                  std::span<const std::array<std::uint32_t, 3>> faces, std::vector<std::uint8_t>& edge_present,
+                  std::vector<std::uint8_t>& face_present) {
+  edge_present.assign(edges.size(), 0);
+  face_present.assign(faces.size(), 0);
+  const std::size_t n = tet.point_count();
+  // Items by lowest vertex (a counting sort): edges first as k, faces as edges.size() + k.
+  const auto lowest = [&](std::size_t item) {
+    if (item < edges.size()) return std::min(edges[item][0], edges[item][1]);
+    const auto& f = faces[item - edges.size()];
+    return std::min({f[0], f[1], f[2]});
+  };
+  const std::size_t items = edges.size() + faces.size();
+  std::vector<std::uint32_t> start(n + 1, 0);
+  for (std::size_t k = 0; k < items; ++k) {
+    const std::uint32_t v = lowest(k);
+    if (v >= n) throw InternalError("find_in_mesh: vertex " + std::to_string(v) + " is not in the mesh");
+    ++start[v + 1];
+  }
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> order(items), fill(start.begin(), start.end() - 1);
+  for (std::size_t k = 0; k < items; ++k) order[fill[lowest(k)]++] = static_cast<std::uint32_t>(k);
+  const std::vector<std::uint32_t> incident = vertex_tetrahedra(tet);
+  const auto count = static_cast<std::uint32_t>(tet.tetrahedron_count());
+  std::vector<std::uint32_t> mark(count, 0), found;
+  std::uint32_t stamp = 0;
+  for (std::uint32_t u = 0; u < n; ++u) {
+    if (start[u] == start[u + 1] || incident[u] == T3::kNone) continue;
+    // The ball of u, breadth-first through the facets holding u (bounded by the tetrahedra).
+    ++stamp;
+    found.assign(1, incident[u]);
+    mark[incident[u]] = stamp;
+    for (std::size_t k = 0; k < found.size(); ++k) {
+      if (found.size() > count) throw InternalError("find_in_mesh: a vertex ball exceeds the mesh");
+      const std::uint32_t t = found[k];
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        if (tet.vertex(t, i) == u) continue;
+        const std::uint32_t a = tet.adjacent(t, i);
+        if (mark[a] != stamp) mark[a] = stamp, found.push_back(a);
+      }
+    }
+    const auto holds = [&](std::uint32_t t, std::uint32_t v) {
+      return tet.vertex(t, 0) == v || tet.vertex(t, 1) == v || tet.vertex(t, 2) == v || tet.vertex(t, 3) == v;
+    };
+    for (std::uint32_t j = start[u]; j < start[u + 1]; ++j) {
+      const std::uint32_t k = order[j];
+      std::array<std::uint32_t, 2> rest;  // the item's other vertices (an edge's twice)
+      if (k < edges.size()) {
+        rest = {edges[k][0] ^ edges[k][1] ^ u, edges[k][0] ^ edges[k][1] ^ u};
+      } else {
+        const auto& f = faces[k - edges.size()];
+        rest = f[0] == u ? std::array{f[1], f[2]} : f[1] == u ? std::array{f[0], f[2]} : std::array{f[0], f[1]};
+      }
+      bool present = false;
+      for (std::size_t b = 0; b < found.size() && !present; ++b)
+        present = !tet.is_ghost(found[b]) && holds(found[b], rest[0]) && holds(found[b], rest[1]);
+      (k < edges.size() ? edge_present[k] : face_present[k - edges.size()]) = present;
+    }
+  }
 }
 
 std::vector<std::uint32_t> ball(const Tetrahedralization3& tet, std::uint32_t tetrahedron, std::uint32_t v) {

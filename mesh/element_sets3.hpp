@@ -3,7 +3,9 @@
 // bounded by the number of tetrahedra; a broken structure gives InternalError, never a hang.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "mesh/tetrahedralization3.hpp"
@@ -13,6 +15,14 @@ namespace dtlab {
 // For each vertex id, one tetrahedron incident to it (ghosts only if no finite one is), or
 // Tetrahedralization3::kNone for points that no tetrahedron uses (duplicates). One pass, O(size).
 std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet);
+
+// Whether each of `edges` and `faces` (vertex ids in any order) is an edge or a face of a finite
+// tetrahedron: edge_present[k] for edges[k], face_present[k] for faces[k]. One search of the ball
+// of each item's lowest vertex, shared by all the items at that vertex (a check of a whole
+// surface at once, rather than one search per item). O(size of the balls searched).
+void find_in_mesh(const Tetrahedralization3& tet, std::span<const std::array<std::uint32_t, 2>> edges,
+                  std::span<const std::array<std::uint32_t, 3>> faces, std::vector<std::uint8_t>& edge_present,
+                  std::vector<std::uint8_t>& face_present);
 
 // The ball of vertex v: every tetrahedron incident to v, ghosts included, starting with
 // `tetrahedron` (which must have v as a vertex), in breadth-first order over the facets through v.

@@ -25,11 +25,16 @@ tetrahedra with exit status 0, which is reported as such). A machine and commit 
 With --merge-coplanar dtlab joins neighbouring coplanar facets with equal references and
 triangulates them again (TetGen's default; -M turns it off); its row gives how many facets merged.
 --no-times leaves the seconds out (on a loaded machine they mean nothing; Steiner counts do).
+--cad NAME:H,... meshes data/cad/NAME.geo by `gmsh -2 -clmax H` (issue 20's surfaces, which the
+benchmark had not been tuned on: a plate with nine holes, a filleted bracket, a thin-walled box, a
+flange, a pipe tee; 1.2e5 to 8e5 triangles); --only-cad leaves every other input out, and
+--methods picks the dtlab methods (default: every 3D method).
 
   scripts/bench_constrained3d.py --build build
   scripts/bench_constrained3d.py --build build --runs 7 --cgal-meshes elephant.off,eight.off
   scripts/bench_constrained3d.py --build build --update-readme     # the table into docs/performance.md
   scripts/bench_constrained3d.py --build build-x --inputs build/bench/constrained3d_inputs --runs 1 --no-times
+  scripts/bench_constrained3d.py --only-cad --methods cdt,recover --merge off --runs 5   # issue 20
 """
 import argparse
 import json
@@ -48,8 +53,14 @@ from bench_delaunay2d import fmt, fmt_spread, machine, progress
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
 DEFAULT_GMSH_SIZES = "0.05,0.015,0.005"
+# data/cad/NAME.geo at -clmax H (Gmsh 4.8): 122k, 124k, 124k, 130k, 202k and 795k triangles.
+DEFAULT_CAD = ("box_holes:0.009,fillet_bracket:0.007,thin_shell:0.01,flange:0.007,pipe_tee:0.01,"
+               "box_holes:0.0035")
 DEFAULT_MESHES = ("tetrahedron.off,icosahedron.off,sphere.stl,elephant.off,eight.off,cow.off,fandisk.off,knot1.off,"
                   "cube_quad.off")
+PRODUCER_CAD = ("Produced by `scripts/bench_constrained3d.py --only-cad --methods cdt,recover --merge off "
+                "--update-readme` (the surfaces of data/cad/ by `gmsh -2`, through `dtlab constrain --stats` and "
+                "`tetgen -p`, same files).")
 BUNDLED = ["quad_cube.off", "box_with_window.poly"]  # in data/
 PRODUCER = ("Produced by `scripts/bench_constrained3d.py --update-readme` (dtlab's 3D constrained methods "
             "through `dtlab constrain --stats`, TetGen 1.5 through `tetgen -p`, same files).")
@@ -133,25 +144,37 @@ def extract_meshes(names, into):
     return paths
 
 
-def gmsh_surfaces(sizes, into, timeout):
-    """data/cad_part.geo meshed by gmsh -2 at each -clmax; none without gmsh."""
-    if not sizes:
+def gmsh_surfaces(specs, into, timeout):
+    """Each (geo file, -clmax) meshed by gmsh -2 into NAME_H.mesh; none without gmsh."""
+    if not specs:
         return []
     if shutil.which("gmsh") is None:
         progress("bench_constrained3d: gmsh not installed (apt-get install gmsh): CAD surfaces left out")
         return []
     os.makedirs(into, exist_ok=True)
     paths = []
-    for h in sizes:
-        path = os.path.join(into, f"cad_part_{h}.mesh")
-        progress(f"bench_constrained3d: gmsh -2 data/cad_part.geo -clmax {h}")
-        p, err = run(["gmsh", "-2", os.path.join(ROOT, "data", "cad_part.geo"), "-clmax", h, "-format", "mesh",
-                      "-o", path], into, timeout)
+    for geo, h in specs:
+        name = os.path.splitext(os.path.basename(geo))[0]
+        path = os.path.join(into, f"{name}_{h}.mesh")
+        progress(f"bench_constrained3d: gmsh -2 {os.path.relpath(geo, ROOT)} -clmax {h}")
+        p, err = run(["gmsh", "-2", geo, "-clmax", h, "-format", "mesh", "-o", path], into, timeout)
         if err or p.returncode != 0 or not os.path.exists(path):
-            progress(f"bench_constrained3d: gmsh failed for -clmax {h}: {err or p.stderr.strip()[-200:]}")
+            progress(f"bench_constrained3d: gmsh failed for {name} at -clmax {h}: {err or p.stderr.strip()[-200:]}")
             continue
         paths.append(path)
     return paths
+
+
+def cad_specs(text):
+    """'NAME:H,...' as (data/cad/NAME.geo, H) pairs; a name with no file is an error."""
+    specs = []
+    for item in (x for x in text.split(",") if x):
+        name, sep, h = item.partition(":")
+        geo = os.path.join(ROOT, "data", "cad", name + ".geo")
+        if not sep or not os.path.exists(geo):
+            raise SystemExit(f"--cad: '{item}' is not NAME:H with data/cad/NAME.geo present")
+        specs.append((geo, h))
+    return specs
 
 
 def main():
@@ -162,6 +185,10 @@ def main():
     ap.add_argument("--cgal-meshes", default=DEFAULT_MESHES, help="comma-separated names in CGAL's data/meshes")
     ap.add_argument("--gmsh-sizes", default=DEFAULT_GMSH_SIZES,
                     help="comma-separated -clmax values for data/cad_part.geo (empty: none)")
+    ap.add_argument("--cad", default=DEFAULT_CAD, help="comma-separated NAME:H for data/cad/NAME.geo at -clmax H "
+                    "(empty: none)")
+    ap.add_argument("--only-cad", action="store_true", help="only the --cad surfaces")
+    ap.add_argument("--methods", help="comma-separated dtlab methods (default: every 3D method)")
     ap.add_argument("--merge", choices=("off", "on", "both"), default="both",
                     help="dtlab runs without --merge-coplanar, with it, or both (default)")
     ap.add_argument("--inputs", help="the constrained3d_inputs binary (default BUILD/bench/constrained3d_inputs)")
@@ -173,20 +200,31 @@ def main():
     args.build = os.path.abspath(args.build)
     dtlab = os.path.join(args.build, "dtlab")
     inputs_bin = os.path.abspath(args.inputs) if args.inputs else os.path.join(args.build, "bench", "constrained3d_inputs")
-    for b in (dtlab, inputs_bin):
+    for b in (dtlab,) + (() if args.only_cad else (inputs_bin,)):
         if not os.path.exists(b):
             raise SystemExit(f"{b} not found: build it (cmake --build {args.build} --target dtlab_cli constrained3d_inputs)")
     have_tetgen = shutil.which("tetgen") is not None
     listing = subprocess.run([dtlab, "constrain", "--list-methods"], stdout=subprocess.PIPE, text=True).stdout
     methods3 = [line.split("\t")[0] for line in listing.split("3D", 1)[-1].splitlines()[1:] if "\t" in line]
+    if args.methods:
+        unknown = [m for m in args.methods.split(",") if m not in methods3]
+        if unknown:
+            raise SystemExit(f"--methods: {', '.join(unknown)} not among dtlab's 3D methods ({', '.join(methods3)})")
+        methods3 = args.methods.split(",")
+    cad = cad_specs(args.cad)
 
     work = tempfile.mkdtemp(prefix="dtlab-c3d-")
     try:
-        files = subprocess.run([inputs_bin, os.path.join(work, "family")], stdout=subprocess.PIPE, text=True,
-                               check=True).stdout.split()
-        files += extract_meshes([n for n in args.cgal_meshes.split(",") if n], os.path.join(work, "cgal"))
-        files += [os.path.join(ROOT, "data", n) for n in BUNDLED]
-        files += gmsh_surfaces([h for h in args.gmsh_sizes.split(",") if h], os.path.join(work, "gmsh"), args.timeout)
+        files = []
+        if not args.only_cad:
+            files = subprocess.run([inputs_bin, os.path.join(work, "family")], stdout=subprocess.PIPE, text=True,
+                                   check=True).stdout.split()
+            files += extract_meshes([n for n in args.cgal_meshes.split(",") if n], os.path.join(work, "cgal"))
+            files += [os.path.join(ROOT, "data", n) for n in BUNDLED]
+            part = os.path.join(ROOT, "data", "cad_part.geo")
+            files += gmsh_surfaces([(part, h) for h in args.gmsh_sizes.split(",") if h], os.path.join(work, "gmsh"),
+                                   args.timeout)
+        files += gmsh_surfaces(cad, os.path.join(work, "cad"), args.timeout)
         merges = {"off": [False], "on": [True], "both": [False, True]}[args.merge]
         rows = []
         for path in files:
@@ -232,9 +270,14 @@ def main():
         text = "\n".join(lines) + "\n"
         print(text)
         if args.update_readme:
-            readme_tables.write_block(args.readme, "constrained3d",
-                                      "3D constrained (Schönhardt family, CGAL's closed surfaces, a gmsh CAD part) beside TetGen",
-                                      PRODUCER, text)
+            if args.only_cad:
+                readme_tables.write_block(args.readme, "constrained3d_cad",
+                                          "3D constrained on CAD surfaces it was not tuned on (issue 20) beside TetGen",
+                                          PRODUCER_CAD, text)
+            else:
+                readme_tables.write_block(args.readme, "constrained3d",
+                                          "3D constrained (Schönhardt family, CGAL's closed surfaces, a gmsh CAD part) beside TetGen",
+                                          PRODUCER, text)
     finally:
         shutil.rmtree(work, ignore_errors=True)
 

@@ -25,29 +25,68 @@ using T3 = Tetrahedralization3;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The input edges (each once, a < b) and triangles with their edges.
+// The input edges (each once, a < b) and triangles with their edges. The edges are numbered in the order they first appear (triangle by triangle, side by
+// side), found by a counting sort of the sides on their lower vertex rather than a hash table:
+// the sides at one vertex are few, and vertex order keeps them near each other in memory.
 void build_constraints(const ConstrainedInput3& input, Constrained3dContext& c) {
-  std::unordered_map<std::uint64_t, std::uint32_t> edge_ids;
-  edge_ids.reserve(2 * input.triangles.size());
-  c.edges.reserve(3 * input.triangles.size() / 2 + 3);
+  const std::size_t sides = 3 * input.triangles.size();
+  const auto lower = [&](std::size_t h) {
+    const auto& t = input.triangles[h / 3];
+    return std::min(t[h % 3], t[(h + 1) % 3]);
+  };
+  const auto upper = [&](std::size_t h) {
+    const auto& t = input.triangles[h / 3];
+    return std::max(t[h % 3], t[(h + 1) % 3]);
+  };
+  std::vector<std::uint32_t> start(input.points.size() + 1, 0);
+  for (std::size_t h = 0; h < sides; ++h) ++start[lower(h) + 1];
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> by_lower(sides), fill(start.begin(), start.end() - 1);
+  for (std::size_t h = 0; h < sides; ++h) by_lower[fill[lower(h)]++] = static_cast<std::uint32_t>(h);
+  // first[h]: the first side (lowest h) on the same edge as side h.
+  std::vector<std::uint32_t> first(sides);
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+    const auto begin = by_lower.begin() + start[v], end = by_lower.begin() + start[v + 1];
+    if (end - begin <= 16) {  // in increasing h: the first earlier side on the same edge
+      for (auto i = begin; i != end; ++i) {
+        first[*i] = *i;
+        for (auto j = begin; j != i; ++j)
+          if (upper(*j) == upper(*i)) {
+            first[*i] = *j;
+            break;
+          }
+      }
+      continue;
+    }
+    // Many sides at one vertex (a fan's apex): sorted by upper vertex, then h.
+    std::sort(begin, end, [&](std::uint32_t x, std::uint32_t y) {
+      return upper(x) != upper(y) ? upper(x) < upper(y) : x < y;
+    });
+    for (auto i = begin; i != end; ++i)
+      first[*i] = i != begin && upper(*(i - 1)) == upper(*i) ? first[*(i - 1)] : *i;
+  }
+  c.edges.reserve(sides / 2 + 3);
   c.facets.reserve(input.triangles.size());
+  std::vector<std::uint32_t> edge_of(sides);
   for (std::uint32_t f = 0; f < input.triangles.size(); ++f) {
     ConstraintFacet3 facet;
     facet.corners = input.triangles[f];
     facet.ref = input.triangle_refs.empty() ? 0 : input.triangle_refs[f];
     for (int k = 0; k < 3; ++k) {
-      const std::uint32_t u = facet.corners[k], v = facet.corners[(k + 1) % 3];
-      const std::pair<std::uint32_t, std::uint32_t> key = std::minmax(u, v);
-      auto [it, inserted] = edge_ids.emplace(std::uint64_t{key.first} << 32 | key.second, static_cast<std::uint32_t>(c.edges.size()));
-      if (inserted) {
+      const std::size_t h = 3 * std::size_t{f} + k;
+      const std::uint32_t a = lower(h), b = upper(h);
+      if (first[h] == h) {
+        edge_of[h] = static_cast<std::uint32_t>(c.edges.size());
         ConstraintEdge3 edge;
-        edge.a = key.first, edge.b = key.second, edge.face = f;
-        edge.chain = {key.first, key.second};
+        edge.a = a, edge.b = b, edge.face = f;
+        edge.chain = {a, b};
         edge.t = {0.0, 1.0};
         c.edges.push_back(std::move(edge));
+      } else {
+        edge_of[h] = edge_of[first[h]];
       }
-      facet.edges[k] = it->second;
-      facet.reversed[k] = u != key.first;
+      facet.edges[k] = edge_of[h];
+      facet.reversed[k] = facet.corners[k] != a;
     }
     c.facets.push_back(std::move(facet));
   }

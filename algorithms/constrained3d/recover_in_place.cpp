@@ -21,6 +21,7 @@
 #include "algorithms/constrained3d/recovery.hpp"
 #include "kernel/error.hpp"
 #include "kernel/rounding.hpp"
+#include "mesh/element_sets3.hpp"
 
 namespace dtlab {
 
@@ -116,6 +117,22 @@ std::string recover_in_place(Constrained3dContext& c) {
   using Clock = std::chrono::steady_clock;
   const auto seconds = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
   auto start = Clock::now();
+  // Which input edges and (unsplit) triangles the tetrahedralization has now, in one pass of
+  // ball searches: they are protected, flips keep protected edges and faces, and a point never
+  // goes onto one, so what is found here stays; only the others are searched and recovered one
+  // by one (a surface the Delaunay tetrahedralization holds costs this pass and little more).
+  std::vector<std::uint8_t> edge_found, face_found;
+  {
+    std::vector<std::array<std::uint32_t, 2>> edges;
+    std::vector<Tri> faces;
+    edges.reserve(c.edges.size());
+    for (const ConstraintEdge3& e : c.edges) edges.push_back({e.chain.front(), e.chain.back()});
+    faces.reserve(c.facets.size());
+    for (const ConstraintFacet3& f : c.facets) faces.push_back(f.corners);
+    find_in_mesh(c.mesh, edges, faces, edge_found, face_found);
+    for (std::uint32_t e = 0; e < c.edges.size(); ++e) edge_found[e] = edge_found[e] && c.edges[e].chain.size() == 2;
+    for (std::uint32_t f = 0; f < c.facets.size(); ++f) face_found[f] = face_found[f] && facet_vertex_count(c, f) == 3;
+  }
   std::vector<std::uint64_t> protected_edges = edge_piece_keys(c);
   std::vector<Tri> protected_faces;
   for (const ConstraintFacet3& f : c.facets) {
@@ -138,7 +155,7 @@ std::string recover_in_place(Constrained3dContext& c) {
   for (;;) {
     ++c.rounds;
     splits.clear();
-    for (const MissingPiece& m : edge_pieces_flips_cannot_make(c, recovery, kEdgePasses))
+    for (const MissingPiece& m : edge_pieces_flips_cannot_make(c, recovery, kEdgePasses, &edge_found))
       splits.push_back({m.edge, split_at_block(c, m.edge, m.index, m.block)});  // where its walk stopped
     if (splits.empty()) break;
     // One at a time: a split point that lands on another constraint (two edges a hair apart, as
@@ -218,7 +235,7 @@ std::string recover_in_place(Constrained3dContext& c) {
           vertex_count == 3 ? std::vector<Tri>{c.facets[f].corners} : facet_delaunay_pieces(c, f, st_of());
       bool all_made = true;
       for (const Tri& t : tris) {
-        bool ok = recovery.has_face(t[0], t[1], t[2]);
+        bool ok = (vertex_count == 3 && face_found[f]) || recovery.has_face(t[0], t[1], t[2]);
         if (!ok) {
           ok = true;
           for (int r = 0; r < 3 && ok; ++r)

@@ -166,10 +166,13 @@ double edge_split_parameter(const Constrained3dContext& c, std::uint32_t e, std:
   return t;
 }
 
-std::vector<MissingPiece> edge_pieces_flips_cannot_make(const Constrained3dContext& c, FlipRecovery& recovery, int passes) {
+std::vector<MissingPiece> edge_pieces_flips_cannot_make(const Constrained3dContext& c, FlipRecovery& recovery, int passes,
+                                                        const std::vector<std::uint8_t>* present) {
   std::vector<MissingPiece> failed, still;
   const auto attempt = [&](std::uint32_t e, std::uint32_t i, std::vector<MissingPiece>& out) {
     const auto& chain = c.edges[e].chain;
+    // (Flips never remove a protected edge, and a split would have made two pieces.)
+    if (present != nullptr && chain.size() == 2 && (*present)[e]) return;
     if (!recovery.has_edge(chain[i], chain[i + 1]) && !recovery.recover_edge(chain[i], chain[i + 1]))
       out.push_back({e, i, recovery.blocking_face()});
   };

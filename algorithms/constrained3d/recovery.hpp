@@ -27,7 +27,10 @@ struct MissingPiece {
   std::uint32_t edge = 0, index = 0;  // piece `index` of the edge's chain
   std::array<std::uint32_t, 3> block{};
 };
-std::vector<MissingPiece> edge_pieces_flips_cannot_make(const Constrained3dContext& c, FlipRecovery& recovery, int passes);
+// `present`, where given: per input edge, 1 if it was found an edge of the mesh since it was
+// protected (an edge never split, one piece); those are not searched again.
+std::vector<MissingPiece> edge_pieces_flips_cannot_make(const Constrained3dContext& c, FlipRecovery& recovery, int passes,
+                                                        const std::vector<std::uint8_t>* present = nullptr);
 
 // Edge queries on the mesh (ghost tetrahedra included, kInfinite a vertex like any): one
 // tetrahedron per vertex, and each query searches the star of its first vertex. Building it is

@@ -32,29 +32,32 @@ TetrahedronComponents tetrahedron_components(const Tetrahedralization3& mesh,
     const std::uint64_t h = (FacetTable::hash(key) >> 7) & mask;
     return (filter[h >> 6] >> (h & 63) & 1) != 0 && wall.find(key) != FacetTable::kAbsent;
   };
+  // Union-find over the tetrahedra in memory order (each face once, from its lower tetrahedron:
+  // the records are read in a stream, not in a search's jumps), then the components numbered in
+  // the order of their lowest tetrahedron, as a search from each unvisited one in turn would.
   TetrahedronComponents c;
-  const std::size_t n = mesh.tetrahedron_count();
+  const auto n = static_cast<std::uint32_t>(mesh.tetrahedron_count());
+  std::vector<std::uint32_t> parent(n);
+  for (std::uint32_t t = 0; t < n; ++t) parent[t] = t;
+  const auto root = [&](std::uint32_t t) {
+    while (parent[t] != t) t = parent[t] = parent[parent[t]];
+    return t;
+  };
+  for (std::uint32_t t = 0; t < n; ++t)
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t u = mesh.adjacent(t, i);
+      if (u < t) continue;
+      const auto f = mesh.facet_vertices(T3::facet(t, i));
+      if (is_wall(FacetTable::key(f[0], f[1], f[2]))) continue;
+      const std::uint32_t a = root(t), b = root(u);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);  // a root is its component's lowest
+    }
   c.component.assign(n, T3::kNone);
   c.exterior = T3::kNone;
-  std::vector<std::uint32_t> queue;
-  for (std::uint32_t s = 0; s < n; ++s) {
-    if (c.component[s] != T3::kNone) continue;
-    const std::uint32_t id = c.count++;
-    c.component[s] = id;
-    queue.assign(1, s);
-    while (!queue.empty()) {
-      const std::uint32_t t = queue.back();
-      queue.pop_back();
-      if (mesh.is_ghost(t)) c.exterior = id;
-      for (std::uint32_t i = 0; i < 4; ++i) {
-        const std::uint32_t u = mesh.adjacent(t, i);
-        if (c.component[u] != T3::kNone) continue;
-        const auto f = mesh.facet_vertices(T3::facet(t, i));
-        if (is_wall(FacetTable::key(f[0], f[1], f[2]))) continue;
-        c.component[u] = id;
-        queue.push_back(u);
-      }
-    }
+  for (std::uint32_t t = 0; t < n; ++t) {
+    const std::uint32_t r = root(t);
+    c.component[t] = r == t ? c.count++ : c.component[r];
+    if (mesh.is_ghost(t)) c.exterior = c.component[t];
   }
   return c;
 }

@@ -531,6 +531,54 @@ RC_GTEST_PROP(Delaunay3dIncremental, SmallIntegerSetsMatchBruteForce, ()) {
 
 // --- Element sets --------------------------------------------------------------------------
 
+TEST(ElementSets3, FindInMeshAgreesWithAScanOfEveryTetrahedron) {
+  // Every vertex pair and a random half of the vertex triples of a small set (points on a grid:
+  // many cospherical), in shuffled vertex order; the answer is what a scan of the finite
+  // tetrahedra says.
+  for (const auto& points : {uniform(40, 3), grid(3)}) {
+    const T3& tet = run(points).tetrahedralization;
+    const auto n = static_cast<std::uint32_t>(tet.point_count());
+    std::mt19937_64 rng(7);
+    std::vector<std::array<std::uint32_t, 2>> edges;
+    std::vector<std::array<std::uint32_t, 3>> faces;
+    for (std::uint32_t a = 0; a < n; ++a)
+      for (std::uint32_t b = a + 1; b < n; ++b) {
+        edges.push_back(rng() % 2 ? std::array{a, b} : std::array{b, a});
+        for (std::uint32_t c = b + 1; c < n; ++c)
+          if (rng() % 2) faces.push_back({c, a, b});
+      }
+    std::vector<std::uint8_t> edge_found, face_found;
+    find_in_mesh(tet, edges, faces, edge_found, face_found);
+    const auto holds = [&](std::uint32_t t, std::uint32_t v) {
+      for (std::uint32_t i = 0; i < 4; ++i)
+        if (tet.vertex(t, i) == v) return true;
+      return false;
+    };
+    const auto scan = [&](auto&& has) {
+      for (std::uint32_t t = 0; t < tet.tetrahedron_count(); ++t)
+        if (!tet.is_ghost(t) && has(t)) return true;
+      return false;
+    };
+    std::size_t edges_in = 0, faces_in = 0;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+      const bool in = scan([&](std::uint32_t t) { return holds(t, edges[k][0]) && holds(t, edges[k][1]); });
+      ASSERT_EQ(edge_found[k] != 0, in) << "edge " << edges[k][0] << " " << edges[k][1];
+      edges_in += in;
+    }
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+      const bool in = scan([&](std::uint32_t t) {
+        return holds(t, faces[k][0]) && holds(t, faces[k][1]) && holds(t, faces[k][2]);
+      });
+      ASSERT_EQ(face_found[k] != 0, in) << "face " << faces[k][0] << " " << faces[k][1] << " " << faces[k][2];
+      faces_in += in;
+    }
+    EXPECT_GT(edges_in, 0u);  // both answers occur
+    EXPECT_LT(edges_in, edges.size());
+    EXPECT_GT(faces_in, 0u);
+    EXPECT_LT(faces_in, faces.size());
+  }
+}
+
 TEST(ElementSets3, BallAndShellOfEveryVertexAndEdge) {
   const auto r = run(uniform(100, 12));
   const T3& tet = r.tetrahedralization;
