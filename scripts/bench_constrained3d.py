@@ -28,13 +28,15 @@ triangulates them again (TetGen's default; -M turns it off); its row gives how m
 --cad NAME:H,... meshes data/cad/NAME.geo by `gmsh -2 -clmax H` (issue 20's surfaces, which the
 benchmark had not been tuned on: a plate with nine holes, a filleted bracket, a thin-walled box, a
 flange, a pipe tee; 1.2e5 to 8e5 triangles); --only-cad leaves every other input out, and
---methods picks the dtlab methods (default: every 3D method).
+--methods picks the dtlab methods (default: every 3D method). --baseline DIR runs DIR/dtlab beside
+(a build before a change: before and after in the same interleaved rounds); --phases adds dtlab's
+phases (its --stats seconds, medians).
 
   scripts/bench_constrained3d.py --build build
   scripts/bench_constrained3d.py --build build --runs 7 --cgal-meshes elephant.off,eight.off
   scripts/bench_constrained3d.py --build build --update-readme     # the table into docs/performance.md
   scripts/bench_constrained3d.py --build build-x --inputs build/bench/constrained3d_inputs --runs 1 --no-times
-  scripts/bench_constrained3d.py --only-cad --methods cdt,recover --merge off --runs 5   # issue 20
+  scripts/bench_constrained3d.py --only-cad --methods cdt,recover --merge off --runs 5 --phases   # issue 20
 """
 import argparse
 import json
@@ -85,7 +87,8 @@ def dtlab_once(dtlab, path, method, work, timeout, merge=False):
         return {"error": (p.stderr.strip().splitlines() or ["exit status %d" % p.returncode])[-1]}
     stats = json.loads(p.stdout.strip().splitlines()[-1])
     s = stats["steiner_points"]
-    return {"seconds": stats["seconds"]["total"], "steiner": s["on_edges"] + s["on_faces"] + s["interior"],
+    return {"seconds": stats["seconds"]["total"], "phases": stats["seconds"],
+            "steiner": s["on_edges"] + s["on_faces"] + s["interior"],
             "split": f"{s['on_edges']} / {s['on_faces']} / {s['interior']}", "tets": stats["elements"],
             "points": stats["points"], "triangles": stats["input_triangles"],
             "merged": stats.get("merged_facets", 0)}
@@ -123,6 +126,8 @@ def summarise(results):
     row = dict(ok[0])
     row["times"] = [r["seconds"] for r in ok]
     row["seconds"] = statistics.median(row["times"])
+    if "phases" in row:
+        row["phases"] = {k: statistics.median(r["phases"][k] for r in ok) for k in row["phases"]}
     return row
 
 
@@ -166,13 +171,15 @@ def gmsh_surfaces(specs, into, timeout):
 
 
 def cad_specs(text):
-    """'NAME:H,...' as (data/cad/NAME.geo, H) pairs; a name with no file is an error."""
+    """'NAME:H,...' as (data/cad/NAME.geo or data/NAME.geo, H) pairs; a name with no file is an error."""
     specs = []
     for item in (x for x in text.split(",") if x):
         name, sep, h = item.partition(":")
         geo = os.path.join(ROOT, "data", "cad", name + ".geo")
+        if not os.path.exists(geo):  # data/cad_part.geo, the benchmark's first CAD part
+            geo = os.path.join(ROOT, "data", name + ".geo")
         if not sep or not os.path.exists(geo):
-            raise SystemExit(f"--cad: '{item}' is not NAME:H with data/cad/NAME.geo present")
+            raise SystemExit(f"--cad: '{item}' is not NAME:H with data/cad/NAME.geo or data/NAME.geo present")
         specs.append((geo, h))
     return specs
 
@@ -193,6 +200,9 @@ def main():
                     help="dtlab runs without --merge-coplanar, with it, or both (default)")
     ap.add_argument("--inputs", help="the constrained3d_inputs binary (default BUILD/bench/constrained3d_inputs)")
     ap.add_argument("--no-times", action="store_true", help="leave the seconds columns out")
+    ap.add_argument("--phases", action="store_true", help="a second table: dtlab's phases, medians")
+    ap.add_argument("--baseline", help="another build folder: its dtlab runs the same methods in the same rounds, "
+                    "labelled '(baseline)' (before and after a change, interleaved)")
     ap.add_argument("--update-readme", action="store_true", help="write the table into docs/performance.md")
     ap.add_argument("--readme", default=readme_tables.PERFORMANCE_MD, help="the file --update-readme writes")
     args = ap.parse_args()
@@ -203,6 +213,9 @@ def main():
     for b in (dtlab,) + (() if args.only_cad else (inputs_bin,)):
         if not os.path.exists(b):
             raise SystemExit(f"{b} not found: build it (cmake --build {args.build} --target dtlab_cli constrained3d_inputs)")
+    baseline = os.path.join(os.path.abspath(args.baseline), "dtlab") if args.baseline else None
+    if baseline and not os.path.exists(baseline):
+        raise SystemExit(f"{baseline} not found")
     have_tetgen = shutil.which("tetgen") is not None
     listing = subprocess.run([dtlab, "constrain", "--list-methods"], stdout=subprocess.PIPE, text=True).stdout
     methods3 = [line.split("\t")[0] for line in listing.split("3D", 1)[-1].splitlines()[1:] if "\t" in line]
@@ -232,6 +245,10 @@ def main():
             programs = [(m + (" --merge-coplanar" if merge else ""),
                          lambda p=path, m=m, merge=merge: dtlab_once(dtlab, p, m, work, args.timeout, merge))
                         for m in methods3 for merge in merges]
+            if baseline:
+                programs += [(m + (" --merge-coplanar" if merge else "") + " (baseline)",
+                              lambda p=path, m=m, merge=merge: dtlab_once(baseline, p, m, work, args.timeout, merge))
+                             for m in methods3 for merge in merges]
             if have_tetgen:
                 programs.append(("tetgen", lambda p=path: tetgen_once(p, work, args.timeout)))
                 programs.append(("tetgen -M", lambda p=path: tetgen_once(p, work, args.timeout, "-pM")))
@@ -267,6 +284,19 @@ def main():
             ratio = fmt(r["seconds"] / t["seconds"], 2) if t and "error" not in t and t["seconds"] > 0 else "-"
             times = "" if args.no_times else f" {fmt_spread(r['times'])} | {ratio} |"
             lines.append(f"{head} {r['steiner']} | {r['split']} | {r['tets']} |{times}")
+        if args.phases and not args.no_times:
+            lines += ["", "dtlab's phases (its --stats seconds, median of the runs each; 'other' is the total less "
+                      "the phases: building the constraints, copies, output arrays):", "",
+                      "| input | program | checks | Delaunay | edge recovery | face recovery | regions | other | total |",
+                      "|---|---|---|---|---|---|---|---|---|"]
+            keys = ("checks", "delaunay", "edge_recovery", "face_recovery", "regions")
+            for name, size, label, r, t in rows:
+                if "phases" not in r:
+                    continue
+                ph = r["phases"]
+                other = ph["total"] - sum(ph[k] for k in keys)
+                lines.append(f"| {name} | {label} | " + " | ".join(fmt(ph[k], 3) for k in keys) +
+                             f" | {fmt(other, 3)} | {fmt(ph['total'], 3)} |")
         text = "\n".join(lines) + "\n"
         print(text)
         if args.update_readme:
