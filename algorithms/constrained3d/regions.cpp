@@ -17,7 +17,7 @@ TetrahedronComponents tetrahedron_components(const Tetrahedralization3& mesh,
   wall.reserve(walls.size());
   // In front of it, one bit per hash value, 16 bits a wall (1.6 MB at 800k walls, cache-sized):
   // most faces are no wall and are told so by the bit, without the table's cache miss
-  // (measured in the note of issue 20).
+  // (with the union-find below: the regions phase of a 795k-triangle surface 0.71 s -> 0.49 s).
   std::size_t bits = 64;
   while (bits < 16 * walls.size()) bits *= 2;
   std::vector<std::uint64_t> filter(bits / 64, 0);
