@@ -36,6 +36,9 @@ struct Optimize3dOptions {
   std::uint32_t relocation_sweeps = 2;  // per round
   bool collapses = true;
   bool splits = true;
+  // Bad tetrahedra on four boundary vertices that no other operator cures get an interior
+  // vertex (an edge split and the new vertex relocated, judged as one move; strategy.cpp).
+  bool interior_vertices = true;
   double margin = kImprovementMargin3;
   Relocate3Options relocate{};
   Collapse3Options collapse{};

@@ -7,7 +7,9 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <utility>
+#include <vector>
 
 #include "algorithms/optimize3d/local.hpp"
 #include "algorithms/optimize3d/optimize3d.hpp"
@@ -85,7 +87,47 @@ void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const M
     for (const auto& [l, k] : edges) {
       if (try_collapse3(mesh, b.v[kEdges[k][0]], b.v[kEdges[k][1]], options.collapse, Collapse3Criterion::Improve)) {
         ++stats.collapses;
+        done = true;
         break;
+      }
+    }
+    // A tetrahedron between four boundary vertices that neither swaps nor moves nor collapses
+    // cure (no vertex of it may move off the surface, and none of its faces is the boundary's
+    // to flip) gets an interior vertex: an edge of it split, with no length or quality guard,
+    // and the new vertex relocated (book §8.3.6 and §8.4: the point goes where its ball is
+    // best), judged as one move: kept where the new ball's worst is below the old shell's, else
+    // undone by collapsing the new vertex back (which gives the shell back).
+    if (done || !options.interior_vertices || !options.relocation || !options.collapses) continue;
+    bool inside = true;
+    for (const std::uint32_t v : b.v) inside = inside && (mesh.flags(v) & Mesh3::kOnBoundary) != 0;
+    if (!inside) continue;
+    Split3Options split = options.split;
+    split.short_length = 0.0;
+    split.quality_limit = std::numeric_limits<double>::infinity();
+    Collapse3Options undo = options.collapse;
+    undo.long_length = std::numeric_limits<double>::infinity();
+    undo.quality_limit = std::numeric_limits<double>::infinity();
+    std::vector<std::uint32_t> shell, ring, ball;
+    for (auto it = edges.rbegin(); it != edges.rend() && !done; ++it) {
+      const std::uint32_t a = b.v[kEdges[it->second][0]], c = b.v[kEdges[it->second][1]];
+      if (!mesh.shell(a, c, shell, &ring) ||
+          !std::all_of(shell.begin(), shell.end(), [&](std::uint32_t t) { return mesh.in_domain(t); }))
+        continue;  // (not a free edge: try_split3 would refuse it)
+      double before = 0.0;
+      for (const std::uint32_t t : shell) before = std::max(before, tetrahedron_quality(mesh, t));
+      const std::uint32_t m = try_split3(mesh, a, c, field, split);
+      if (m == Tetrahedralization3::kNone) continue;
+      for (int k = 0; k < 4 && try_relocate3(mesh, m, field, options.relocate); ++k) {
+      }
+      mesh.ball(m, ball);
+      double after = 0.0;
+      for (const std::uint32_t t : ball) after = std::max(after, tetrahedron_quality(mesh, t));
+      if (after < before * (1.0 - options.margin)) {
+        ++stats.splits;
+        done = true;
+      } else if (!try_collapse3(mesh, m, a, undo, Collapse3Criterion::Improve)) {
+        ++stats.splits;  // (not undone: a valid mesh, counted)
+        done = true;
       }
     }
   }

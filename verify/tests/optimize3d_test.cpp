@@ -458,6 +458,41 @@ RC_GTEST_PROP(Optimize3dProperties, StrategyKeepsValidityAndBoundary, ()) {
   RC_ASSERT(after.worst == s.worst_after);
 }
 
+TEST(Optimize3d, InteriorVerticesCureTetrahedraOnFourBoundaryVertices) {
+  // The Delaunay tetrahedralization of points on a sphere: every vertex on the (constrained)
+  // hull, so nothing moves and only swaps or an interior vertex can change a tetrahedron; the
+  // near-cospherical slivers stay bad without the interior vertices. (No size operation: the
+  // vertices added are the operator's.)
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::vector<Vec3> points;
+  while (points.size() < 80) {
+    const Vec3 p{g(rng), g(rng), g(rng)};
+    points.push_back((1.0 / std::sqrt(dot(p, p))) * p);
+  }
+  const auto run = [&](bool interior) {
+    Mesh3 m = delaunay_mesh(points);
+    for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) m.set_metric(v, Metric3::isotropic(0.4));
+    const Boundary b = boundary_of(m);
+    const double v0 = volume(m);
+    Optimize3dOptions o;
+    o.interior_vertices = interior;
+    o.split.long_length = std::numeric_limits<double>::infinity();  // no size operation
+    o.collapse.short_length = 0.0;
+    const Optimize3dStats s = optimize3d(m, o, [](const Vec3&) { return Metric3::isotropic(0.4); });
+    m.check();
+    EXPECT_EQ(boundary_of(m), b);
+    EXPECT_NEAR(volume(m), v0, 1e-12);
+    return std::pair{s, m.live_vertex_count()};
+  };
+  const auto [with, with_vertices] = run(true);
+  const auto [without, without_vertices] = run(false);
+  EXPECT_EQ(without_vertices, 80u);
+  EXPECT_GT(with_vertices, 80u);
+  EXPECT_GT(without.worst_after, 3.0);
+  EXPECT_LT(with.worst_after, without.worst_after);
+}
+
 TEST(Optimize3d, StrategyImprovesARandomMesh) {
   Mesh3 m = delaunay_mesh(cube_points(400, 11));
   for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) m.set_metric(v, Metric3::isotropic(0.15));
