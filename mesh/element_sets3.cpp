@@ -7,6 +7,7 @@
 #include "kernel/error.hpp"
 #include "kernel/intersections.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/vertex_buckets.hpp"
 
 namespace dtlab {
 
@@ -52,22 +53,15 @@ void find_in_mesh(const Tetrahedralization3& tet, std::span<const std::array<std
   edge_present.assign(edges.size(), 0);
   face_present.assign(faces.size(), 0);
   const std::size_t n = tet.point_count();
-  // Items by lowest vertex (a counting sort): edges first as k, faces as edges.size() + k.
+  // Items by lowest vertex: edges first as k, faces as edges.size() + k.
   const auto lowest = [&](std::size_t item) {
     if (item < edges.size()) return std::min(edges[item][0], edges[item][1]);
     const auto& f = faces[item - edges.size()];
     return std::min({f[0], f[1], f[2]});
   };
-  const std::size_t items = edges.size() + faces.size();
-  std::vector<std::uint32_t> start(n + 1, 0);
-  for (std::size_t k = 0; k < items; ++k) {
-    const std::uint32_t v = lowest(k);
-    if (v >= n) throw InternalError("find_in_mesh: vertex " + std::to_string(v) + " is not in the mesh");
-    ++start[v + 1];
-  }
-  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  std::vector<std::uint32_t> order(items), fill(start.begin(), start.end() - 1);
-  for (std::size_t k = 0; k < items; ++k) order[fill[lowest(k)]++] = static_cast<std::uint32_t>(k);
+  const VertexBuckets by_lowest = vertex_buckets(n, edges.size() + faces.size(), lowest);
+  const auto& start = by_lowest.start;
+  const auto& order = by_lowest.order;
   const std::vector<std::uint32_t> incident = vertex_tetrahedra(tet);
   const auto count = static_cast<std::uint32_t>(tet.tetrahedron_count());
   std::vector<std::uint32_t> mark(count, 0), found;

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <string>
-#include <unordered_map>
 
 #include "algorithms/constrained3d/context.hpp"
 #include "algorithms/constrained3d/plc_checks.hpp"
@@ -15,6 +14,7 @@
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
+#include "mesh/vertex_buckets.hpp"
 
 namespace dtlab {
 
@@ -25,9 +25,10 @@ using T3 = Tetrahedralization3;
 
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// The input edges (each once, a < b) and triangles with their edges. The edges are numbered in the order they first appear (triangle by triangle, side by
-// side), found by a counting sort of the sides on their lower vertex rather than a hash table:
-// the sides at one vertex are few, and vertex order keeps them near each other in memory.
+// The input edges (each once, a < b) and triangles with their edges. The edges are numbered in
+// the order they first appear (triangle by triangle, side by side), found by grouping the sides
+// on their lower vertex (vertex_buckets) rather than by a hash table: the sides at a vertex are
+// few.
 void build_constraints(const ConstrainedInput3& input, Constrained3dContext& c) {
   const std::size_t sides = 3 * input.triangles.size();
   const auto lower = [&](std::size_t h) {
@@ -38,15 +39,13 @@ void build_constraints(const ConstrainedInput3& input, Constrained3dContext& c) 
     const auto& t = input.triangles[h / 3];
     return std::max(t[h % 3], t[(h + 1) % 3]);
   };
-  std::vector<std::uint32_t> start(input.points.size() + 1, 0);
-  for (std::size_t h = 0; h < sides; ++h) ++start[lower(h) + 1];
-  for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-  std::vector<std::uint32_t> by_lower(sides), fill(start.begin(), start.end() - 1);
-  for (std::size_t h = 0; h < sides; ++h) by_lower[fill[lower(h)]++] = static_cast<std::uint32_t>(h);
+  const VertexBuckets by_lower = vertex_buckets(input.points.size(), sides, lower);
+  const auto& start = by_lower.start;
+  std::vector<std::uint32_t> order = by_lower.order;  // (big buckets are sorted below)
   // first[h]: the first side (lowest h) on the same edge as side h.
   std::vector<std::uint32_t> first(sides);
   for (std::size_t v = 0; v + 1 < start.size(); ++v) {
-    const auto begin = by_lower.begin() + start[v], end = by_lower.begin() + start[v + 1];
+    const auto begin = order.begin() + start[v], end = order.begin() + start[v + 1];
     if (end - begin <= 16) {  // in increasing h: the first earlier side on the same edge
       for (auto i = begin; i != end; ++i) {
         first[*i] = *i;

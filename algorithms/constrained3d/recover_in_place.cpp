@@ -130,9 +130,7 @@ std::string recover_in_place(Constrained3dContext& c) {
     faces.reserve(c.facets.size());
     for (const ConstraintFacet3& f : c.facets) faces.push_back(f.corners);
     find_in_mesh(c.mesh, edges, faces, edge_found, face_found);
-    for (std::uint32_t e = 0; e < c.edges.size(); ++e) edge_found[e] = edge_found[e] && c.edges[e].chain.size() == 2;
-    for (std::uint32_t f = 0; f < c.facets.size(); ++f) face_found[f] = face_found[f] && facet_vertex_count(c, f) == 3;
-  }
+  }  // (read only for an edge still of one piece and a triangle still of three vertices)
   std::vector<std::uint64_t> protected_edges = edge_piece_keys(c);
   std::vector<Tri> protected_faces;
   for (const ConstraintFacet3& f : c.facets) {

@@ -13,6 +13,7 @@
 
 #include "algorithms/optimize3d/local.hpp"
 #include "algorithms/optimize3d/optimize3d.hpp"
+#include "kernel/error.hpp"
 
 namespace dtlab {
 
@@ -54,6 +55,7 @@ void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const M
     const double q = tetrahedron_quality(mesh, t);
     if (q > options.bad_quality) bad.push_back({q, t, mesh.tetrahedron(t)});
   }
+  std::vector<std::uint32_t> shell, ring, ball;  // (the interior-vertex treatment's, below)
   std::sort(bad.begin(), bad.end(),
             [](const Bad& x, const Bad& y) { return x.quality > y.quality || (x.quality == y.quality && x.t < y.t); });
   for (const Bad& b : bad) {
@@ -104,10 +106,9 @@ void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const M
     Split3Options split = options.split;
     split.short_length = 0.0;
     split.quality_limit = std::numeric_limits<double>::infinity();
-    Collapse3Options undo = options.collapse;
+    Collapse3Options undo = options.collapse;  // back to the shell, whatever it was
     undo.long_length = std::numeric_limits<double>::infinity();
     undo.quality_limit = std::numeric_limits<double>::infinity();
-    std::vector<std::uint32_t> shell, ring, ball;
     for (auto it = edges.rbegin(); it != edges.rend() && !done; ++it) {
       const std::uint32_t a = b.v[kEdges[it->second][0]], c = b.v[kEdges[it->second][1]];
       if (!mesh.shell(a, c, shell, &ring) ||
@@ -125,9 +126,10 @@ void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const M
       if (after < before * (1.0 - options.margin)) {
         ++stats.splits;
         done = true;
-      } else if (!try_collapse3(mesh, m, a, undo, Collapse3Criterion::Improve)) {
-        ++stats.splits;  // (not undone: a valid mesh, counted)
-        done = true;
+      } else if (!try_collapse3(mesh, m, a, undo, Collapse3Criterion::NotWorse)) {
+        // Collapsing m onto a gives back the shell's tetrahedra, positive before: refused only
+        // by a broken invariant.
+        throw InternalError("optimize3d: an interior vertex that did not help could not be removed again");
       }
     }
   }
