@@ -100,12 +100,18 @@ inline Sign incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d)
   return detail::incircle_slow(a, b, c, d);
 }
 
-inline Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
-  if (const FilteredSign s = stage::orient3d_semistatic(a, b, c, d)) {
+// orient3d with a static filter bound valid for these operands (static_filter.hpp) tried first:
+// the same sign, only cheaper.
+inline Sign orient3d_bounded(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                             double static_bound) noexcept {
+  if (const FilteredSign s = stage::orient3d_semistatic_bounded(a, b, c, d, static_bound)) {
     detail::count_semistatic(Predicate::Orient3d);
     return *s;
   }
   return detail::orient3d_slow(a, b, c, d);
+}
+inline Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  return orient3d_bounded(a, b, c, d, stage::kNoStaticBound);
 }
 
 inline Sign insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e) noexcept {

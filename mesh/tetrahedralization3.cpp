@@ -4,7 +4,6 @@
 #include <utility>
 
 #include "kernel/error.hpp"
-#include "mesh/triangulation2.hpp"  // advise_huge_pages
 
 namespace dtlab {
 
@@ -27,9 +26,10 @@ bool reversed_facets(const std::array<std::uint32_t, 3>& f, const std::array<std
 }  // namespace
 
 void Tetrahedralization3::reserve_tetrahedra(std::size_t tetrahedra) {
-  const bool fresh = records_.capacity() < tetrahedra;
+  // No transparent huge pages here (unlike Triangulation2): measured on 10^6 uniform points,
+  // the kernel's zeroing of 2 MB pages cost 0.3 s of system time and saved no user time
+  // (incremental 2.55 -> 2.22 s; issue 23).
   records_.reserve(tetrahedra);
-  if (fresh) advise_huge_pages(records_.data(), records_.capacity() * sizeof(Record));
 }
 
 std::size_t Tetrahedralization3::finite_tetrahedron_count() const noexcept {

@@ -29,12 +29,9 @@ static_assert(T3::kMaxPoints < kOutside);
 }  // namespace
 
 CavityKernel::CavityKernel(const Vec3* points, std::vector<Record>& records) : p_(points), records_(records) {
-  local_.fill({kNone, 0});
   refresh_views();
   cavity_.reserve(256);
   boundary_.reserve(512);
-  hashed_.reserve(kTableSide);
-  locals_.reserve(512);
   free_.reserve(1024);
 }
 
@@ -148,12 +145,14 @@ bool CavityKernel::same_vertices(std::uint32_t g, std::uint32_t h) const noexcep
 // See the file comment of the header for the coplanar case.
 bool CavityKernel::conflicts(std::uint32_t t, const Vec3& p) const noexcept {
   const std::uint32_t* v = r_[t].vertex.data();
-  if (v[0] != kInf) return insphere_perturbed(p_[v[0]], p_[v[1]], p_[v[2]], p_[v[3]], p) == Sign::Positive;
-  const Sign side = orient3d(p, p_[v[1]], p_[v[2]], p_[v[3]]);
+  if (v[0] != kInf)
+    return insphere_perturbed_bounded(p_[v[0]], p_[v[1]], p_[v[2]], p_[v[3]], p, bounds_.insphere) == Sign::Positive;
+  const Sign side = orient3d_bounded(p, p_[v[1]], p_[v[2]], p_[v[3]], bounds_.orient3d);
   if (side != Sign::Zero) return side == Sign::Positive;
   // The finite tetrahedron across the hull facet (it may carry a mark).
   const std::uint32_t* w = r_[r_[t].neighbour[0] >> 2].vertex.data();
-  return insphere_perturbed(p_[w[0]], p_[w[1]], p_[w[2]], p_[w[3] & ~kMarks], p) == Sign::Positive;
+  return insphere_perturbed_bounded(p_[w[0]], p_[w[1]], p_[w[2]], p_[w[3] & ~kMarks], p, bounds_.insphere) ==
+         Sign::Positive;
 }
 
 // Visibility walk from last_ to a tetrahedron in conflict with p: a finite one whose closed
@@ -189,7 +188,7 @@ std::uint32_t CavityKernel::walk(std::uint32_t pid, std::uint32_t* stopped) cons
       const std::uint32_t i = (entered + k) & 3u;
       if (i == entered) continue;
       const auto& f = kFacet[i];
-      if (orient3d(p_[v[f[0]]], p_[v[f[1]]], p_[v[f[2]]], p) == Sign::Negative) {
+      if (orient3d_bounded(p_[v[f[0]]], p_[v[f[1]]], p_[v[f[2]]], p, bounds_.orient3d) == Sign::Negative) {
         if (!owns_apex<Restricted>(r_[t].neighbour[i])) {
           blocked = true;
           continue;
@@ -292,19 +291,11 @@ void CavityKernel::fill_ball(std::uint32_t p) {
     }
 }
 
-// Local number of boundary vertex v, from a small open-addressing hash table (kInfinite is
-// a key like any other).
-std::uint8_t CavityKernel::local_number(std::uint32_t v) {
-  std::uint32_t h = (v * 0x9E3779B1u) >> (32 - kHashBits);
-  while (local_[h].key != v) {
-    if (local_[h].key == kNone) {
-      local_[h] = {v, static_cast<std::uint32_t>(hashed_.size())};
-      hashed_.push_back(h);
-      break;
-    }
-    h = (h + 1) & (kHashSize - 1);
-  }
-  return static_cast<std::uint8_t>(local_[h].local);
+// local_number's slot for the infinite vertex or a vertex beyond local_of_ (which grows).
+std::uint8_t* CavityKernel::far_local_slot(std::uint32_t v) {
+  if (v == kInf) return &local_of_infinite_;
+  local_of_.resize(std::max<std::size_t>(v + 1, 2 * local_of_.size()), 0);
+  return &local_of_[v];
 }
 
 // Links facets 0, 1, 2 of the new tetrahedra (x0, x1, x2, P) among themselves. Facet k holds
@@ -318,16 +309,19 @@ void CavityKernel::link_ball_by_edges() {
     link_large_ball();
     return;
   }
-  locals_.clear();
-  for (const std::uint32_t t : new_tetrahedra_) {
-    const std::uint32_t* v = r_[t].vertex.data();
-    const std::array<std::uint8_t, 3> l = {local_number(v[0]), local_number(v[1]), local_number(v[2])};
-    locals_.push_back(l);
+  // (boundary_[j] holds the vertices of new tetrahedron j's boundary facet, in its order)
+  for (std::size_t j = 0; j < faces; ++j) {
+    const std::array<std::uint32_t, 3>& v = boundary_[j].v;
+    locals_[j] = {local_number(v[0]), local_number(v[1]), local_number(v[2])};
+  }
+  DTLAB_ASSERT(faces == 2 * numbered_count_ - 4);  // so every local number is below kTableSide
+  for (std::size_t j = 0; j < faces; ++j) {
+    const std::uint32_t t = new_tetrahedra_[j];
+    const auto& l = locals_[j];
     edge_table_[l[1] * kTableSide + l[2]] = 4 * t + 0;
     edge_table_[l[2] * kTableSide + l[0]] = 4 * t + 1;
     edge_table_[l[0] * kTableSide + l[1]] = 4 * t + 2;
   }
-  DTLAB_ASSERT(faces == 2 * hashed_.size() - 4);
   for (std::size_t j = 0; j < faces; ++j) {
     const std::uint32_t t = new_tetrahedra_[j];
     const auto& l = locals_[j];
@@ -335,8 +329,11 @@ void CavityKernel::link_ball_by_edges() {
     r_[t].neighbour[1] = edge_table_[l[0] * kTableSide + l[2]];
     r_[t].neighbour[2] = edge_table_[l[1] * kTableSide + l[0]];
   }
-  for (const std::uint32_t h : hashed_) local_[h].key = kNone;
-  hashed_.clear();
+  for (std::size_t k = 0; k < numbered_count_; ++k) {
+    const std::uint32_t v = numbered_[k];
+    (v == kInf ? local_of_infinite_ : local_of_[v]) = 0;
+  }
+  numbered_count_ = 0;
 }
 
 // The same matching by sorting the directed edges by vertex ids, for large balls.

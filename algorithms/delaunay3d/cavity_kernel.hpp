@@ -31,12 +31,14 @@
 // owned one.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
 
 #include "algorithms/delaunay3d/prepare.hpp"
+#include "kernel/predicates/static_filter.hpp"
 #include "kernel/vec.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
@@ -74,6 +76,11 @@ class CavityKernel {
   // For a caller that appends points one at a time (algorithms/constrained3d/insert_point.hpp):
   // the points' array after it moved.
   void set_points(const Vec3* points) noexcept { p_ = points; }
+  // Static filter bounds valid for every point the kernel will see (static_filter.hpp); none by
+  // default. Only speed depends on them.
+  void set_static_bounds(const StaticBounds3& bounds) noexcept { bounds_ = bounds; }
+  // Vertex ids the kernel will see are below `count` (more are taken, only slower).
+  void reserve_vertices(std::size_t count) { local_of_.resize(std::max(local_of_.size(), count), 0); }
 
   // Inserts point p (not a vertex yet). Unrestricted: always true. Restricted: false when the
   // insertion was abandoned, with nothing changed.
@@ -110,16 +117,10 @@ class CavityKernel {
     std::uint64_t key;  // vertex ids (from << 32 | to)
     std::uint32_t facet;
   };
-  struct HashSlot {
-    std::uint32_t key;  // a vertex id, or kNone
-    std::uint32_t local;
-  };
   // Records added to the array at a time: an eighth of it, from 64 to 4096, so that a small
   // mesh does not touch (and page in) a large chunk it never uses.
   static constexpr std::size_t kMinChunk = 64, kChunk = 4096;
   static constexpr std::size_t kTableSide = 64;  // balls with at most 64 boundary vertices
-  static constexpr int kHashBits = 8;            // load at most 1/4
-  static constexpr std::size_t kHashSize = std::size_t{1} << kHashBits;
 
   std::uint32_t& twin(std::uint32_t h) noexcept { return r_[h >> 2].neighbour[h & 3u]; }
   // The vertex of the tetrahedron of h opposite h (marks removed).
@@ -147,11 +148,21 @@ class CavityKernel {
   bool grow_cavity(std::uint32_t base, std::uint32_t p);
   void clear_marks() noexcept;
   void fill_ball(std::uint32_t p);
-  std::uint8_t local_number(std::uint32_t v);
+  // Local number of boundary vertex v (kInfinite included), numbered in order of first request.
+  std::uint8_t local_number(std::uint32_t v) noexcept {
+    std::uint8_t* slot = v < local_of_.size() ? &local_of_[v] : far_local_slot(v);
+    if (*slot == 0) {
+      numbered_[numbered_count_++] = v;
+      *slot = static_cast<std::uint8_t>(numbered_count_);
+    }
+    return static_cast<std::uint8_t>(*slot - 1);
+  }
+  std::uint8_t* far_local_slot(std::uint32_t v);
   void link_ball_by_edges();
   void link_large_ball();
 
   const Vec3* p_;
+  StaticBounds3 bounds_;
   std::vector<Record>& records_;
   Record* r_ = nullptr;
   std::size_t slot_count_ = 0;  // records_.size() as of the last refresh
@@ -161,9 +172,15 @@ class CavityKernel {
   std::size_t chunk_next_ = 0, chunk_end_ = 0;  // fresh slots of this kernel
   std::vector<std::uint32_t> cavity_, new_tetrahedra_, free_;
   std::vector<BoundaryFacet> boundary_;
-  std::array<HashSlot, kHashSize> local_;
-  std::vector<std::uint32_t> hashed_;  // the used slots of local_
-  std::vector<std::array<std::uint8_t, 3>> locals_;
+  // Local number + 1 of each boundary vertex of the ball being linked, by vertex id (0: none),
+  // as in Marot, Pellerin, Remacle 2019: one load instead of a hash probe; the infinite
+  // vertex's own in local_of_infinite_. Grown on demand (points may be appended).
+  std::vector<std::uint8_t> local_of_;
+  std::uint8_t local_of_infinite_ = 0;
+  // The vertices numbered for this ball: at most 3 per facet before the Euler check.
+  std::array<std::uint32_t, 3 * 2 * kTableSide> numbered_;
+  std::size_t numbered_count_ = 0;
+  std::array<std::array<std::uint8_t, 3>, 2 * kTableSide> locals_;  // by new tetrahedron
   std::array<std::uint32_t, kTableSide * kTableSide> edge_table_{};
   std::vector<Edge> edges_;
 };

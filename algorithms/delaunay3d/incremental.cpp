@@ -27,6 +27,8 @@ void delaunay3d_incremental(const PreparedPoints3& input, const Delaunay3dOption
   tetrahedralization.reserve_tetrahedra(std::min<std::size_t>(7 * m + m / 2 + 64, T3::kMaxTetrahedra));
 
   CavityKernel kernel(points.data(), records);
+  kernel.set_static_bounds(static_bounds3(std::span<const Vec3>(points.data(), m)));
+  kernel.reserve_vertices(m);
   if (order.first_simplex_positive()) {
     kernel.start(0, 1, 2, 3);
   } else {

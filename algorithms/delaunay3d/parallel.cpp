@@ -45,10 +45,16 @@ constexpr std::size_t kQuantileSample = 16384;
 
 class ParallelInsertion {
  public:
-  ParallelInsertion(const Vec3* points, std::vector<T3::Record>& records, unsigned threads)
+  // Vertex ids below `vertices`, all among points [0, vertices).
+  ParallelInsertion(const Vec3* points, std::size_t vertices, std::vector<T3::Record>& records, unsigned threads)
       : p_(points), records_(records), threads_(threads), shares_(threads), seeds_(threads) {
     kernels_.reserve(threads);
-    for (unsigned k = 0; k < threads; ++k) kernels_.emplace_back(points, records);
+    const StaticBounds3 bounds = static_bounds3(std::span<const Vec3>(points, vertices));
+    for (unsigned k = 0; k < threads; ++k) {
+      kernels_.emplace_back(points, records);
+      kernels_.back().set_static_bounds(bounds);
+      kernels_.back().reserve_vertices(vertices);
+    }
   }
 
   void start(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
@@ -252,7 +258,7 @@ void delaunay3d_parallel(const PreparedPoints3& input, const Delaunay3dOptions& 
   tetrahedralization.reserve_tetrahedra(std::min<std::size_t>(7 * m + m / 2 + 64, T3::kMaxTetrahedra));
 
   const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(options.threads, m));
-  ParallelInsertion insertion(points.data(), records, threads);
+  ParallelInsertion insertion(points.data(), m, records, threads);
   if (order.first_simplex_positive()) {
     insertion.start(0, 1, 2, 3);
   } else {

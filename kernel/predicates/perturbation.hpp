@@ -54,13 +54,18 @@ inline Sign incircle_perturbed(const Vec2& a, const Vec2& b, const Vec2& c, cons
   return detail::incircle_perturbed_slow(a, b, c, d);
 }
 
-inline Sign insphere_perturbed(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
-                               const Vec3& e) noexcept {
-  if (const FilteredSign s = stage::insphere_semistatic(a, b, c, d, e)) {
+// With a static filter bound valid for these operands (static_filter.hpp) tried first.
+inline Sign insphere_perturbed_bounded(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+                                       double static_bound) noexcept {
+  if (const FilteredSign s = stage::insphere_semistatic_bounded(a, b, c, d, e, static_bound)) {
     detail::count_semistatic(Predicate::Insphere);
     return *s;
   }
   return detail::insphere_perturbed_slow(a, b, c, d, e);
+}
+inline Sign insphere_perturbed(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                               const Vec3& e) noexcept {
+  return insphere_perturbed_bounded(a, b, c, d, e, stage::kNoStaticBound);
 }
 
 }  // namespace dtlab

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "kernel/sign.hpp"
 #include "kernel/vec.hpp"
@@ -27,10 +28,16 @@ inline constexpr double kInsphere = 1.2456702336294277e-13;
 
 // One branch, on "decided" (taken almost always, so well predicted); the sign itself without a
 // branch: on random input it is a coin flip that a branch would mispredict half the time.
+inline Sign sign_of(double det) noexcept { return static_cast<Sign>(int(det > 0.0) - int(det < 0.0)); }
 inline FilteredSign certify(double det, double bound) noexcept {
-  if (std::fabs(det) > bound) return static_cast<Sign>(int(det > 0.0) - int(det < 0.0));
+  if (std::fabs(det) > bound) return sign_of(det);
   return std::nullopt;
 }
+
+// The 3D filters also come with a static bound (the _bounded forms, static_filter.hpp): a bound
+// valid for every call on a known point set, tried before the operands' maxima are taken;
+// kNoStaticBound (infinity) is none.
+inline constexpr double kNoStaticBound = std::numeric_limits<double>::infinity();
 
 // orient2d(a, b, c) = det(b - a, c - a): positive iff a, b, c turn counter-clockwise.
 inline FilteredSign orient2d_semistatic(const Vec2& a, const Vec2& b, const Vec2& c) noexcept {
@@ -44,17 +51,22 @@ inline FilteredSign orient2d_semistatic(const Vec2& a, const Vec2& b, const Vec2
 
 // orient3d(a, b, c, d) = det(b - a, c - a, d - a): positive iff d lies on the side of plane
 // abc from which a, b, c turn counter-clockwise (Medit's positive tetrahedron).
-inline FilteredSign orient3d_semistatic(const Vec3& a, const Vec3& b, const Vec3& c,
-                                        const Vec3& d) noexcept {
+inline FilteredSign orient3d_semistatic_bounded(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                                                double static_bound) noexcept {
   const double r0x = b.x - a.x, r0y = b.y - a.y, r0z = b.z - a.z;
   const double r1x = c.x - a.x, r1y = c.y - a.y, r1z = c.z - a.z;
   const double r2x = d.x - a.x, r2y = d.y - a.y, r2z = d.z - a.z;
   const double det = (r0x * (r1y * r2z - r1z * r2y) - r1x * (r0y * r2z - r0z * r2y)) +
                      r2x * (r0y * r1z - r0z * r1y);
+  if (std::fabs(det) > static_bound) return sign_of(det);
   const double mx = std::max({std::fabs(r0x), std::fabs(r1x), std::fabs(r2x)});
   const double my = std::max({std::fabs(r0y), std::fabs(r1y), std::fabs(r2y)});
   const double mz = std::max({std::fabs(r0z), std::fabs(r1z), std::fabs(r2z)});
   return certify(det, semistatic_bound::kOrient3d * mx * my * mz);
+}
+inline FilteredSign orient3d_semistatic(const Vec3& a, const Vec3& b, const Vec3& c,
+                                        const Vec3& d) noexcept {
+  return orient3d_semistatic_bounded(a, b, c, d, kNoStaticBound);
 }
 
 // incircle(a, b, c, d): positive iff d lies inside the circle through a, b, c when these turn
@@ -77,8 +89,8 @@ inline FilteredSign incircle_semistatic(const Vec2& a, const Vec2& b, const Vec2
 
 // insphere(a, b, c, d, e): positive iff e lies inside the sphere through a, b, c, d when
 // orient3d(a, b, c, d) > 0 (the sign flips with their orientation).
-inline FilteredSign insphere_semistatic(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
-                                        const Vec3& e) noexcept {
+inline FilteredSign insphere_semistatic_bounded(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                                                const Vec3& e, double static_bound) noexcept {
   const double ax = a.x - e.x, ay = a.y - e.y, az = a.z - e.z;
   const double bx = b.x - e.x, by = b.y - e.y, bz = b.z - e.z;
   const double cx = c.x - e.x, cy = c.y - e.y, cz = c.z - e.z;
@@ -95,11 +107,18 @@ inline FilteredSign insphere_semistatic(const Vec3& a, const Vec3& b, const Vec3
   const double lc = (cx * cx + cy * cy) + cz * cz;
   const double ld = (dx * dx + dy * dy) + dz * dz;
   const double det = ((la * mbcd - lb * macd) + lc * mabd) - ld * mabc;
-  const double m = std::max({std::fabs(ax), std::fabs(ay), std::fabs(az), std::fabs(bx),
-                             std::fabs(by), std::fabs(bz), std::fabs(cx), std::fabs(cy),
-                             std::fabs(cz), std::fabs(dx), std::fabs(dy), std::fabs(dz)});
+  if (std::fabs(det) > static_bound) return sign_of(det);
+  // The maximum as a tree (depth 4, not a chain of 11).
+  const double mx = std::max(std::max(std::fabs(ax), std::fabs(bx)), std::max(std::fabs(cx), std::fabs(dx)));
+  const double my = std::max(std::max(std::fabs(ay), std::fabs(by)), std::max(std::fabs(cy), std::fabs(dy)));
+  const double mz = std::max(std::max(std::fabs(az), std::fabs(bz)), std::max(std::fabs(cz), std::fabs(dz)));
+  const double m = std::max(std::max(mx, my), mz);
   const double m2 = m * m;
   return certify(det, semistatic_bound::kInsphere * m2 * m2 * m);
+}
+inline FilteredSign insphere_semistatic(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+                                        const Vec3& e) noexcept {
+  return insphere_semistatic_bounded(a, b, c, d, e, kNoStaticBound);
 }
 
 }  // namespace dtlab::stage
