@@ -66,6 +66,9 @@ PEERS = (CGAL, TETGEN)
 # TetGen times its phases with clock(), the process's CPU time; dtlab and CGAL report wall time.
 TETGEN_NOTE = ("‡ TetGen's own timing is CPU time (clock()), the others' wall time: equal on an idle "
                "machine; on a busy one the ratios to TetGen favour TetGen (compare the process CPU column)")
+HXT_NOTE = ("§ HXT's own timing is its \"Init + BRIO + Delaunay took\" line (wall clock, printed to 10 ms: "
+            "its sort and insertion, not the reading of the points); its tetrahedron count holds its ghost "
+            "tetrahedra, so its Mtets/min and bytes/tet are on that count")
 PRODUCER = ("Produced by `scripts/bench_delaunay3d.py --update-readme` (dtlab's variants through "
             "`dtlab delaunay --dim 3 --stats`, CGAL's Delaunay_triangulation_3 through "
             "`bench/cgal_delaunay3d_run_bench`, TetGen 1.5 through its Debian binary, Gmsh's HXT through "
@@ -353,7 +356,16 @@ def tetgen_version(tetgen):
 
 def programs_for(args):
     """The programs to run, dtlab's variants first, the peers last."""
-    programs = args.variants.split(",") if args.variants else dtlab_variants(args.dtlab, args.threads)
+    if args.variants:
+        # A parallel variant named without its thread count runs once per --threads value.
+        programs = []
+        for name in args.variants.split(","):
+            if "parallel" in name and split_threads(name)[1] is None:
+                programs += [f"{name}-t{t}" for t in args.threads]
+            else:
+                programs.append(name)
+    else:
+        programs = dtlab_variants(args.dtlab, args.threads)
     if not args.no_cgal:
         if not os.access(args.cgal, os.X_OK):
             raise SystemExit(f"{args.cgal} not found (build it with CGAL, or pass --no-cgal)")
@@ -380,7 +392,8 @@ def add_arguments(ap):
     ap.add_argument("--cgal", help="the CGAL runner (default BUILD/bench/cgal_delaunay3d_run_bench)")
     ap.add_argument("--tetgen", default="tetgen", help="the TetGen binary")
     ap.add_argument("--gnu-time", default="/usr/bin/time", help="GNU time, for TetGen's and HXT's peak RSS")
-    ap.add_argument("--variants", help="comma-separated programs (default: every built variant)")
+    ap.add_argument("--variants", help="comma-separated programs (default: every built variant; a parallel "
+                    "variant without -tN runs once per --threads value)")
     ap.add_argument("--threads", default="1,2", help="thread counts of a parallel variant")
     ap.add_argument("--no-cgal", action="store_true")
     ap.add_argument("--no-tetgen", action="store_true")
