@@ -274,7 +274,7 @@ class DeWall {
 
 }  // namespace
 
-void delaunay3d_divide_conquer(const PreparedPoints3& input, const Delaunay3dOptions& /*options*/,
+void delaunay3d_divide_conquer(PreparedPoints3& input, const Delaunay3dOptions& /*options*/,
                                Tetrahedralization3& tetrahedralization) {
   DTLAB_ASSERT(input.distinct.size() >= 4 && input.degenerate_message.empty());
   const KdTree tree(input.points, input.distinct);

@@ -21,7 +21,7 @@
 
 namespace dtlab {
 
-void delaunay3d_flip(const PreparedPoints3& input, const Delaunay3dOptions& /*options*/,
+void delaunay3d_flip(PreparedPoints3& input, const Delaunay3dOptions& /*options*/,
                      Tetrahedralization3& tetrahedralization) {
   using T3 = Tetrahedralization3;
   std::vector<Vec3>& points = tetrahedralization.mutable_points();

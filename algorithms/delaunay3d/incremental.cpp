@@ -12,11 +12,12 @@
 
 namespace dtlab {
 
-void delaunay3d_incremental(const PreparedPoints3& input, const Delaunay3dOptions& /*options*/,
+void delaunay3d_incremental(PreparedPoints3& input, const Delaunay3dOptions& /*options*/,
                             Tetrahedralization3& tetrahedralization) {
   using T3 = Tetrahedralization3;
   std::vector<Vec3>& points = tetrahedralization.mutable_points();
   InsertionOrder order(input);
+  input.release_distinct();  // 4 bytes a point off the peak
   order.reorder(points);
   const std::size_t m = order.distinct_count();
 

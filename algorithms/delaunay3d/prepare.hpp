@@ -18,7 +18,8 @@ struct PreparedPoints3 {
   // The input, in input order: vertex ids are indices into it.
   std::span<const Vec3> points;
   // One id per distinct coordinate triple (the smallest index holding it), in Hilbert order
-  // (spatial_sort.hpp). A variant that wants another order sorts a copy.
+  // (spatial_sort.hpp). A variant that wants another order sorts a copy, and may then release
+  // this one (release_distinct) to lower its peak memory: no caller reads it after the run.
   std::vector<std::uint32_t> distinct;
   // Dropped duplicates, ascending, and for each the kept index with the same coordinates.
   std::vector<std::uint32_t> duplicates;
@@ -28,6 +29,8 @@ struct PreparedPoints3 {
   std::string degenerate_message;
   // For randomised steps (BRIO), so that runs are reproducible.
   std::uint64_t seed = 0;
+
+  void release_distinct() { std::vector<std::uint32_t>().swap(distinct); }
 };
 
 // Throws InputError naming the first point with a coordinate that is NaN, infinite or outside

@@ -5,13 +5,13 @@
 namespace dtlab {
 
 // Each variant's run function lives in its own file.
-void delaunay3d_incremental(const PreparedPoints3& input, const Delaunay3dOptions& options,
+void delaunay3d_incremental(PreparedPoints3& input, const Delaunay3dOptions& options,
                             Tetrahedralization3& tetrahedralization);
-void delaunay3d_flip(const PreparedPoints3& input, const Delaunay3dOptions& options,
+void delaunay3d_flip(PreparedPoints3& input, const Delaunay3dOptions& options,
                      Tetrahedralization3& tetrahedralization);
-void delaunay3d_divide_conquer(const PreparedPoints3& input, const Delaunay3dOptions& options,
+void delaunay3d_divide_conquer(PreparedPoints3& input, const Delaunay3dOptions& options,
                                Tetrahedralization3& tetrahedralization);
-void delaunay3d_parallel(const PreparedPoints3& input, const Delaunay3dOptions& options,
+void delaunay3d_parallel(PreparedPoints3& input, const Delaunay3dOptions& options,
                          Tetrahedralization3& tetrahedralization);
 
 namespace {

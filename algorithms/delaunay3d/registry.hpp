@@ -35,7 +35,7 @@ namespace dtlab {
 struct Delaunay3dVariant {
   std::string_view name;
   std::string_view description;
-  void (*run)(const PreparedPoints3& input, const Delaunay3dOptions& options, Tetrahedralization3& tetrahedralization);
+  void (*run)(PreparedPoints3& input, const Delaunay3dOptions& options, Tetrahedralization3& tetrahedralization);
 };
 
 // Every registered variant, in table order.
