@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Book §2.7 / §7.13 Table 7.2 (George & Borouchaki 1998), construction rate against n: our 3D
 # Delaunay rate beside the book's, whose triangulation share is derived from its "Del" column.
-#   papers/book_2_7/run.sh             the six sizes of Table 7.2, min of 3 runs each (about 1 min)
+#   papers/book_2_7/run.sh             the six sizes of Table 7.2, median of 5 runs each (about 2 min)
 #   papers/book_2_7/run.sh --quick     examples 1-3 only, with the checks (CTest runs this)
 #   papers/book_2_7/run.sh --runs 5    more runs per size
 #   papers/book_2_7/run.sh --dtlab P   use the dtlab binary P instead of building one
@@ -12,7 +12,7 @@ cd "$(dirname "$0")/../.."
 book_table=papers/book_2_7/table_7_2.tsv
 
 quick=0
-runs=3
+runs=5
 dtlab=""
 while (($#)); do
   case "$1" in
@@ -51,6 +51,8 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 threads_for() { [[ $1 == parallel ]] && nproc || echo 1; }
 
+median() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print v[int(NR / 2) + 1] }'; }
+
 # One run; leaves its stdout and stderr in $work/out and $work/err, returns dtlab's exit status.
 run_once() {
   local algo="$1" n="$2" extra=()
@@ -60,9 +62,9 @@ run_once() {
 }
 
 # $runs runs of one variant at one size, checked; appends "algo example n elements seconds rss"
-# (seconds and rss: the minimum over the runs) to $work/ours.
+# (seconds and rss: the median over the runs, the upper one of an even count) to $work/ours.
 measure() {
-  local algo="$1" example="$2" n="$3" best_s="" best_rss="" elements=""
+  local algo="$1" example="$2" n="$3" times=() sizes=() elements=""
   for ((r = 0; r < runs; ++r)); do
     run_once "$algo" "$n" || fail "$algo, n=$n: dtlab exited with an error: $(cat "$work/err")"
     local json e s pm rss
@@ -78,10 +80,9 @@ measure() {
     awk -v e="$e" -v s="$s" -v pm="$pm" 'BEGIN { exit !(s > 0 && (pm - e * 60 / s) ^ 2 <= (1e-4 * pm) ^ 2) }' ||
       fail "$algo, n=$n: elements_per_minute $pm is not elements*60/seconds ($e, $s)"
     elements="$e"
-    if [[ -z $best_s ]] || awk -v a="$s" -v b="$best_s" 'BEGIN { exit !(a < b) }'; then best_s="$s"; fi
-    if [[ -z $best_rss ]] || awk -v a="$rss" -v b="$best_rss" 'BEGIN { exit !(a < b) }'; then best_rss="$rss"; fi
+    times+=("$s") sizes+=("$rss")
   done
-  echo "$algo $example $n $elements $best_s $best_rss" >>"$work/ours"
+  echo "$algo $example $n $elements $(median "${times[@]}") $(median "${sizes[@]}")" >>"$work/ours"
 }
 
 # The variants: incremental first, then every other registered one that runs. Those still
@@ -119,7 +120,7 @@ echo
 echo "- machine: ${cpu:-unknown CPU}, $(nproc) logical CPUs"
 echo "- dtlab: $("$dtlab" --version)"
 echo "- ours: \`dtlab delaunay --dim 3 --random N --seed 1 --stats\`, uniform points in the unit cube;"
-echo "  seconds = min over $runs runs of the triangulation call (no i/o); peak RSS of the process"
+echo "  seconds = median of $runs runs of the triangulation call (no i/o); peak RSS of the process (median)"
 echo "- book: mesh boundaries plus the interior points its mesher created, whole mesh generation"
 echo "  timed (CPU, i/o included); \"Del\" = share of that time spent inserting points"
 ((${#skipped[@]})) && echo "- variants not built yet, skipped: ${skipped[*]}"
