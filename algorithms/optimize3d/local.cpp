@@ -34,16 +34,11 @@ double quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, co
   return shape_quality(a, b, c, d, ma, mb, mc, md);
 }
 
-namespace {
-
-// quality_in of a tetrahedron known positive (the caller's exact orient3d).
 double positive_quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
                            const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept {
   if (isotropic(ma) && isotropic(mb) && isotropic(mc) && isotropic(md)) return shape_quality_nonflat(a, b, c, d);
   return shape_quality_nonflat(a, b, c, d, ma, mb, mc, md);
 }
-
-}  // namespace
 
 double quality(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) noexcept {
   if (!positive(mesh, a, b, c, d)) return std::numeric_limits<double>::infinity();
@@ -70,7 +65,7 @@ double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::u
 
 double tetrahedron_quality(const Mesh3& mesh, std::uint32_t t) noexcept {
   const auto v = mesh.tetrahedron(t);
-  return quality_in(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), mesh.metric(v[0]),
+  return positive_quality_in(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), mesh.metric(v[0]),
                     mesh.metric(v[1]), mesh.metric(v[2]), mesh.metric(v[3]));
 }
 
