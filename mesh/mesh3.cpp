@@ -56,6 +56,25 @@ std::array<std::uint32_t, 2> complete_even(std::uint32_t i, std::uint32_t j) noe
   return {k, l};
 }
 
+// complete_even for every pair of distinct local indices, the shell's step without the loops.
+constexpr std::array<std::array<std::array<std::uint8_t, 2>, 4>, 4> kCompleteEven = [] {
+  std::array<std::array<std::array<std::uint8_t, 2>, 4>, 4> table{};
+  for (std::uint32_t i = 0; i < 4; ++i)
+    for (std::uint32_t j = 0; j < 4; ++j) {
+      if (i == j) continue;
+      std::uint32_t k = 0;
+      while (k == i || k == j) ++k;
+      std::uint32_t l = 6 - i - j - k;
+      const std::uint32_t p[4] = {i, j, k, l};
+      int inversions = 0;
+      for (int x = 0; x < 4; ++x)
+        for (int y = x + 1; y < 4; ++y) inversions += p[x] > p[y];
+      if (inversions % 2) std::swap(k, l);
+      table[i][j] = {static_cast<std::uint8_t>(k), static_cast<std::uint8_t>(l)};
+    }
+  return table;
+}();
+
 // The tetrahedra already seen by a search around a vertex: a linear scan while few, a hash set
 // beyond (balls are small; a degenerate vertex of high valence should not make it quadratic).
 class SeenSet {
@@ -304,12 +323,21 @@ void Mesh3::shell_at(std::uint32_t t0, std::uint32_t a, std::uint32_t b, std::ve
       throw InternalError("Mesh3::shell: the tetrahedra around edge (" + vertex_name(a) + ", " + vertex_name(b) +
                           ") do not close");
     }
-    const std::uint32_t ic = local(t, c);
-    const std::uint32_t g = neighbours_[4 * t + ic];
-    const auto [k, l] = complete_even(local(t, a), local(t, b));
-    DTLAB_ASSERT(k == ic);
-    c = vertices_[4 * t + l];
-    t = tetrahedron_of(g);
+    // a and b found in one scan; c must be the vertex kCompleteEven puts opposite the facet
+    // crossed next.
+    const std::uint32_t* v = &vertices_[4 * t];
+    std::uint32_t ia = 4, ib = 4;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (v[i] == a) ia = i;
+      if (v[i] == b) ib = i;
+    }
+    if (ia == 4) local(t, a);  // throws
+    if (ib == 4) local(t, b);
+    const auto [k, l] = kCompleteEven[ia][ib];
+    if (v[k] != c) local(t, c);  // throws when c is gone
+    DTLAB_ASSERT(v[k] == c);
+    c = v[l];
+    t = tetrahedron_of(neighbours_[4 * t + k]);
   } while (t != t0);
 }
 

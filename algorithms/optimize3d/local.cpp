@@ -81,7 +81,10 @@ bool is_locked_facet(const Mesh3& mesh, std::uint32_t h) noexcept {
 
 bool is_free_edge(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& shell,
                   std::vector<std::uint32_t>& ring, std::uint32_t hint) {
-  if (a == Mesh3::kInfinite || b == Mesh3::kInfinite || mesh.is_constrained_edge(a, b)) return false;
+  if (a == Mesh3::kInfinite || b == Mesh3::kInfinite) return false;
+  // Both ends of a constrained edge are kOnBoundary (mesh3.hpp): the hash lookup only then.
+  if ((mesh.flags(a) & Mesh3::kOnBoundary) && (mesh.flags(b) & Mesh3::kOnBoundary) && mesh.is_constrained_edge(a, b))
+    return false;
   if (hint != Mesh3::kNone) {
     mesh.shell_at(hint, a, b, shell, &ring);
   } else if (!mesh.shell(a, b, shell, &ring)) {
