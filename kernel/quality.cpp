@@ -70,6 +70,33 @@ double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const 
   return kQualityAlpha3d * h_max * twice_area / six_volume;
 }
 
+FacetQuality3::FacetQuality3(const Vec3& a, const Vec3& b, const Vec3& c) noexcept
+    : a_(a), b_(b), c_(c), ba_(b - a), ca_(c - a), cb_(c - b) {
+  s_ba_ = dot(ba_, ba_);
+  s_ca_ = dot(ca_, ca_);
+  s_cb_ = dot(cb_, cb_);
+  area_abc_ = norm(cross(ba_, ca_));
+}
+
+// shape_quality_nonflat and longest_edge above, step for step, with the facet's terms read.
+double FacetQuality3::with_apex(const Vec3& d) const noexcept {
+  const Vec3 da = d - a_, db = d - b_, dc = d - c_;
+  // The edges in longest_edge's order: ba, ca, da, cb, db, dc.
+  const std::array<const Vec3*, 6> e{&ba_, &ca_, &da, &cb_, &db, &dc};
+  const std::array<double, 6> s{s_ba_, s_ca_, dot(da, da), s_cb_, dot(db, db), dot(dc, dc)};
+  double s_max = 0.0;
+  for (int i = 0; i < 6; ++i) s_max = std::max(s_max, s[i]);
+  const bool safe = s_max > 1e-280 && s_max < 1e280;
+  const double floor = safe ? s_max * (1.0 - 1e-9) : 0.0;
+  double h_max = 0.0;
+  for (int i = 0; i < 6; ++i)
+    if (!safe || s[i] >= floor) h_max = std::max(h_max, norm(*e[i]));
+  const double twice_area = area_abc_ + norm(cross(ba_, da)) + norm(cross(ca_, da)) + norm(cross(cb_, db));
+  const double six_volume = std::fabs(dot(ba_, cross(ca_, da)));
+  if (six_volume == 0.0) return kInfinity;
+  return kQualityAlpha3d * h_max * twice_area / six_volume;
+}
+
 namespace {
 
 // sqrt(n^T adj(M) n): the measure in M of the parallelogram whose normal is n (header above).

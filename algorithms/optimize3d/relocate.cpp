@@ -115,7 +115,17 @@ struct RelocateScratch {
   std::vector<std::array<std::uint32_t, 3>> facets;
   std::vector<double> quality;
   MetricRoots roots;
+  // The candidates' Q_K over each facet, prepared at its first use (Euclidean: the facet and the
+  // moved vertex all in isotropic metrics); state 0: not yet, 1: prepared, 2: anisotropic.
+  std::vector<FacetQuality3> prepared;
+  std::vector<std::uint8_t> state;
+  // Q_K by tetrahedron slot, NaN when unknown (relocate_sweep3's; null: computed each time).
+  std::vector<double>* known = nullptr;
 };
+
+bool isotropic(const Metric3& m) noexcept {
+  return m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[0] == m.m[5];
+}
 
 // try_relocate3 for a vertex whose ball is in s.ball (v free: is_free_vertex held).
 bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options,
@@ -129,7 +139,14 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
   std::size_t worst = 0;
   for (std::size_t k = 0; k < ball.size(); ++k) {
     facets.push_back(opposite_facet(mesh, ball[k], v));
-    const double q = tetrahedron_quality(mesh, ball[k]);
+    double q;
+    if (s.known) {
+      double& c = (*s.known)[ball[k]];
+      if (std::isnan(c)) c = tetrahedron_quality(mesh, ball[k]);
+      q = c;
+    } else {
+      q = tetrahedron_quality(mesh, ball[k]);
+    }
     s.quality.push_back(q);
     if (q > before) {
       before = q;
@@ -152,6 +169,8 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
     return facets[k == 0 ? first : (k <= first ? k - 1 : k)];
   };
   auto index_at = [](std::size_t first, std::size_t k) { return k == 0 ? first : (k <= first ? k - 1 : k); };
+  s.prepared.resize(n);
+  s.state.assign(n, 0);
   for (const Vec3& target : targets) {
     if (!std::isfinite(target.x) || !std::isfinite(target.y) || !std::isfinite(target.z)) continue;
     double w = 1.0;
@@ -169,20 +188,33 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
       }
       if (!valid) continue;
       const Metric3 metric = field ? field(moved) : mesh.metric(v);
-      // Every new tetrahedron is positive (exactly, above): Q_K without the flatness test.
+      const bool euclidean = isotropic(metric);
+      // Every new tetrahedron is positive (exactly, above): Q_K without the flatness test, as
+      // positive_quality_in computes it (in isotropic metrics, the Euclidean value).
       double after = 0.0;
       for (std::size_t j = 0; j < n; ++j) {
-        const auto& f = facet_at(first_worse, j);
-        after = std::max(after, positive_quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved,
-                                                    mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]), metric));
+        const std::size_t i = index_at(first_worse, j);
+        const auto& f = facets[i];
+        if (s.state[i] == 0) {
+          const bool iso = isotropic(mesh.metric(f[0])) && isotropic(mesh.metric(f[1])) && isotropic(mesh.metric(f[2]));
+          if (iso) s.prepared[i] = FacetQuality3(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]));
+          s.state[i] = iso ? 1 : 2;
+        }
+        const double q = euclidean && s.state[i] == 1
+                             ? s.prepared[i].with_apex(moved)
+                             : positive_quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved,
+                                                   mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]), metric);
+        after = std::max(after, q);
         if (!(after < bound)) {
-          first_worse = index_at(first_worse, j);
+          first_worse = i;
           break;
         }
       }
       if (after < bound) {
         mesh.set_point(v, moved);
         mesh.set_metric(v, metric);
+        if (s.known)
+          for (const std::uint32_t t : ball) (*s.known)[t] = std::numeric_limits<double>::quiet_NaN();
         return true;
       }
     }
@@ -206,6 +238,9 @@ std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relo
   const std::uint32_t nv = mesh.vertex_capacity();
   constexpr int kUnset = std::numeric_limits<int>::min();
   std::vector<double> worst(nv, 0.0);
+  // Q_K of every tetrahedron, as the classification computes it; a relocation forgets its
+  // ball's, and the next ball that needs one computes it again.
+  std::vector<double> known(mesh.tetrahedron_capacity(), std::numeric_limits<double>::quiet_NaN());
   std::vector<int> ref(nv, kUnset);
   std::vector<std::uint8_t> locked(nv, 0);
   for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
@@ -213,6 +248,7 @@ std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relo
     const auto tv = mesh.tetrahedron(t);
     const bool domain = mesh.in_domain(t);
     const double q = domain ? tetrahedron_quality(mesh, t) : 0.0;
+    if (domain) known[t] = q;
     const int r = domain ? mesh.ref(t) : 0;
     for (std::uint32_t i = 0; i < 4; ++i) {
       const std::uint32_t w = tv[i];
@@ -244,6 +280,7 @@ std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relo
   });
   std::uint64_t moved = 0;
   RelocateScratch s;
+  s.known = &known;
   // Mesh3::ball's breadth-first search, in its order (the sums over the ball keep their bits),
   // with a stamp per tetrahedron for "seen" instead of a search of the list.
   std::vector<std::uint32_t> seen(mesh.tetrahedron_capacity(), 0);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "kernel/constructions.hpp"
@@ -101,6 +102,22 @@ RC_GTEST_PROP(Circumcircle, CentreIsEquidistant3d, ()) {
   const Vec3 m = circumcenter(a, b, c, d);
   const double r = circumradius(a, b, c, d);
   for (const Vec3& p : {a, b, c, d}) RC_ASSERT(close(norm(m - p), r, 1e-12));
+}
+
+// FacetQuality3 prepares the facet's terms once: the same value as shape_quality_nonflat, bit for
+// bit (optimize3d's relocation relies on it for identical results), flat apexes included.
+RC_GTEST_PROP(FacetQuality3, SameBitsAsShapeQualityNonflat, ()) {
+  const Vec3 a{*gen_unit(), *gen_unit(), *gen_unit()}, b{*gen_unit(), *gen_unit(), *gen_unit()};
+  const Vec3 c{*gen_unit(), *gen_unit(), *gen_unit()};
+  const FacetQuality3 facet(a, b, c);
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 d{*gen_unit(), *gen_unit(), *gen_unit()};
+    const double want = shape_quality_nonflat(a, b, c, d), got = facet.with_apex(d);
+    RC_ASSERT(std::memcmp(&want, &got, sizeof want) == 0);
+  }
+  const double flat = facet.with_apex(0.25 * a + 0.75 * b);
+  const double want_flat = shape_quality_nonflat(a, b, c, 0.25 * a + 0.75 * b);
+  RC_ASSERT(std::memcmp(&want_flat, &flat, sizeof flat) == 0);
 }
 
 TEST(Inradius, KnownValues) {
