@@ -177,20 +177,13 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
     for (std::uint32_t k = 0; k < options.tries; ++k, w *= 0.5) {
       const Vec3 moved = (1.0 - w) * p + w * target;
       if (moved == p) break;
-      bool valid = true;
-      for (std::size_t j = 0; j < n; ++j) {
-        const auto& f = facet_at(first_flat, j);
-        if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved) != Sign::Positive) {
-          first_flat = index_at(first_flat, j);
-          valid = false;
-          break;
-        }
-      }
-      if (!valid) continue;
       const Metric3 metric = field ? field(moved) : mesh.metric(v);
       const bool euclidean = isotropic(metric);
-      // Every new tetrahedron is positive (exactly, above): Q_K without the flatness test, as
-      // positive_quality_in computes it (in isotropic metrics, the Euclidean value).
+      // The quality bound first, then the exact orientations: most candidates fail the bound
+      // (early, on the facet that refused the last one), and a candidate is kept only when both
+      // hold, so the order changes no decision. Q_K without the flatness test, as
+      // positive_quality_in computes it (in isotropic metrics, the Euclidean value); of an
+      // inverted candidate it is some finite or infinite value, and the orientation refuses it.
       double after = 0.0;
       for (std::size_t j = 0; j < n; ++j) {
         const std::size_t i = index_at(first_worse, j);
@@ -210,7 +203,17 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
           break;
         }
       }
-      if (after < bound) {
+      if (!(after < bound)) continue;
+      bool valid = true;
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto& f = facet_at(first_flat, j);
+        if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved) != Sign::Positive) {
+          first_flat = index_at(first_flat, j);
+          valid = false;
+          break;
+        }
+      }
+      if (valid) {
         mesh.set_point(v, moved);
         mesh.set_metric(v, metric);
         if (s.known)
