@@ -97,6 +97,25 @@ double FacetQuality3::with_apex(const Vec3& d) const noexcept {
   return kQualityAlpha3d * h_max * twice_area / six_volume;
 }
 
+bool FacetQuality3::below(const Vec3& d, double bound) const noexcept {
+  const Vec3 da = d - a_, db = d - b_, dc = d - c_;
+  const double s_max = std::max({s_ba_, s_ca_, s_cb_, dot(da, da), dot(db, db), dot(dc, dc)});
+  const Vec3 n1 = cross(ba_, da), n2 = cross(ca_, da), n3 = cross(cb_, db);
+  const double q1 = dot(n1, n1), q2 = dot(n2, n2), q3 = dot(n3, n3);
+  const double six_volume = std::fabs(dot(ba_, cross(ca_, da)));
+  // Squared edges within [1e-140, 1e140] keep the squared areas below 1e280; squared areas
+  // above 1e-200 are normal numbers: each square root within a few ulps of hypot's norm.
+  constexpr double kLow = 1e-200;
+  if (!(s_max > 1e-140 && s_max < 1e140 && q1 > kLow && q2 > kLow && q3 > kLow && six_volume > 0.0))
+    return with_apex(d) < bound;
+  const double twice_area = area_abc_ + std::sqrt(q1) + std::sqrt(q2) + std::sqrt(q3);
+  const double q = kQualityAlpha3d * std::sqrt(s_max) * twice_area / six_volume;
+  constexpr double kClear = 1e-12;
+  if (q < bound * (1.0 - kClear)) return true;
+  if (q > bound * (1.0 + kClear)) return false;
+  return with_apex(d) < bound;
+}
+
 namespace {
 
 // sqrt(n^T adj(M) n): the measure in M of the parallelogram whose normal is n (header above).

@@ -40,6 +40,11 @@ class FacetQuality3 {
   FacetQuality3() = default;
   FacetQuality3(const Vec3& a, const Vec3& b, const Vec3& c) noexcept;
   double with_apex(const Vec3& d) const noexcept;
+  // with_apex(d) < bound, by a filter: the same measures with the square roots of the rounded
+  // squared norms instead of hypot (a few ulps apart), trusted where they clear the bound by a
+  // relative 1e-12, far beyond that difference; else, and outside the range where the squares
+  // keep their relative precision, with_apex itself. The same answer as with_apex(d) < bound.
+  bool below(const Vec3& d, double bound) const noexcept;
 
  private:
   Vec3 a_{}, b_{}, c_{}, ba_{}, ca_{}, cb_{};

@@ -184,8 +184,9 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
       // hold, so the order changes no decision. Q_K without the flatness test, as
       // positive_quality_in computes it (in isotropic metrics, the Euclidean value); of an
       // inverted candidate it is some finite or infinite value, and the orientation refuses it.
-      double after = 0.0;
-      for (std::size_t j = 0; j < n; ++j) {
+      // The ball's new worst is below the bound iff each new tetrahedron's Q_K is.
+      bool better = true;
+      for (std::size_t j = 0; j < n && better; ++j) {
         const std::size_t i = index_at(first_worse, j);
         const auto& f = facets[i];
         if (s.state[i] == 0) {
@@ -193,17 +194,13 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
           if (iso) s.prepared[i] = FacetQuality3(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]));
           s.state[i] = iso ? 1 : 2;
         }
-        const double q = euclidean && s.state[i] == 1
-                             ? s.prepared[i].with_apex(moved)
-                             : positive_quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved,
-                                                   mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]), metric);
-        after = std::max(after, q);
-        if (!(after < bound)) {
-          first_worse = i;
-          break;
-        }
+        better = euclidean && s.state[i] == 1
+                     ? s.prepared[i].below(moved, bound)
+                     : positive_quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved, mesh.metric(f[0]),
+                                           mesh.metric(f[1]), mesh.metric(f[2]), metric) < bound;
+        if (!better) first_worse = i;
       }
-      if (!(after < bound)) continue;
+      if (!better) continue;
       bool valid = true;
       for (std::size_t j = 0; j < n; ++j) {
         const auto& f = facet_at(first_flat, j);

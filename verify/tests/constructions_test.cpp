@@ -120,6 +120,18 @@ RC_GTEST_PROP(FacetQuality3, SameBitsAsShapeQualityNonflat, ()) {
   RC_ASSERT(std::memcmp(&want_flat, &flat, sizeof flat) == 0);
 }
 
+// FacetQuality3::below filters with cheaper square roots: the same answer as with_apex < bound,
+// bounds at the value itself and one ulp either side included.
+RC_GTEST_PROP(FacetQuality3, BelowAgreesWithWithApex, ()) {
+  const Vec3 a{*gen_unit(), *gen_unit(), *gen_unit()}, b{*gen_unit(), *gen_unit(), *gen_unit()};
+  const Vec3 c{*gen_unit(), *gen_unit(), *gen_unit()}, d{*gen_unit(), *gen_unit(), *gen_unit()};
+  const FacetQuality3 facet(a, b, c);
+  const double q = facet.with_apex(d);
+  const double scale = *rc::gen::element(0.5, 0.999, 1.0, 1.001, 2.0);
+  for (const double bound : {q, std::nextafter(q, 0.0), std::nextafter(q, kInf), scale * q, kInf, 0.0})
+    RC_ASSERT(facet.below(d, bound) == (q < bound));
+}
+
 TEST(Inradius, KnownValues) {
   // 3-4-5 triangle: r = area / semi-perimeter = 6 / 6.
   EXPECT_EQ(inradius(Vec2{0, 0}, Vec2{3, 0}, Vec2{0, 4}), 1.0);
