@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <bit>
 #include <string>
-#include <unordered_set>
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
@@ -75,19 +74,37 @@ constexpr std::array<std::array<std::array<std::uint8_t, 2>, 4>, 4> kCompleteEve
   return table;
 }();
 
-// The tetrahedra already seen by a search around a vertex: a linear scan while few, a hash set
-// beyond (balls are small; a degenerate vertex of high valence should not make it quadratic).
+// The tetrahedra already seen by a search around a vertex: a linear scan while few, beyond that
+// a stamp per tetrahedron slot (balls are small; a degenerate vertex of high valence should not
+// make it quadratic). The stamps are one array per thread, shared by every mesh: each search
+// takes a stamp no earlier search took, so what other searches left is never mistaken for seen.
 class SeenSet {
  public:
+  explicit SeenSet(std::size_t capacity) : capacity_(capacity) {}
   bool insert(std::uint32_t t, const std::vector<std::uint32_t>& list) {
     if (list.size() < 48) return std::find(list.begin(), list.end(), t) == list.end();
-    if (set_.empty()) set_.insert(list.begin(), list.end());
-    return set_.insert(t).second;
+    if (stamp_ == 0) {
+      if (stamps_.size() < capacity_) stamps_.resize(capacity_, 0);
+      if (++counter_ == 0) {  // wrapped: forget every stamp
+        std::fill(stamps_.begin(), stamps_.end(), 0);
+        counter_ = 1;
+      }
+      stamp_ = counter_;
+      for (const std::uint32_t u : list) stamps_[u] = stamp_;
+    }
+    if (stamps_[t] == stamp_) return false;
+    stamps_[t] = stamp_;
+    return true;
   }
 
  private:
-  std::unordered_set<std::uint32_t> set_;
+  static thread_local std::vector<std::uint32_t> stamps_;
+  static thread_local std::uint32_t counter_;
+  std::size_t capacity_;
+  std::uint32_t stamp_ = 0;
 };
+thread_local std::vector<std::uint32_t> SeenSet::stamps_;
+thread_local std::uint32_t SeenSet::counter_ = 0;
 
 std::string vertex_name(std::uint32_t v) { return v == Mesh3::kInfinite ? std::string("infinite") : std::to_string(v); }
 
@@ -237,7 +254,7 @@ void Mesh3::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
   // Breadth first across the facets holding v (those opposite the other three vertices): the
   // order depends only on the structure, so it is deterministic.
   const std::size_t bound = live_tetrahedron_count();
-  SeenSet seen;
+  SeenSet seen(tetrahedron_capacity());
   out.push_back(t0);
   for (std::size_t k = 0; k < out.size(); ++k) {
     const std::uint32_t t = out[k];

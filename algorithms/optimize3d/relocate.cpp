@@ -225,7 +225,8 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
 }  // namespace
 
 bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options) {
-  RelocateScratch s;
+  // The buffers live across calls (the bad tetrahedra ask for thousands of relocations).
+  thread_local RelocateScratch s;
   if (!is_free_vertex(mesh, v, s.ball)) return false;
   return relocate_free_vertex(mesh, v, field, options, s);
 }
