@@ -97,6 +97,20 @@ double FacetQuality3::with_apex(const Vec3& d) const noexcept {
   return kQualityAlpha3d * h_max * twice_area / six_volume;
 }
 
+bool shape_quality_clearly_at_least(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double bound) noexcept {
+  const Vec3 ba = b - a, ca = c - a, da = d - a, cb = c - b, db = d - b, dc = d - c;
+  const double s_max = std::max({dot(ba, ba), dot(ca, ca), dot(da, da), dot(cb, cb), dot(db, db), dot(dc, dc)});
+  const Vec3 n0 = cross(ba, ca), n1 = cross(ba, da), n2 = cross(ca, da), n3 = cross(cb, db);
+  const double q0 = dot(n0, n0), q1 = dot(n1, n1), q2 = dot(n2, n2), q3 = dot(n3, n3);
+  const double six_volume = std::fabs(dot(ba, cross(ca, da)));
+  // As in FacetQuality3::below: squares in the range where their roots are within a few ulps.
+  constexpr double kLow = 1e-200;
+  if (!(s_max > 1e-140 && s_max < 1e140 && q0 > kLow && q1 > kLow && q2 > kLow && q3 > kLow && six_volume > 0.0))
+    return false;
+  const double twice_area = std::sqrt(q0) + std::sqrt(q1) + std::sqrt(q2) + std::sqrt(q3);
+  return kQualityAlpha3d * std::sqrt(s_max) * twice_area / six_volume > bound * (1.0 + 1e-12);
+}
+
 bool FacetQuality3::below(const Vec3& d, double bound) const noexcept {
   const Vec3 da = d - a_, db = d - b_, dc = d - c_;
   const double s_max = std::max({s_ba_, s_ca_, s_cb_, dot(da, da), dot(db, db), dot(dc, dc)});

@@ -32,6 +32,12 @@ double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const 
 double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
                              const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept;
 
+// A filter for shape_quality_nonflat(a, b, c, d) >= bound (Euclidean): true only when it holds,
+// decided with the square roots of the rounded squared norms instead of hypot (a few ulps
+// apart) where they clear the bound by a relative 1e-12; false when unsure or below. Whatever
+// the orientation of (a, b, c, d) (the measure of |det|).
+bool shape_quality_clearly_at_least(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double bound) noexcept;
+
 // shape_quality_nonflat(a, b, c, d) (Euclidean) for many apexes d over one facet (a, b, c), as
 // vertex relocation asks it: what depends only on the facet (its three edges, its area) is
 // computed once. The same value, bit for bit, as shape_quality_nonflat(a, b, c, d).

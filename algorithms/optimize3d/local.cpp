@@ -49,12 +49,15 @@ double quality(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_
 double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
                      double bound) noexcept {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  if (!positive(mesh, a, b, c, d)) return kInf;
   const Vec3 &pa = mesh.point(a), &pb = mesh.point(b), &pc = mesh.point(c), &pd = mesh.point(d);
   if (isotropic(mesh.metric(a)) && isotropic(mesh.metric(b)) && isotropic(mesh.metric(c)) && isotropic(mesh.metric(d))) {
+    // Most candidates of a shell or a face swap lie far above the bound: refused by the filter
+    // before the exact orientation and the hypot-based value (+inf either way).
+    if (shape_quality_clearly_at_least(pa, pb, pc, pd, bound) || !positive(mesh, a, b, c, d)) return kInf;
     const double q = shape_quality_nonflat(pa, pb, pc, pd);
     return q < bound ? q : kInf;
   }
+  if (!positive(mesh, a, b, c, d)) return kInf;
   double worst = 0.0;
   for (const std::uint32_t v : {a, b, c, d}) {
     worst = std::max(worst, shape_quality_nonflat(pa, pb, pc, pd, mesh.metric(v)));

@@ -132,6 +132,17 @@ RC_GTEST_PROP(FacetQuality3, BelowAgreesWithWithApex, ()) {
     RC_ASSERT(facet.below(d, bound) == (q < bound));
 }
 
+// shape_quality_clearly_at_least never says yes where the value lies below the bound.
+RC_GTEST_PROP(ShapeQuality3, ClearlyAtLeastOnlyWhenAtLeast, ()) {
+  const Vec3 a{*gen_unit(), *gen_unit(), *gen_unit()}, b{*gen_unit(), *gen_unit(), *gen_unit()};
+  const Vec3 c{*gen_unit(), *gen_unit(), *gen_unit()}, d{*gen_unit(), *gen_unit(), *gen_unit()};
+  const double q = shape_quality_nonflat(a, b, c, d);
+  const double scale = *rc::gen::element(0.5, 0.999, 1.0, 1.001, 2.0);
+  for (const double bound : {q, std::nextafter(q, 0.0), std::nextafter(q, kInf), scale * q, 0.0})
+    if (shape_quality_clearly_at_least(a, b, c, d, bound)) RC_ASSERT(q >= bound);
+  RC_ASSERT(shape_quality_clearly_at_least(a, b, c, d, 0.5 * q) == (q > 0.0 && std::isfinite(q)));
+}
+
 TEST(Inradius, KnownValues) {
   // 3-4-5 triangle: r = area / semi-perimeter = 6 / 6.
   EXPECT_EQ(inradius(Vec2{0, 0}, Vec2{3, 0}, Vec2{0, 4}), 1.0);
