@@ -70,6 +70,66 @@ double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const 
   return kQualityAlpha3d * h_max * twice_area / six_volume;
 }
 
+FacetQuality3::FacetQuality3(const Vec3& a, const Vec3& b, const Vec3& c) noexcept
+    : a_(a), b_(b), c_(c), ba_(b - a), ca_(c - a), cb_(c - b) {
+  s_ba_ = dot(ba_, ba_);
+  s_ca_ = dot(ca_, ca_);
+  s_cb_ = dot(cb_, cb_);
+  area_abc_ = norm(cross(ba_, ca_));
+}
+
+// shape_quality_nonflat and longest_edge above, step for step, with the facet's terms read.
+double FacetQuality3::with_apex(const Vec3& d) const noexcept {
+  const Vec3 da = d - a_, db = d - b_, dc = d - c_;
+  // The edges in longest_edge's order: ba, ca, da, cb, db, dc.
+  const std::array<const Vec3*, 6> e{&ba_, &ca_, &da, &cb_, &db, &dc};
+  const std::array<double, 6> s{s_ba_, s_ca_, dot(da, da), s_cb_, dot(db, db), dot(dc, dc)};
+  double s_max = 0.0;
+  for (int i = 0; i < 6; ++i) s_max = std::max(s_max, s[i]);
+  const bool safe = s_max > 1e-280 && s_max < 1e280;
+  const double floor = safe ? s_max * (1.0 - 1e-9) : 0.0;
+  double h_max = 0.0;
+  for (int i = 0; i < 6; ++i)
+    if (!safe || s[i] >= floor) h_max = std::max(h_max, norm(*e[i]));
+  const double twice_area = area_abc_ + norm(cross(ba_, da)) + norm(cross(ca_, da)) + norm(cross(cb_, db));
+  const double six_volume = std::fabs(dot(ba_, cross(ca_, da)));
+  if (six_volume == 0.0) return kInfinity;
+  return kQualityAlpha3d * h_max * twice_area / six_volume;
+}
+
+bool shape_quality_clearly_at_least(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double bound) noexcept {
+  const Vec3 ba = b - a, ca = c - a, da = d - a, cb = c - b, db = d - b, dc = d - c;
+  const double s_max = std::max({dot(ba, ba), dot(ca, ca), dot(da, da), dot(cb, cb), dot(db, db), dot(dc, dc)});
+  const Vec3 n0 = cross(ba, ca), n1 = cross(ba, da), n2 = cross(ca, da), n3 = cross(cb, db);
+  const double q0 = dot(n0, n0), q1 = dot(n1, n1), q2 = dot(n2, n2), q3 = dot(n3, n3);
+  const double six_volume = std::fabs(dot(ba, cross(ca, da)));
+  // As in FacetQuality3::below: squares in the range where their roots are within a few ulps.
+  constexpr double kLow = 1e-200;
+  if (!(s_max > 1e-140 && s_max < 1e140 && q0 > kLow && q1 > kLow && q2 > kLow && q3 > kLow && six_volume > 0.0))
+    return false;
+  const double twice_area = std::sqrt(q0) + std::sqrt(q1) + std::sqrt(q2) + std::sqrt(q3);
+  return kQualityAlpha3d * std::sqrt(s_max) * twice_area / six_volume > bound * (1.0 + 1e-12);
+}
+
+bool FacetQuality3::below(const Vec3& d, double bound) const noexcept {
+  const Vec3 da = d - a_, db = d - b_, dc = d - c_;
+  const double s_max = std::max({s_ba_, s_ca_, s_cb_, dot(da, da), dot(db, db), dot(dc, dc)});
+  const Vec3 n1 = cross(ba_, da), n2 = cross(ca_, da), n3 = cross(cb_, db);
+  const double q1 = dot(n1, n1), q2 = dot(n2, n2), q3 = dot(n3, n3);
+  const double six_volume = std::fabs(dot(ba_, cross(ca_, da)));
+  // Squared edges within [1e-140, 1e140] keep the squared areas below 1e280; squared areas
+  // above 1e-200 are normal numbers: each square root within a few ulps of hypot's norm.
+  constexpr double kLow = 1e-200;
+  if (!(s_max > 1e-140 && s_max < 1e140 && q1 > kLow && q2 > kLow && q3 > kLow && six_volume > 0.0))
+    return with_apex(d) < bound;
+  const double twice_area = area_abc_ + std::sqrt(q1) + std::sqrt(q2) + std::sqrt(q3);
+  const double q = kQualityAlpha3d * std::sqrt(s_max) * twice_area / six_volume;
+  constexpr double kClear = 1e-12;
+  if (q < bound * (1.0 - kClear)) return true;
+  if (q > bound * (1.0 + kClear)) return false;
+  return with_apex(d) < bound;
+}
+
 namespace {
 
 // sqrt(n^T adj(M) n): the measure in M of the parallelogram whose normal is n (header above).

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <bit>
 #include <string>
-#include <unordered_set>
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
@@ -56,19 +55,56 @@ std::array<std::uint32_t, 2> complete_even(std::uint32_t i, std::uint32_t j) noe
   return {k, l};
 }
 
-// The tetrahedra already seen by a search around a vertex: a linear scan while few, a hash set
-// beyond (balls are small; a degenerate vertex of high valence should not make it quadratic).
+// complete_even for every pair of distinct local indices, the shell's step without the loops.
+constexpr std::array<std::array<std::array<std::uint8_t, 2>, 4>, 4> kCompleteEven = [] {
+  std::array<std::array<std::array<std::uint8_t, 2>, 4>, 4> table{};
+  for (std::uint32_t i = 0; i < 4; ++i)
+    for (std::uint32_t j = 0; j < 4; ++j) {
+      if (i == j) continue;
+      std::uint32_t k = 0;
+      while (k == i || k == j) ++k;
+      std::uint32_t l = 6 - i - j - k;
+      const std::uint32_t p[4] = {i, j, k, l};
+      int inversions = 0;
+      for (int x = 0; x < 4; ++x)
+        for (int y = x + 1; y < 4; ++y) inversions += p[x] > p[y];
+      if (inversions % 2) std::swap(k, l);
+      table[i][j] = {static_cast<std::uint8_t>(k), static_cast<std::uint8_t>(l)};
+    }
+  return table;
+}();
+
+// The tetrahedra already seen by a search around a vertex: a linear scan while few, beyond that
+// a stamp per tetrahedron slot (balls are small; a degenerate vertex of high valence should not
+// make it quadratic). The stamps are one array per thread, shared by every mesh: each search
+// takes a stamp no earlier search took, so what other searches left is never mistaken for seen.
 class SeenSet {
  public:
+  explicit SeenSet(std::size_t capacity) : capacity_(capacity) {}
   bool insert(std::uint32_t t, const std::vector<std::uint32_t>& list) {
     if (list.size() < 48) return std::find(list.begin(), list.end(), t) == list.end();
-    if (set_.empty()) set_.insert(list.begin(), list.end());
-    return set_.insert(t).second;
+    if (stamp_ == 0) {
+      if (stamps_.size() < capacity_) stamps_.resize(capacity_, 0);
+      if (++counter_ == 0) {  // wrapped: forget every stamp
+        std::fill(stamps_.begin(), stamps_.end(), 0);
+        counter_ = 1;
+      }
+      stamp_ = counter_;
+      for (const std::uint32_t u : list) stamps_[u] = stamp_;
+    }
+    if (stamps_[t] == stamp_) return false;
+    stamps_[t] = stamp_;
+    return true;
   }
 
  private:
-  std::unordered_set<std::uint32_t> set_;
+  static thread_local std::vector<std::uint32_t> stamps_;
+  static thread_local std::uint32_t counter_;
+  std::size_t capacity_;
+  std::uint32_t stamp_ = 0;
 };
+thread_local std::vector<std::uint32_t> SeenSet::stamps_;
+thread_local std::uint32_t SeenSet::counter_ = 0;
 
 std::string vertex_name(std::uint32_t v) { return v == Mesh3::kInfinite ? std::string("infinite") : std::to_string(v); }
 
@@ -218,7 +254,7 @@ void Mesh3::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
   // Breadth first across the facets holding v (those opposite the other three vertices): the
   // order depends only on the structure, so it is deterministic.
   const std::size_t bound = live_tetrahedron_count();
-  SeenSet seen;
+  SeenSet seen(tetrahedron_capacity());
   out.push_back(t0);
   for (std::size_t k = 0; k < out.size(); ++k) {
     const std::uint32_t t = out[k];
@@ -304,12 +340,21 @@ void Mesh3::shell_at(std::uint32_t t0, std::uint32_t a, std::uint32_t b, std::ve
       throw InternalError("Mesh3::shell: the tetrahedra around edge (" + vertex_name(a) + ", " + vertex_name(b) +
                           ") do not close");
     }
-    const std::uint32_t ic = local(t, c);
-    const std::uint32_t g = neighbours_[4 * t + ic];
-    const auto [k, l] = complete_even(local(t, a), local(t, b));
-    DTLAB_ASSERT(k == ic);
-    c = vertices_[4 * t + l];
-    t = tetrahedron_of(g);
+    // a and b found in one scan; c must be the vertex kCompleteEven puts opposite the facet
+    // crossed next.
+    const std::uint32_t* v = &vertices_[4 * t];
+    std::uint32_t ia = 4, ib = 4;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (v[i] == a) ia = i;
+      if (v[i] == b) ib = i;
+    }
+    if (ia == 4) local(t, a);  // throws
+    if (ib == 4) local(t, b);
+    const auto [k, l] = kCompleteEven[ia][ib];
+    if (v[k] != c) local(t, c);  // throws when c is gone
+    DTLAB_ASSERT(v[k] == c);
+    c = v[l];
+    t = tetrahedron_of(neighbours_[4 * t + k]);
   } while (t != t0);
 }
 

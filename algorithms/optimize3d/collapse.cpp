@@ -26,12 +26,16 @@ struct Candidate {
 
 // Simulates removing x onto y; false when invalid.
 bool simulate(const Mesh3& mesh, std::uint32_t x, std::uint32_t y, const Collapse3Options& options, Candidate& c) {
+  c.removed = Mesh3::kNone;
+  c.before = 0.0;
+  c.after = std::numeric_limits<double>::infinity();
   if (!is_free_vertex(mesh, x, c.ball)) return false;
   bool has_edge = false;
   c.fresh.clear();
   // The vertices of y's ball, gathered at the first long new edge: find_edge(y, w) without a
   // search of the ball for each.
-  std::vector<std::uint32_t> y_ball, y_neighbours;
+  thread_local std::vector<std::uint32_t> y_ball, y_neighbours;  // (buffers kept across calls)
+  y_neighbours.clear();
   bool gathered = false;
   auto is_edge = [&](std::uint32_t w) {
     if (!gathered) {
@@ -73,18 +77,21 @@ bool try_collapse3(Mesh3& mesh, std::uint32_t u, std::uint32_t v, const Collapse
   if (u == v || u >= mesh.vertex_capacity() || v >= mesh.vertex_capacity() || mesh.is_dead_vertex(u) ||
       mesh.is_dead_vertex(v) || mesh.is_constrained_edge(u, v))
     return false;
-  Candidate best, other;
-  const bool a = simulate(mesh, v, u, options, best);
-  const bool b = simulate(mesh, u, v, options, other);
+  // The candidates' buffers live across calls (collapses are tried by the thousand).
+  thread_local Candidate first, second;
+  Candidate* best = &first;
+  Candidate* other = &second;
+  const bool a = simulate(mesh, v, u, options, *best);
+  const bool b = simulate(mesh, u, v, options, *other);
   if (!a && !b) return false;
-  if (!a || (b && other.after < best.after)) std::swap(best, other);
+  if (!a || (b && other->after < best->after)) std::swap(best, other);
   const bool accept = criterion == Collapse3Criterion::Improve
-                          ? best.after < best.before * (1.0 - options.margin)
-                          : best.after <= std::max(best.before, options.quality_limit);
+                          ? best->after < best->before * (1.0 - options.margin)
+                          : best->after <= std::max(best->before, options.quality_limit);
   if (!accept) return false;
-  std::vector<std::uint32_t> slots;
-  replace_tetrahedra(mesh, best.ball, best.fresh, slots);
-  mesh.remove_vertex(best.removed);
+  thread_local std::vector<std::uint32_t> slots;
+  replace_tetrahedra(mesh, best->ball, best->fresh, slots);
+  mesh.remove_vertex(best->removed);
   return true;
 }
 

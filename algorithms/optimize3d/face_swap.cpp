@@ -26,8 +26,11 @@ bool optimize3d_detail::face_swap(Mesh3& mesh, std::uint32_t h, double margin, s
                                               {{f[2], f[0], e, d}, mesh.ref(t)}}};
   const double before = cache ? std::max(cache->get(mesh, t), cache->get(mesh, u))
                               : std::max(tetrahedron_quality(mesh, t), tetrahedron_quality(mesh, u));
-  const double after = worst_quality(mesh, std::span<const NewTetrahedron>(fresh));
-  if (!(after < before * (1.0 - margin))) return false;  // also refuses a non-positive one (+inf)
+  // Each new tetrahedron must be below the bound: stop at the first that is not (or is not
+  // positive: +inf).
+  const double bound = before * (1.0 - margin);
+  for (const NewTetrahedron& n : fresh)
+    if (!(quality_below(mesh, n.v[0], n.v[1], n.v[2], n.v[3], bound) < bound)) return false;
   const std::array<std::uint32_t, 2> old{t, u};
   std::vector<std::uint32_t> slots;
   replace_tetrahedra(mesh, old, fresh, slots);

@@ -34,16 +34,11 @@ double quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, co
   return shape_quality(a, b, c, d, ma, mb, mc, md);
 }
 
-namespace {
-
-// quality_in of a tetrahedron known positive (the caller's exact orient3d).
 double positive_quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
                            const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept {
   if (isotropic(ma) && isotropic(mb) && isotropic(mc) && isotropic(md)) return shape_quality_nonflat(a, b, c, d);
   return shape_quality_nonflat(a, b, c, d, ma, mb, mc, md);
 }
-
-}  // namespace
 
 double quality(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) noexcept {
   if (!positive(mesh, a, b, c, d)) return std::numeric_limits<double>::infinity();
@@ -54,12 +49,15 @@ double quality(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_
 double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
                      double bound) noexcept {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  if (!positive(mesh, a, b, c, d)) return kInf;
   const Vec3 &pa = mesh.point(a), &pb = mesh.point(b), &pc = mesh.point(c), &pd = mesh.point(d);
   if (isotropic(mesh.metric(a)) && isotropic(mesh.metric(b)) && isotropic(mesh.metric(c)) && isotropic(mesh.metric(d))) {
+    // Most candidates of a shell or a face swap lie far above the bound: refused by the filter
+    // before the exact orientation and the hypot-based value (+inf either way).
+    if (shape_quality_clearly_at_least(pa, pb, pc, pd, bound) || !positive(mesh, a, b, c, d)) return kInf;
     const double q = shape_quality_nonflat(pa, pb, pc, pd);
     return q < bound ? q : kInf;
   }
+  if (!positive(mesh, a, b, c, d)) return kInf;
   double worst = 0.0;
   for (const std::uint32_t v : {a, b, c, d}) {
     worst = std::max(worst, shape_quality_nonflat(pa, pb, pc, pd, mesh.metric(v)));
@@ -70,7 +68,7 @@ double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::u
 
 double tetrahedron_quality(const Mesh3& mesh, std::uint32_t t) noexcept {
   const auto v = mesh.tetrahedron(t);
-  return quality_in(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), mesh.metric(v[0]),
+  return positive_quality_in(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), mesh.metric(v[0]),
                     mesh.metric(v[1]), mesh.metric(v[2]), mesh.metric(v[3]));
 }
 
@@ -86,7 +84,10 @@ bool is_locked_facet(const Mesh3& mesh, std::uint32_t h) noexcept {
 
 bool is_free_edge(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& shell,
                   std::vector<std::uint32_t>& ring, std::uint32_t hint) {
-  if (a == Mesh3::kInfinite || b == Mesh3::kInfinite || mesh.is_constrained_edge(a, b)) return false;
+  if (a == Mesh3::kInfinite || b == Mesh3::kInfinite) return false;
+  // Both ends of a constrained edge are kOnBoundary (mesh3.hpp): the hash lookup only then.
+  if ((mesh.flags(a) & Mesh3::kOnBoundary) && (mesh.flags(b) & Mesh3::kOnBoundary) && mesh.is_constrained_edge(a, b))
+    return false;
   if (hint != Mesh3::kNone) {
     mesh.shell_at(hint, a, b, shell, &ring);
   } else if (!mesh.shell(a, b, shell, &ring)) {

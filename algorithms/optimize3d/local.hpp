@@ -19,6 +19,10 @@ namespace dtlab::optimize3d_detail {
 // Euclidean Q_K: computed once instead of four times.
 double quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma, const Metric3& mb,
                   const Metric3& mc, const Metric3& md) noexcept;
+// quality_in of a tetrahedron known positive (the caller's exact orient3d): the same value
+// without the flatness test.
+double positive_quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
+                           const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept;
 // Q_K (kernel/quality.hpp) of the tetrahedron (a, b, c, d) of vertex ids, in their metrics
 // (the worst over the four); +infinity when it is not positive (exact orient3d).
 double quality(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) noexcept;
@@ -26,7 +30,7 @@ double quality(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_
 // cannot be accepted costs one metric instead of four).
 double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
                      double bound) noexcept;
-// Q_K of the live finite tetrahedron t.
+// Q_K of the live finite tetrahedron t (positive: Mesh3's invariant, so no flatness test).
 double tetrahedron_quality(const Mesh3& mesh, std::uint32_t t) noexcept;
 // Metric length of the edge uv (kernel/metric.hpp edge_length).
 double edge_length(const Mesh3& mesh, std::uint32_t u, std::uint32_t v) noexcept;

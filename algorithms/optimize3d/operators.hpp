@@ -86,7 +86,9 @@ Vec3 optimal_point(const Mesh3& mesh, std::uint32_t v, std::span<const std::uint
 // Moves a free vertex v to P' = (1 - w) P + w P* (8.13), the first w from 1 down for which every
 // tetrahedron of the ball is positive and the ball's worst Q_K improves; failing that, the same
 // relaxation toward the ideal point of the ball's worst tetrahedron alone. Its metric becomes
-// `field` at P' (unchanged when the field is empty). True when v moved.
+// `field` at P' (unchanged when the field is empty). `field` is asked at every candidate P',
+// before its orientations are tested: it must answer (any finite metric) for points outside the
+// domain too. True when v moved.
 bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options = {});
 // One sweep: every free vertex once, worst ball first. Returns the number of vertices moved.
 std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relocate3Options& options = {});

@@ -33,15 +33,35 @@ std::array<std::uint32_t, 3> opposite_facet(const Mesh3& mesh, std::uint32_t t, 
   return {Mesh3::kNone, Mesh3::kNone, Mesh3::kNone};
 }
 
+// M^1/2 and M^-1/2 of the last metric asked for: a uniform size field asks for the same one at
+// every facet, and the powers (std::pow, or an eigen-decomposition) cost more than the rest of
+// ideal_apex. The same values as computing them each time.
+class MetricRoots {
+ public:
+  void of(const Metric3& m) {
+    if (valid_ && m.m == metric_.m) return;
+    // m = lambda I: power() decomposes nothing (no rotation, unit eigenvectors) and gives
+    // pow(lambda, p) I exactly; the same values without the eigen-decomposition.
+    const bool isotropic = m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[0] == m.m[5];
+    auto scalar = [](double l) { return Metric3{{l, 0.0, l, 0.0, 0.0, l}}; };
+    root = isotropic ? scalar(std::pow(m.m[0], 0.5)) : power(m, 0.5);
+    inverse_root = isotropic ? scalar(std::pow(m.m[0], -0.5)) : power(m, -0.5);
+    metric_ = m;
+    valid_ = true;
+  }
+  Metric3 root, inverse_root;
+
+ private:
+  Metric3 metric_;
+  bool valid_ = false;
+};
+
 // The apex, on the positive side of (a, b, c), of the regular tetrahedron on the facet in m (its
 // edge the mean of the facet's three in m): in the space where m is the identity.
-Vec3 ideal_apex(const Vec3& a, const Vec3& b, const Vec3& c, const Metric3& m) {
-  // m = lambda I: power() decomposes nothing (no rotation, unit eigenvectors) and gives
-  // pow(lambda, p) I exactly; the same values without the eigen-decomposition.
-  const bool isotropic = m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[0] == m.m[5];
-  auto scalar = [](double l) { return Metric3{{l, 0.0, l, 0.0, 0.0, l}}; };
-  const Metric3 root = isotropic ? scalar(std::pow(m.m[0], 0.5)) : power(m, 0.5);
-  const Metric3 inverse_root = isotropic ? scalar(std::pow(m.m[0], -0.5)) : power(m, -0.5);
+Vec3 ideal_apex(const Vec3& a, const Vec3& b, const Vec3& c, const Metric3& m, MetricRoots& roots) {
+  roots.of(m);
+  const Metric3& root = roots.root;
+  const Metric3& inverse_root = roots.inverse_root;
   const Vec3 x = transform(root, a), y = transform(root, b), z = transform(root, c);
   const Vec3 n = cross(y - x, z - x);
   const double area2 = norm(n);
@@ -63,14 +83,14 @@ namespace {
 
 // optimal_point with the ball's current Q_K already known (quality[k] of ball[k]).
 Vec3 optimal_point_of(const Mesh3& mesh, std::uint32_t v, std::span<const std::uint32_t> ball,
-                      std::span<const double> quality) {
+                      std::span<const double> quality, MetricRoots& roots) {
   Vec3 sum{0.0, 0.0, 0.0};
   double weights = 0.0;
   for (std::size_t k = 0; k < ball.size(); ++k) {
     const auto f = opposite_facet(mesh, ball[k], v);
     const double w = std::min(quality[k], kMaxWeight);
     const Metric3 m = mean_metric(mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]));
-    sum = sum + w * ideal_apex(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), m);
+    sum = sum + w * ideal_apex(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), m, roots);
     weights += w;
   }
   if (!(weights > 0.0)) return mesh.point(v);
@@ -83,7 +103,8 @@ Vec3 optimal_point(const Mesh3& mesh, std::uint32_t v, std::span<const std::uint
   std::vector<double> quality;
   quality.reserve(ball.size());
   for (const std::uint32_t t : ball) quality.push_back(tetrahedron_quality(mesh, t));
-  return optimal_point_of(mesh, v, ball, quality);
+  MetricRoots roots;
+  return optimal_point_of(mesh, v, ball, quality, roots);
 }
 
 namespace {
@@ -93,7 +114,18 @@ struct RelocateScratch {
   std::vector<std::uint32_t> ball;
   std::vector<std::array<std::uint32_t, 3>> facets;
   std::vector<double> quality;
+  MetricRoots roots;
+  // The candidates' Q_K over each facet, prepared at its first use (Euclidean: the facet and the
+  // moved vertex all in isotropic metrics); state 0: not yet, 1: prepared, 2: anisotropic.
+  std::vector<FacetQuality3> prepared;
+  std::vector<std::uint8_t> state;
+  // Q_K by tetrahedron slot, NaN when unknown (relocate_sweep3's; null: computed each time).
+  std::vector<double>* known = nullptr;
 };
+
+bool isotropic(const Metric3& m) noexcept {
+  return m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[0] == m.m[5];
+}
 
 // try_relocate3 for a vertex whose ball is in s.ball (v free: is_free_vertex held).
 bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options,
@@ -107,7 +139,14 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
   std::size_t worst = 0;
   for (std::size_t k = 0; k < ball.size(); ++k) {
     facets.push_back(opposite_facet(mesh, ball[k], v));
-    const double q = tetrahedron_quality(mesh, ball[k]);
+    double q;
+    if (s.known) {
+      double& c = (*s.known)[ball[k]];
+      if (std::isnan(c)) c = tetrahedron_quality(mesh, ball[k]);
+      q = c;
+    } else {
+      q = tetrahedron_quality(mesh, ball[k]);
+    }
     s.quality.push_back(q);
     if (q > before) {
       before = q;
@@ -118,32 +157,64 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
   // tetrahedron alone (the ball's worst is what the criterion asks to improve).
   const auto& fw = facets[worst];
   const Metric3 mw = mean_metric(mesh.metric(fw[0]), mesh.metric(fw[1]), mesh.metric(fw[2]));
-  const std::array<Vec3, 2> targets{optimal_point_of(mesh, v, ball, s.quality),
-                                    ideal_apex(mesh.point(fw[0]), mesh.point(fw[1]), mesh.point(fw[2]), mw)};
+  const std::array<Vec3, 2> targets{optimal_point_of(mesh, v, ball, s.quality, s.roots),
+                                    ideal_apex(mesh.point(fw[0]), mesh.point(fw[1]), mesh.point(fw[2]), mw, s.roots)};
+  const double bound = before * (1.0 - options.margin);
+  const std::size_t n = facets.size();
+  // A candidate is kept only when every new tetrahedron is positive and below the bound, so the
+  // facets may be tested in any order: the one that refused the last candidate (a shorter step
+  // toward the same target is usually refused by the same one) first, then the others in order.
+  std::size_t first_flat = 0, first_worse = 0;
+  auto facet_at = [&](std::size_t first, std::size_t k) -> const std::array<std::uint32_t, 3>& {
+    return facets[k == 0 ? first : (k <= first ? k - 1 : k)];
+  };
+  auto index_at = [](std::size_t first, std::size_t k) { return k == 0 ? first : (k <= first ? k - 1 : k); };
+  s.prepared.resize(n);
+  s.state.assign(n, 0);
   for (const Vec3& target : targets) {
     if (!std::isfinite(target.x) || !std::isfinite(target.y) || !std::isfinite(target.z)) continue;
     double w = 1.0;
     for (std::uint32_t k = 0; k < options.tries; ++k, w *= 0.5) {
       const Vec3 moved = (1.0 - w) * p + w * target;
       if (moved == p) break;
+      const Metric3 metric = field ? field(moved) : mesh.metric(v);
+      const bool euclidean = isotropic(metric);
+      // The quality bound first, then the exact orientations: most candidates fail the bound
+      // (early, on the facet that refused the last one), and a candidate is kept only when both
+      // hold, so the order changes no decision. Q_K without the flatness test, as
+      // positive_quality_in computes it (in isotropic metrics, the Euclidean value); of an
+      // inverted candidate it is some finite or infinite value, and the orientation refuses it.
+      // The ball's new worst is below the bound iff each new tetrahedron's Q_K is.
+      bool better = true;
+      for (std::size_t j = 0; j < n && better; ++j) {
+        const std::size_t i = index_at(first_worse, j);
+        const auto& f = facets[i];
+        if (s.state[i] == 0) {
+          const bool iso = isotropic(mesh.metric(f[0])) && isotropic(mesh.metric(f[1])) && isotropic(mesh.metric(f[2]));
+          if (iso) s.prepared[i] = FacetQuality3(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]));
+          s.state[i] = iso ? 1 : 2;
+        }
+        better = euclidean && s.state[i] == 1
+                     ? s.prepared[i].below(moved, bound)
+                     : positive_quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved, mesh.metric(f[0]),
+                                           mesh.metric(f[1]), mesh.metric(f[2]), metric) < bound;
+        if (!better) first_worse = i;
+      }
+      if (!better) continue;
       bool valid = true;
-      for (const auto& f : facets) {
+      for (std::size_t j = 0; j < n; ++j) {
+        const auto& f = facet_at(first_flat, j);
         if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved) != Sign::Positive) {
+          first_flat = index_at(first_flat, j);
           valid = false;
           break;
         }
       }
-      if (!valid) continue;
-      const Metric3 metric = field ? field(moved) : mesh.metric(v);
-      double after = 0.0;
-      for (const auto& f : facets) {
-        after = std::max(after, quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved, mesh.metric(f[0]),
-                                           mesh.metric(f[1]), mesh.metric(f[2]), metric));
-        if (!(after < before * (1.0 - options.margin))) break;
-      }
-      if (after < before * (1.0 - options.margin)) {
+      if (valid) {
         mesh.set_point(v, moved);
         mesh.set_metric(v, metric);
+        if (s.known)
+          for (const std::uint32_t t : ball) (*s.known)[t] = std::numeric_limits<double>::quiet_NaN();
         return true;
       }
     }
@@ -154,7 +225,8 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
 }  // namespace
 
 bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options) {
-  RelocateScratch s;
+  // The buffers live across calls (the bad tetrahedra ask for thousands of relocations).
+  thread_local RelocateScratch s;
   if (!is_free_vertex(mesh, v, s.ball)) return false;
   return relocate_free_vertex(mesh, v, field, options, s);
 }
@@ -167,6 +239,9 @@ std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relo
   const std::uint32_t nv = mesh.vertex_capacity();
   constexpr int kUnset = std::numeric_limits<int>::min();
   std::vector<double> worst(nv, 0.0);
+  // Q_K of every tetrahedron, as the classification computes it; a relocation forgets its
+  // ball's, and the next ball that needs one computes it again.
+  std::vector<double> known(mesh.tetrahedron_capacity(), std::numeric_limits<double>::quiet_NaN());
   std::vector<int> ref(nv, kUnset);
   std::vector<std::uint8_t> locked(nv, 0);
   for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
@@ -174,6 +249,7 @@ std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relo
     const auto tv = mesh.tetrahedron(t);
     const bool domain = mesh.in_domain(t);
     const double q = domain ? tetrahedron_quality(mesh, t) : 0.0;
+    if (domain) known[t] = q;
     const int r = domain ? mesh.ref(t) : 0;
     for (std::uint32_t i = 0; i < 4; ++i) {
       const std::uint32_t w = tv[i];
@@ -205,6 +281,7 @@ std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relo
   });
   std::uint64_t moved = 0;
   RelocateScratch s;
+  s.known = &known;
   // Mesh3::ball's breadth-first search, in its order (the sums over the ball keep their bits),
   // with a stamp per tetrahedron for "seen" instead of a search of the list.
   std::vector<std::uint32_t> seen(mesh.tetrahedron_capacity(), 0);

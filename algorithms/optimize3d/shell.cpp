@@ -22,7 +22,11 @@ using namespace optimize3d_detail;
 bool optimize3d_detail::shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin,
                                              std::vector<std::uint32_t>* created, std::uint32_t hint,
                                              QualityCache* cache) {
-  std::vector<std::uint32_t> shell, ring;
+  // The buffers live across calls: the swap pass asks for hundreds of thousands of shells,
+  // nearly all refused, and their allocations cost as much as the dynamic program.
+  thread_local std::vector<std::uint32_t> shell, ring, slots;
+  thread_local std::vector<NewTetrahedron> fresh;
+  thread_local std::vector<std::array<std::uint32_t, 2>> chords, stack;
   if (!is_free_edge(mesh, a, b, shell, ring, hint)) return false;
   const std::uint32_t n = static_cast<std::uint32_t>(ring.size());
   if (n < 3 || n > kMaxShellSize) return false;
@@ -58,9 +62,9 @@ bool optimize3d_detail::shell_transformation(Mesh3& mesh, std::uint32_t a, std::
     }
   }
   if (!(best[0][n - 1] < bound)) return false;
-  std::vector<NewTetrahedron> fresh;
-  std::vector<std::array<std::uint32_t, 2>> chords;
-  std::vector<std::array<std::uint32_t, 2>> stack{{0, n - 1}};
+  fresh.clear();
+  chords.clear();
+  stack.assign(1, {0, n - 1});
   const int ref = mesh.ref(shell.front());
   while (!stack.empty()) {
     const auto [i, k] = stack.back();
@@ -78,7 +82,6 @@ bool optimize3d_detail::shell_transformation(Mesh3& mesh, std::uint32_t a, std::
   // not in convex position: the tetrahedra are then positive but overlap a neighbour).
   for (const auto& c : chords)
     if (mesh.find_edge(c[0], c[1]) != Mesh3::kNone) return false;
-  std::vector<std::uint32_t> slots;
   replace_tetrahedra(mesh, shell, fresh, slots);
   if (created) *created = slots;
   return true;

@@ -85,9 +85,9 @@ std::uint32_t split_edge(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const Me
         orient3d(mesh.point(a), m, mesh.point(c), mesh.point(d)) != Sign::Positive)
       return Mesh3::kNone;
     after = std::max({after,
-                      quality_in(m, mesh.point(b), mesh.point(c), mesh.point(d), mm, mesh.metric(b), mesh.metric(c),
+                      positive_quality_in(m, mesh.point(b), mesh.point(c), mesh.point(d), mm, mesh.metric(b), mesh.metric(c),
                                  mesh.metric(d)),
-                      quality_in(mesh.point(a), m, mesh.point(c), mesh.point(d), mesh.metric(a), mm, mesh.metric(c),
+                      positive_quality_in(mesh.point(a), m, mesh.point(c), mesh.point(d), mesh.metric(a), mm, mesh.metric(c),
                                  mesh.metric(d))});
   }
   if (after > std::max(before, options.quality_limit)) return Mesh3::kNone;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "kernel/constructions.hpp"
@@ -101,6 +102,45 @@ RC_GTEST_PROP(Circumcircle, CentreIsEquidistant3d, ()) {
   const Vec3 m = circumcenter(a, b, c, d);
   const double r = circumradius(a, b, c, d);
   for (const Vec3& p : {a, b, c, d}) RC_ASSERT(close(norm(m - p), r, 1e-12));
+}
+
+// FacetQuality3 prepares the facet's terms once: the same value as shape_quality_nonflat, bit for
+// bit (optimize3d's relocation relies on it for identical results), flat apexes included.
+RC_GTEST_PROP(FacetQuality3, SameBitsAsShapeQualityNonflat, ()) {
+  const Vec3 a{*gen_unit(), *gen_unit(), *gen_unit()}, b{*gen_unit(), *gen_unit(), *gen_unit()};
+  const Vec3 c{*gen_unit(), *gen_unit(), *gen_unit()};
+  const FacetQuality3 facet(a, b, c);
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 d{*gen_unit(), *gen_unit(), *gen_unit()};
+    const double want = shape_quality_nonflat(a, b, c, d), got = facet.with_apex(d);
+    RC_ASSERT(std::memcmp(&want, &got, sizeof want) == 0);
+  }
+  const double flat = facet.with_apex(0.25 * a + 0.75 * b);
+  const double want_flat = shape_quality_nonflat(a, b, c, 0.25 * a + 0.75 * b);
+  RC_ASSERT(std::memcmp(&want_flat, &flat, sizeof flat) == 0);
+}
+
+// FacetQuality3::below filters with cheaper square roots: the same answer as with_apex < bound,
+// bounds at the value itself and one ulp either side included.
+RC_GTEST_PROP(FacetQuality3, BelowAgreesWithWithApex, ()) {
+  const Vec3 a{*gen_unit(), *gen_unit(), *gen_unit()}, b{*gen_unit(), *gen_unit(), *gen_unit()};
+  const Vec3 c{*gen_unit(), *gen_unit(), *gen_unit()}, d{*gen_unit(), *gen_unit(), *gen_unit()};
+  const FacetQuality3 facet(a, b, c);
+  const double q = facet.with_apex(d);
+  const double scale = *rc::gen::element(0.5, 0.999, 1.0, 1.001, 2.0);
+  for (const double bound : {q, std::nextafter(q, 0.0), std::nextafter(q, kInf), scale * q, kInf, 0.0})
+    RC_ASSERT(facet.below(d, bound) == (q < bound));
+}
+
+// shape_quality_clearly_at_least never says yes where the value lies below the bound.
+RC_GTEST_PROP(ShapeQuality3, ClearlyAtLeastOnlyWhenAtLeast, ()) {
+  const Vec3 a{*gen_unit(), *gen_unit(), *gen_unit()}, b{*gen_unit(), *gen_unit(), *gen_unit()};
+  const Vec3 c{*gen_unit(), *gen_unit(), *gen_unit()}, d{*gen_unit(), *gen_unit(), *gen_unit()};
+  const double q = shape_quality_nonflat(a, b, c, d);
+  const double scale = *rc::gen::element(0.5, 0.999, 1.0, 1.001, 2.0);
+  for (const double bound : {q, std::nextafter(q, 0.0), std::nextafter(q, kInf), scale * q, 0.0})
+    if (shape_quality_clearly_at_least(a, b, c, d, bound)) RC_ASSERT(q >= bound);
+  RC_ASSERT(shape_quality_clearly_at_least(a, b, c, d, 0.5 * q) == (q > 0.0 && std::isfinite(q)));
 }
 
 TEST(Inradius, KnownValues) {
