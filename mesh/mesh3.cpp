@@ -42,7 +42,7 @@ bool reversed_facets(const std::array<std::uint32_t, 3>& f, const std::array<std
 
 // Local indices k, l completing i, j so that (i, j, k, l) is an even permutation of (0, 1, 2, 3):
 // (v_i, v_j, v_k, v_l) is then positive like the tetrahedron.
-std::array<std::uint32_t, 2> complete_even(std::uint32_t i, std::uint32_t j) noexcept {
+constexpr std::array<std::uint32_t, 2> complete_even(std::uint32_t i, std::uint32_t j) noexcept {
   std::uint32_t k = 0;
   while (k == i || k == j) ++k;
   std::uint32_t l = 6 - i - j - k;
@@ -61,14 +61,7 @@ constexpr std::array<std::array<std::array<std::uint8_t, 2>, 4>, 4> kCompleteEve
   for (std::uint32_t i = 0; i < 4; ++i)
     for (std::uint32_t j = 0; j < 4; ++j) {
       if (i == j) continue;
-      std::uint32_t k = 0;
-      while (k == i || k == j) ++k;
-      std::uint32_t l = 6 - i - j - k;
-      const std::uint32_t p[4] = {i, j, k, l};
-      int inversions = 0;
-      for (int x = 0; x < 4; ++x)
-        for (int y = x + 1; y < 4; ++y) inversions += p[x] > p[y];
-      if (inversions % 2) std::swap(k, l);
+      const auto [k, l] = complete_even(i, j);
       table[i][j] = {static_cast<std::uint8_t>(k), static_cast<std::uint8_t>(l)};
     }
   return table;

@@ -23,12 +23,7 @@ while (($#)); do
   esac
   shift
 done
-if [[ -z $dtlab ]]; then
-  build="${BUILD_DIR:-build}"
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$build" -j"$(nproc)" --target dtlab_cli >/dev/null
-  dtlab="$build/dtlab"
-fi
+source papers/build_dtlab.sh
 
 fail() { echo "book_2_7: FAILED: $*" >&2; exit 1; }
 field() { sed -n "s/.*\"$1\":\([^,}]*\).*/\1/p" <<<"$2"; }

@@ -22,11 +22,6 @@ while (($#)); do
   esac
   shift
 done
-if [[ -z $dtlab ]]; then
-  build="${BUILD_DIR:-build}"
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$build" -j"$(nproc)" --target dtlab_cli >/dev/null
-  dtlab="$build/dtlab"
-fi
+source papers/build_dtlab.sh
 command -v tetgen >/dev/null || { echo "book_7_13: FAILED: no tetgen on PATH (apt-get install tetgen)" >&2; exit 1; }
 exec python3 papers/book_7_13/report.py --dtlab "$dtlab" "${args[@]}"
