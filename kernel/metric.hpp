@@ -46,6 +46,8 @@ struct Metric2 {
     return std::sqrt(std::max(0.0, q));  // q >= 0 up to rounding for a positive definite m
   }
   double determinant() const noexcept { return m[0] * m[2] - m[1] * m[1]; }
+  // m = lambda I exactly (isotropic): lengths in m are a scaling of Euclidean ones.
+  bool is_scalar() const noexcept { return m[1] == 0.0 && m[0] == m[2]; }
   // Strictly positive definite with finite components (m11 > 0, det > 0, checked in doubles).
   bool is_positive_definite() const noexcept;
 
@@ -70,6 +72,10 @@ struct Metric3 {
     // | b c e |
     // | d e f |
     return a * (c * f - e * e) - b * (b * f - e * d) + d * (b * e - c * d);
+  }
+  // m = lambda I exactly (isotropic): lengths in m are a scaling of Euclidean ones.
+  bool is_scalar() const noexcept {
+    return m[1] == 0.0 && m[3] == 0.0 && m[4] == 0.0 && m[0] == m[2] && m[0] == m[5];
   }
   bool is_positive_definite() const noexcept;
 

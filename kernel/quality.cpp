@@ -97,37 +97,47 @@ double FacetQuality3::with_apex(const Vec3& d) const noexcept {
   return kQualityAlpha3d * h_max * twice_area / six_volume;
 }
 
+namespace {
+
+// The two quality filters below: squares whose roots stay within a few ulps of hypot's norms,
+// and the relative margin that clears that difference by far.
+constexpr double kLowSquare = 1e-200;  // above it, squared areas are normal numbers
+constexpr double kClear = 1e-12;
+
+// Q_K of the tetrahedron with edges ba, ca, da (from a) and cb, db (from b), the first facet's
+// twice-area given, from the square roots of the rounded squared norms instead of hypot; NaN
+// outside the range where those squares keep their relative precision (squared edges within
+// [1e-140, 1e140] keep the squared areas below 1e280), so that every comparison with it fails.
+double quality_from_squares(double s_max, double area_abc, const Vec3& ba, const Vec3& ca, const Vec3& da,
+                            const Vec3& cb, const Vec3& db) noexcept {
+  const Vec3 n1 = cross(ba, da), n2 = cross(ca, da), n3 = cross(cb, db);
+  const double q1 = dot(n1, n1), q2 = dot(n2, n2), q3 = dot(n3, n3);
+  const double six_volume = std::fabs(dot(ba, cross(ca, da)));
+  if (!(s_max > 1e-140 && s_max < 1e140 && q1 > kLowSquare && q2 > kLowSquare && q3 > kLowSquare &&
+        six_volume > 0.0))
+    return std::numeric_limits<double>::quiet_NaN();
+  const double twice_area = area_abc + std::sqrt(q1) + std::sqrt(q2) + std::sqrt(q3);
+  return kQualityAlpha3d * std::sqrt(s_max) * twice_area / six_volume;
+}
+
+}  // namespace
+
 bool shape_quality_clearly_at_least(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double bound) noexcept {
   const Vec3 ba = b - a, ca = c - a, da = d - a, cb = c - b, db = d - b, dc = d - c;
   const double s_max = std::max({dot(ba, ba), dot(ca, ca), dot(da, da), dot(cb, cb), dot(db, db), dot(dc, dc)});
-  const Vec3 n0 = cross(ba, ca), n1 = cross(ba, da), n2 = cross(ca, da), n3 = cross(cb, db);
-  const double q0 = dot(n0, n0), q1 = dot(n1, n1), q2 = dot(n2, n2), q3 = dot(n3, n3);
-  const double six_volume = std::fabs(dot(ba, cross(ca, da)));
-  // As in FacetQuality3::below: squares in the range where their roots are within a few ulps.
-  constexpr double kLow = 1e-200;
-  if (!(s_max > 1e-140 && s_max < 1e140 && q0 > kLow && q1 > kLow && q2 > kLow && q3 > kLow && six_volume > 0.0))
-    return false;
-  const double twice_area = std::sqrt(q0) + std::sqrt(q1) + std::sqrt(q2) + std::sqrt(q3);
-  return kQualityAlpha3d * std::sqrt(s_max) * twice_area / six_volume > bound * (1.0 + 1e-12);
+  const Vec3 n0 = cross(ba, ca);
+  const double q0 = dot(n0, n0);
+  if (!(q0 > kLowSquare)) return false;
+  return quality_from_squares(s_max, std::sqrt(q0), ba, ca, da, cb, db) > bound * (1.0 + kClear);
 }
 
 bool FacetQuality3::below(const Vec3& d, double bound) const noexcept {
   const Vec3 da = d - a_, db = d - b_, dc = d - c_;
   const double s_max = std::max({s_ba_, s_ca_, s_cb_, dot(da, da), dot(db, db), dot(dc, dc)});
-  const Vec3 n1 = cross(ba_, da), n2 = cross(ca_, da), n3 = cross(cb_, db);
-  const double q1 = dot(n1, n1), q2 = dot(n2, n2), q3 = dot(n3, n3);
-  const double six_volume = std::fabs(dot(ba_, cross(ca_, da)));
-  // Squared edges within [1e-140, 1e140] keep the squared areas below 1e280; squared areas
-  // above 1e-200 are normal numbers: each square root within a few ulps of hypot's norm.
-  constexpr double kLow = 1e-200;
-  if (!(s_max > 1e-140 && s_max < 1e140 && q1 > kLow && q2 > kLow && q3 > kLow && six_volume > 0.0))
-    return with_apex(d) < bound;
-  const double twice_area = area_abc_ + std::sqrt(q1) + std::sqrt(q2) + std::sqrt(q3);
-  const double q = kQualityAlpha3d * std::sqrt(s_max) * twice_area / six_volume;
-  constexpr double kClear = 1e-12;
+  const double q = quality_from_squares(s_max, area_abc_, ba_, ca_, da, cb_, db);
   if (q < bound * (1.0 - kClear)) return true;
   if (q > bound * (1.0 + kClear)) return false;
-  return with_apex(d) < bound;
+  return with_apex(d) < bound;  // too close to call, or out of the filter's range (NaN)
 }
 
 namespace {

@@ -12,7 +12,6 @@ namespace dtlab {
 
 namespace {
 
-bool is_isotropic(const Metric2& m) noexcept { return m.m[1] == 0.0 && m.m[0] == m.m[2]; }
 
 template <class T>
 void grow_to(std::vector<T>& v, std::size_t n) {
@@ -81,7 +80,7 @@ void DelaunayKernel2::grow(std::uint32_t seed, const Vec2& p) {
 
 bool DelaunayKernel2::find_cavity(const Vec2& p, const Metric2& mp, std::uint32_t seed) {
   DTLAB_ASSERT(mesh_.in_domain(seed));
-  isotropic_ = is_isotropic(mp);
+  isotropic_ = mp.is_scalar();
   if (!isotropic_) sqrt_m_ = power(mp, 0.5);
   stamp_grow();
   ++exclusion_stamp_;

@@ -12,10 +12,6 @@ namespace dtlab {
 
 namespace {
 
-bool is_isotropic(const Metric3& m) noexcept {
-  return m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[2] == m.m[5];
-}
-
 template <class T>
 void grow_to(std::vector<T>& v, std::size_t n) {
   if (v.size() < n) v.resize(std::max(n, v.size() + v.size() / 2), 0);
@@ -108,7 +104,7 @@ std::uint32_t DelaunayKernel3::find_offender(std::uint32_t seed, const Vec3& p) 
 
 bool DelaunayKernel3::find_cavity(const Vec3& p, const Metric3& mp, std::uint32_t seed) {
   DTLAB_ASSERT(mesh_.in_domain(seed));
-  isotropic_ = is_isotropic(mp);
+  isotropic_ = mp.is_scalar();
   if (!isotropic_) sqrt_m_ = power(mp, 0.5);
   grow_to(mark_, mesh_.tetrahedron_capacity());
   grow_to(excluded_, mesh_.tetrahedron_capacity());

@@ -20,23 +20,16 @@ bool positive(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t
   return orient3d(mesh.point(a), mesh.point(b), mesh.point(c), mesh.point(d)) == Sign::Positive;
 }
 
-namespace {
-
-bool isotropic(const Metric3& m) noexcept {
-  return m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[0] == m.m[5];
-}
-
-}  // namespace
 
 double quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma, const Metric3& mb,
                   const Metric3& mc, const Metric3& md) noexcept {
-  if (isotropic(ma) && isotropic(mb) && isotropic(mc) && isotropic(md)) return shape_quality(a, b, c, d);
+  if (ma.is_scalar() && mb.is_scalar() && mc.is_scalar() && md.is_scalar()) return shape_quality(a, b, c, d);
   return shape_quality(a, b, c, d, ma, mb, mc, md);
 }
 
 double positive_quality_in(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
                            const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept {
-  if (isotropic(ma) && isotropic(mb) && isotropic(mc) && isotropic(md)) return shape_quality_nonflat(a, b, c, d);
+  if (ma.is_scalar() && mb.is_scalar() && mc.is_scalar() && md.is_scalar()) return shape_quality_nonflat(a, b, c, d);
   return shape_quality_nonflat(a, b, c, d, ma, mb, mc, md);
 }
 
@@ -50,7 +43,8 @@ double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::u
                      double bound) noexcept {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const Vec3 &pa = mesh.point(a), &pb = mesh.point(b), &pc = mesh.point(c), &pd = mesh.point(d);
-  if (isotropic(mesh.metric(a)) && isotropic(mesh.metric(b)) && isotropic(mesh.metric(c)) && isotropic(mesh.metric(d))) {
+  if (mesh.metric(a).is_scalar() && mesh.metric(b).is_scalar() && mesh.metric(c).is_scalar() &&
+      mesh.metric(d).is_scalar()) {
     // Most candidates of a shell or a face swap lie far above the bound: refused by the filter
     // before the exact orientation and the hypot-based value (+inf either way).
     if (shape_quality_clearly_at_least(pa, pb, pc, pd, bound) || !positive(mesh, a, b, c, d)) return kInf;

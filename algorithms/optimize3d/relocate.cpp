@@ -42,7 +42,7 @@ class MetricRoots {
     if (valid_ && m.m == metric_.m) return;
     // m = lambda I: power() decomposes nothing (no rotation, unit eigenvectors) and gives
     // pow(lambda, p) I exactly; the same values without the eigen-decomposition.
-    const bool isotropic = m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[0] == m.m[5];
+    const bool isotropic = m.is_scalar();
     auto scalar = [](double l) { return Metric3{{l, 0.0, l, 0.0, 0.0, l}}; };
     root = isotropic ? scalar(std::pow(m.m[0], 0.5)) : power(m, 0.5);
     inverse_root = isotropic ? scalar(std::pow(m.m[0], -0.5)) : power(m, -0.5);
@@ -123,10 +123,6 @@ struct RelocateScratch {
   std::vector<double>* known = nullptr;
 };
 
-bool isotropic(const Metric3& m) noexcept {
-  return m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[0] == m.m[5];
-}
-
 // try_relocate3 for a vertex whose ball is in s.ball (v free: is_free_vertex held).
 bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options,
                           RelocateScratch& s) {
@@ -165,9 +161,6 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
   // facets may be tested in any order: the one that refused the last candidate (a shorter step
   // toward the same target is usually refused by the same one) first, then the others in order.
   std::size_t first_flat = 0, first_worse = 0;
-  auto facet_at = [&](std::size_t first, std::size_t k) -> const std::array<std::uint32_t, 3>& {
-    return facets[k == 0 ? first : (k <= first ? k - 1 : k)];
-  };
   auto index_at = [](std::size_t first, std::size_t k) { return k == 0 ? first : (k <= first ? k - 1 : k); };
   s.prepared.resize(n);
   s.state.assign(n, 0);
@@ -178,7 +171,7 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
       const Vec3 moved = (1.0 - w) * p + w * target;
       if (moved == p) break;
       const Metric3 metric = field ? field(moved) : mesh.metric(v);
-      const bool euclidean = isotropic(metric);
+      const bool euclidean = metric.is_scalar();
       // The quality bound first, then the exact orientations: most candidates fail the bound
       // (early, on the facet that refused the last one), and a candidate is kept only when both
       // hold, so the order changes no decision. Q_K without the flatness test, as
@@ -190,7 +183,7 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
         const std::size_t i = index_at(first_worse, j);
         const auto& f = facets[i];
         if (s.state[i] == 0) {
-          const bool iso = isotropic(mesh.metric(f[0])) && isotropic(mesh.metric(f[1])) && isotropic(mesh.metric(f[2]));
+          const bool iso = mesh.metric(f[0]).is_scalar() && mesh.metric(f[1]).is_scalar() && mesh.metric(f[2]).is_scalar();
           if (iso) s.prepared[i] = FacetQuality3(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]));
           s.state[i] = iso ? 1 : 2;
         }
@@ -203,7 +196,7 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
       if (!better) continue;
       bool valid = true;
       for (std::size_t j = 0; j < n; ++j) {
-        const auto& f = facet_at(first_flat, j);
+        const auto& f = facets[index_at(first_flat, j)];
         if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved) != Sign::Positive) {
           first_flat = index_at(first_flat, j);
           valid = false;
