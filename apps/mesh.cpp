@@ -35,6 +35,7 @@ struct MeshArgs {
   std::string interpolation = "sizes";
   bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
   bool remove_cavities = false;  // surfaces only (apps/mesh3.cpp)
+  std::string optimize = "standard";  // surfaces only: the effort (optimize3d_effort)
 };
 
 // A uniform size: the box of the input, enlarged by 1 on each side.
@@ -65,7 +66,7 @@ int run_mesh(const MeshArgs& args) {
                       .size_map = args.size_map, .metric = args.metric, .background = args.background,
                       .method = args.method, .interpolation = args.interpolation, .no_optimize = args.no_optimize,
                       .stats = args.stats, .verify = args.verify, .resample_boundary = args.resample_boundary,
-                      .remove_cavities = args.remove_cavities});
+                      .remove_cavities = args.remove_cavities, .optimize = args.optimize});
   }
   const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
   if (given > 1) throw InputError("give one of --size, --size-map, --metric");
@@ -173,6 +174,10 @@ void add_mesh(CLI::App& app) {
   cmd->add_flag("--resample-boundary", args->resample_boundary,
                 "Cut the input segments anew in the size or metric given (default: they are the boundary discretisation)");
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the optimization step");
+  cmd->add_option("--optimize", args->optimize,
+                  "Closed surfaces: the optimization effort: light (one round), standard (rounds until Q_K <= 3 and "
+                  "dihedral angles in [20, 150] deg, or no more gain; the default), thorough (rounds until no gain)")
+      ->check(CLI::IsMember({"light", "standard", "thorough"}));
   cmd->add_flag("--remove-cavities", args->remove_cavities,
                 "Closed surfaces: drop the regions bounded only by shells nested inside another (a cube minus a ball)");
   cmd->add_flag("--stats", args->stats, "Print the quality table and one JSON object (counts, phases, quality) last");

@@ -14,6 +14,7 @@ struct Mesh3CliArgs {
   std::string interpolation = "sizes";
   bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
   bool remove_cavities = false;  // Mesh3dOptions::remove_cavities
+  std::string optimize = "standard";  // the effort: optimize3d_effort (optimize3d.hpp)
 };
 
 // Returns the exit status: 0 success, 3 --verify failed. Throws InputError for bad input.

@@ -70,6 +70,30 @@ double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const 
   return kQualityAlpha3d * h_max * twice_area / six_volume;
 }
 
+std::array<double, 2> dihedral_cosine_range(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  // Outward normals of the faces opposite a, b, c, d: each turned away from its vertex.
+  const std::array<Vec3, 4> p{a, b, c, d};
+  std::array<Vec3, 4> n;
+  std::array<double, 4> length;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3& x = p[(i + 1) & 3];
+    const Vec3& y = p[(i + 2) & 3];
+    const Vec3& z = p[(i + 3) & 3];
+    Vec3 m = cross(y - x, z - x);
+    if (dot(m, p[i] - x) > 0.0) m = -1.0 * m;
+    n[i] = m;
+    length[i] = norm(m);
+  }
+  double lo = 1.0, hi = -1.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const double c_ij = -dot(n[i], n[j]) / (length[i] * length[j]);
+      lo = std::min(lo, c_ij);
+      hi = std::max(hi, c_ij);
+    }
+  return {lo, hi};
+}
+
 FacetQuality3::FacetQuality3(const Vec3& a, const Vec3& b, const Vec3& c) noexcept
     : a_(a), b_(b), c_(c), ba_(b - a), ca_(c - a), cb_(c - b) {
   s_ba_ = dot(ba_, ba_);

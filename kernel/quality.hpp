@@ -5,6 +5,8 @@
 // Q = +infinity, and so has a non-flat one whose area or volume computes to zero.
 #pragma once
 
+#include <array>
+
 #include "kernel/metric.hpp"
 #include "kernel/vec.hpp"
 
@@ -57,6 +59,11 @@ class FacetQuality3 {
   double s_ba_ = 0.0, s_ca_ = 0.0, s_cb_ = 0.0;  // squared lengths
   double area_abc_ = 0.0;                        // |ba x ca|
 };
+
+// The cosines of the largest and the smallest of the six interior dihedral angles of a
+// non-flat tetrahedron (Euclidean): {cos of the largest angle, cos of the smallest}. The angle
+// along an edge is pi minus the angle between the outward normals of the two faces at it.
+std::array<double, 2> dihedral_cosine_range(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
 
 // Mean-ratio quality in a metric, as the UGAWG benchmarks measure it (1 = equilateral in M, 0 =
 // flat): 2D 4 sqrt(3) area_M / sum of squared edge lengths in M; 3D 12 (3 vol_M)^(2/3) / sum of

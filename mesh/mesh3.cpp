@@ -115,6 +115,7 @@ Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_re
   metrics_.assign(n, metric);
   vertex_flags_.assign(n, kFixed);
   vertex_tetrahedron_.assign(n, kNone);
+  changed_at_.assign(n, 0);
   vertices_.resize(4 * nt);
   neighbours_.resize(4 * nt);
   for (std::uint32_t t = 0; t < nt; ++t) {
@@ -177,6 +178,7 @@ std::uint32_t Mesh3::add_vertex(const Vec3& p, const Metric3& m, std::uint8_t fl
     metrics_[v] = m;
     vertex_flags_[v] = flags;
     vertex_tetrahedron_[v] = kNone;
+    touch(v);
     return v;
   }
   DTLAB_ASSERT(points_.size() < Tetrahedralization3::kMaxPoints);
@@ -184,6 +186,7 @@ std::uint32_t Mesh3::add_vertex(const Vec3& p, const Metric3& m, std::uint8_t fl
   metrics_.push_back(m);
   vertex_flags_.push_back(flags);
   vertex_tetrahedron_.push_back(kNone);
+  changed_at_.push_back(epoch_);
   return static_cast<std::uint32_t>(points_.size() - 1);
 }
 
@@ -214,7 +217,10 @@ std::uint32_t Mesh3::add_tetrahedron(std::uint32_t a, std::uint32_t b, std::uint
     vertices_[4 * t + i] = v[i];
     neighbours_[4 * t + i] = kNone;
     facet_refs_[4 * t + i] = kUnconstrained;
-    if (v[i] != kInfinite) vertex_tetrahedron_[v[i]] = t;
+    if (v[i] != kInfinite) {
+      vertex_tetrahedron_[v[i]] = t;
+      touch(v[i]);
+    }
   }
   refs_[t] = r;
   return t;
@@ -222,6 +228,8 @@ std::uint32_t Mesh3::add_tetrahedron(std::uint32_t a, std::uint32_t b, std::uint
 
 void Mesh3::remove_tetrahedron(std::uint32_t t) {
   DTLAB_ASSERT(t < tetrahedron_capacity() && is_alive(t));
+  for (std::uint32_t i = 0; i < 4; ++i)
+    if (vertices_[4 * t + i] != kInfinite) touch(vertices_[4 * t + i]);
   vertices_[4 * t] = kNone;
   free_tetrahedra_.push_back(t);
 }

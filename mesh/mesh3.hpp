@@ -78,8 +78,14 @@ class Mesh3 {
   std::uint8_t flags(std::uint32_t v) const noexcept { return vertex_flags_[v]; }
   bool is_dead_vertex(std::uint32_t v) const noexcept { return (vertex_flags_[v] & kDead) != 0; }
   // Moving a vertex is the caller's responsibility for validity (check orientation first).
-  void set_point(std::uint32_t v, const Vec3& p) noexcept { points_[v] = p; }
-  void set_metric(std::uint32_t v, const Metric3& m) noexcept { metrics_[v] = m; }
+  void set_point(std::uint32_t v, const Vec3& p) noexcept {
+    points_[v] = p;
+    touch(v);
+  }
+  void set_metric(std::uint32_t v, const Metric3& m) noexcept {
+    metrics_[v] = m;
+    touch(v);
+  }
   void set_flags(std::uint32_t v, std::uint8_t f) noexcept { vertex_flags_[v] = f; }
   // One live tetrahedron incident to v (kNone for a dead vertex). Operators keep it current.
   std::uint32_t vertex_tetrahedron(std::uint32_t v) const noexcept { return vertex_tetrahedron_[v]; }
@@ -174,6 +180,18 @@ class Mesh3 {
   };
   Location locate(const Vec3& p, std::uint32_t start, bool stop_at_constraints = false) const;
 
+  // --- Change epochs --------------------------------------------------------------------------
+  // For memos of failed attempts (an operator that failed on a piece of mesh fails again while
+  // the piece is unchanged; algorithms/optimize3d): every vertex carries the epoch of the last
+  // change around it: a tetrahedron holding it added or removed, its position or metric set
+  // (set_point, set_metric). A caller moving v also touches the vertices of v's ball, whose
+  // tetrahedra changed shape. new_epoch() opens an epoch e; v has not changed since e was opened
+  // while changed_at(v) < e.
+  std::uint64_t new_epoch() noexcept { return ++epoch_; }
+  std::uint64_t epoch() const noexcept { return epoch_; }
+  std::uint64_t changed_at(std::uint32_t v) const noexcept { return changed_at_[v]; }
+  void touch(std::uint32_t v) noexcept { changed_at_[v] = epoch_; }
+
   // --- Whole-mesh --------------------------------------------------------------------------------
   // Throws InternalError naming the first problem: links symmetric over the same three vertices
   // in opposite cyclic order, no live tetrahedron on a dead vertex, vertex_tetrahedron current,
@@ -195,6 +213,8 @@ class Mesh3 {
   std::vector<std::uint8_t> vertex_flags_;
   std::vector<std::uint32_t> vertex_tetrahedron_;
   std::vector<std::uint32_t> free_vertices_;
+  std::vector<std::uint64_t> changed_at_;  // per vertex: the epoch of its last change
+  std::uint64_t epoch_ = 0;
 
   std::vector<std::uint32_t> vertices_;    // 4 per tetrahedron; vertices_[4t] == kNone: dead
   std::vector<std::uint32_t> neighbours_;  // 4 per tetrahedron: twin facet handles

@@ -42,7 +42,7 @@ struct Mesh3dOptions {
   // Step 5: the 3D optimization (algorithms/optimize3d, book §8.6's strategy), governed by the
   // control space (moved and new points take their metric from it).
   bool optimize = true;
-  Optimize3dOptions optimization{};
+  Optimize3dOptions optimization = optimize3d_effort("standard");
   // Drop the cavities: regions bounded only by shells nested inside another (a cube minus a
   // ball: the ball's inside), as Constrained3dOptions::remove_cavities.
   bool remove_cavities = false;

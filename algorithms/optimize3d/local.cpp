@@ -98,6 +98,18 @@ bool is_free_edge(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::vect
   return true;
 }
 
+std::uint32_t local_edge(const Mesh3& mesh, std::uint32_t t, std::uint32_t a, std::uint32_t b) noexcept {
+  // kEdgeOf[i][j]: the index of edge ij.
+  static constexpr std::uint32_t kEdgeOf[4][4] = {{6, 0, 1, 2}, {0, 6, 3, 4}, {1, 3, 6, 5}, {2, 4, 5, 6}};
+  std::uint32_t i = 4, j = 4;
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    if (mesh.vertex(t, k) == a) i = k;
+    if (mesh.vertex(t, k) == b) j = k;
+  }
+  DTLAB_ASSERT(i < 4 && j < 4 && i != j);
+  return kEdgeOf[i][j];
+}
+
 bool is_free_vertex(const Mesh3& mesh, std::uint32_t v, std::vector<std::uint32_t>& ball) {
   if (v >= mesh.vertex_capacity() || mesh.is_dead_vertex(v)) return false;
   if ((mesh.flags(v) & (Mesh3::kFixed | Mesh3::kOnBoundary)) != 0) return false;

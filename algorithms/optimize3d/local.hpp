@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "algorithms/optimize3d/operators.hpp"
 #include "mesh/mesh3.hpp"
 
 namespace dtlab::optimize3d_detail {
@@ -95,17 +96,58 @@ class QualityCache {
   std::vector<double> value_;
 };
 
-// The operators with their "before" Q_K read from `cache` (null: computed).
+// Failed attempts remembered by slot (a vertex; a tetrahedron slot's edge, 6 t + k), each as the
+// Mesh3 epoch opened when it failed (Mesh3::new_epoch): an attempt fails again, to the bit, while
+// nothing it reads has changed since (Mesh3::changed_at below that epoch), so it is skipped. The
+// epochs are kept as 32-bit offsets from the one the memo began at, all forgotten at once before
+// they would overflow. A slot reused by a new tetrahedron needs no care: creating it touched its
+// vertices.
+class EpochMemo {
+ public:
+  explicit EpochMemo(const Mesh3& mesh) : base_(mesh.epoch()) {}
+  // Whether slot i failed at an epoch after `changed` (the last change to what the attempt reads).
+  bool failed_since(std::size_t i, std::uint64_t changed) const noexcept {
+    return i < at_.size() && at_[i] != 0 && changed < base_ + at_[i];
+  }
+  void record(std::size_t i, std::uint64_t epoch) {
+    if (epoch - base_ > 0xFFFFFFFFull) {
+      std::fill(at_.begin(), at_.end(), 0u);
+      base_ = epoch - 1;
+    }
+    if (i >= at_.size()) at_.resize(std::max(i + 1, at_.size() + at_.size() / 2), 0u);
+    at_[i] = static_cast<std::uint32_t>(epoch - base_);
+  }
+
+ private:
+  std::uint64_t base_;
+  std::vector<std::uint32_t> at_;
+};
+
+// The memos of one optimize3d run: relocations by vertex, shell transformations by edge of a
+// tetrahedron slot.
+struct AttemptMemo {
+  explicit AttemptMemo(const Mesh3& mesh) : relocation(mesh), shell(mesh) {}
+  EpochMemo relocation, shell;
+};
+
+// The local index (0..5, kEdges order: 01 02 03 12 13 23) of edge ab in tetrahedron t.
+std::uint32_t local_edge(const Mesh3& mesh, std::uint32_t t, std::uint32_t a, std::uint32_t b) noexcept;
+
+// The operators with their "before" Q_K read from `cache` (null: computed) and, for the shell
+// transformation, failures remembered in `memo` (null: none; needs `hint`).
 bool face_swap(Mesh3& mesh, std::uint32_t h, double margin, std::vector<std::uint32_t>* created, QualityCache* cache);
 bool shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin,
-                          std::vector<std::uint32_t>* created, std::uint32_t hint, QualityCache* cache);
+                          std::vector<std::uint32_t>* created, std::uint32_t hint, QualityCache* cache,
+                          EpochMemo* memo = nullptr);
 struct SwapPassResult {
   std::uint64_t face_swaps = 0;
   std::uint64_t shell_transformations = 0;
   bool limit_reached = false;
 };
 SwapPassResult swap_pass(Mesh3& mesh, double margin, std::span<const std::uint32_t> seeds, double threshold,
-                         QualityCache& cache);
+                         QualityCache& cache, AttemptMemo* memo = nullptr);
+// relocate_sweep3, skipping the vertices `memo` knows will fail (null: none).
+std::uint64_t relocate_sweep(Mesh3& mesh, const MetricField3& field, const Relocate3Options& options, AttemptMemo* memo);
 
 // The worst Q_K of a set of live tetrahedra / of candidates.
 double worst_quality(const Mesh3& mesh, std::span<const std::uint32_t> tetrahedra) noexcept;

@@ -26,6 +26,12 @@ namespace dtlab {
 struct Optimize3dOptions {
   std::uint32_t max_rounds = 6;
   double round_improvement = 1e-3;
+  // A goal (0: not asked): the rounds stop after the first one whose mesh has no Q_K above
+  // goal_worst_quality, no dihedral angle below goal_min_dihedral_deg and none above
+  // goal_max_dihedral_deg (Euclidean, degrees), whatever the improvement.
+  double goal_worst_quality = 0.0;
+  double goal_min_dihedral_deg = 0.0;
+  double goal_max_dihedral_deg = 0.0;
   // Tetrahedra worse than this are treated one by one, worst first, at the start of each round.
   double bad_quality = 3.0;
   bool swaps = true;
@@ -40,6 +46,10 @@ struct Optimize3dOptions {
   // vertex (an edge split and the new vertex relocated, judged as one move; strategy.cpp).
   bool interior_vertices = true;
   double margin = kImprovementMargin3;
+  // Skip the shell transformations and relocations known to fail again (their piece of mesh
+  // unchanged since they failed: Mesh3's change epochs). The same result either way, bit for
+  // bit; off only to check that.
+  bool remember_failures = true;
   Relocate3Options relocate{};
   Collapse3Options collapse{};
   Split3Options split{};
@@ -58,7 +68,7 @@ struct Optimize3dStats {
   double worst_after = 0.0, mean_after = 0.0;
   std::uint64_t tetrahedra_before = 0, tetrahedra_after = 0;  // in the domain
   std::uint64_t vertices_before = 0, vertices_after = 0;      // live
-  // "converged", "max_rounds", "swap_limit" or "vertex_limit".
+  // "converged", "goal", "max_rounds", "swap_limit" or "vertex_limit".
   std::string stopped_by;
   double seconds = 0.0;
 };
@@ -67,8 +77,16 @@ struct QualitySummary3 {
   double worst = 0.0;
   double mean = 0.0;  // over the finite values
   std::uint64_t tetrahedra = 0;
+  double min_dihedral_deg = 180.0, max_dihedral_deg = 0.0;  // Euclidean
 };
 QualitySummary3 summarize_quality(const Mesh3& mesh);
+
+// The effort levels of `dtlab mesh --optimize LEVEL` (throws InputError on another name):
+//   light     one round;
+//   standard  rounds until the goal Q_K <= 3 (the book's bad-element threshold, §8.6), dihedral
+//             angles in [20, 150] degrees is met, or until they no longer improve (at most 6);
+//   thorough  rounds until the worst and the mean Q_K no longer improve (at most 6: the defaults).
+Optimize3dOptions optimize3d_effort(const std::string& level);
 
 // Optimizes `mesh` in place; `field` is the control space (empty: vertices keep their metrics,
 // new vertices interpolate them). The mesh passes Mesh3::check() afterwards; no constrained facet

@@ -206,6 +206,9 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
       if (valid) {
         mesh.set_point(v, moved);
         mesh.set_metric(v, metric);
+        // Every tetrahedron of the ball changed shape (Mesh3's change epochs).
+        for (const std::uint32_t t : ball)
+          for (std::uint32_t i = 0; i < 4; ++i) mesh.touch(mesh.vertex(t, i));
         if (s.known)
           for (const std::uint32_t t : ball) (*s.known)[t] = std::numeric_limits<double>::quiet_NaN();
         return true;
@@ -225,6 +228,11 @@ bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, cons
 }
 
 std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relocate3Options& options) {
+  return relocate_sweep(mesh, field, options, nullptr);
+}
+
+std::uint64_t optimize3d_detail::relocate_sweep(Mesh3& mesh, const MetricField3& field, const Relocate3Options& options,
+                                                AttemptMemo* memo) {
   // Worst ball first (ties by vertex id): the classification of §8.6. One pass over the
   // tetrahedra gives every vertex's worst Q_K and what is_free_vertex asks of its ball (every
   // tetrahedron at it in the domain, with one reference, no constrained facet at it); the ball
@@ -282,6 +290,8 @@ std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relo
   for (const auto& entry : order) {
     // Relocation changes no topology: the vertex is still free; its ball is fetched once.
     const std::uint32_t v = entry.second;
+    // Its ball (topology, positions, metrics) unchanged since it failed: it fails again.
+    if (memo && memo->relocation.failed_since(v, mesh.changed_at(v))) continue;
     ++stamp;
     s.ball.clear();
     const std::uint32_t t0 = mesh.vertex_tetrahedron(v);
@@ -297,7 +307,11 @@ std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relo
         s.ball.push_back(u);
       }
     }
-    moved += relocate_free_vertex(mesh, entry.second, field, options, s) ? 1 : 0;
+    if (relocate_free_vertex(mesh, v, field, options, s)) {
+      ++moved;
+    } else if (memo) {
+      memo->relocation.record(v, mesh.new_epoch());
+    }
   }
   return moved;
 }

@@ -21,15 +21,32 @@ using namespace optimize3d_detail;
 
 bool optimize3d_detail::shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin,
                                              std::vector<std::uint32_t>* created, std::uint32_t hint,
-                                             QualityCache* cache) {
+                                             QualityCache* cache, EpochMemo* memo) {
   // The buffers live across calls: the swap pass asks for hundreds of thousands of shells,
   // nearly all refused, and their allocations cost as much as the dynamic program.
   thread_local std::vector<std::uint32_t> shell, ring, slots;
   thread_local std::vector<NewTetrahedron> fresh;
   thread_local std::vector<std::array<std::uint32_t, 2>> chords, stack;
-  if (!is_free_edge(mesh, a, b, shell, ring, hint)) return false;
+  // A failure remembered on the hint's edge ab stands while neither a nor b has changed since:
+  // a change to the shell (a tetrahedron at ab added or removed, a vertex of it moved: its ball,
+  // a and b in it, touched) touches both.
+  if (memo && hint != Mesh3::kNone &&
+      memo->failed_since(6 * std::size_t{hint} + local_edge(mesh, hint, a, b),
+                         std::min(mesh.changed_at(a), mesh.changed_at(b))))
+    return false;
+  auto remember = [&](bool whole_shell) {
+    if (!memo) return false;
+    const std::uint64_t epoch = mesh.new_epoch();
+    if (whole_shell) {
+      for (const std::uint32_t t : shell) memo->record(6 * std::size_t{t} + local_edge(mesh, t, a, b), epoch);
+    } else if (hint != Mesh3::kNone) {
+      memo->record(6 * std::size_t{hint} + local_edge(mesh, hint, a, b), epoch);
+    }
+    return false;
+  };
+  if (!is_free_edge(mesh, a, b, shell, ring, hint)) return remember(false);
   const std::uint32_t n = static_cast<std::uint32_t>(ring.size());
-  if (n < 3 || n > kMaxShellSize) return false;
+  if (n < 3 || n > kMaxShellSize) return remember(true);
   const double before = cache ? cache->worst(mesh, shell) : worst_quality(mesh, shell);
   const double bound = before * (1.0 - margin);
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -61,7 +78,7 @@ bool optimize3d_detail::shell_transformation(Mesh3& mesh, std::uint32_t a, std::
       split[i][k] = apex;
     }
   }
-  if (!(best[0][n - 1] < bound)) return false;
+  if (!(best[0][n - 1] < bound)) return remember(true);
   fresh.clear();
   chords.clear();
   stack.assign(1, {0, n - 1});
@@ -89,7 +106,7 @@ bool optimize3d_detail::shell_transformation(Mesh3& mesh, std::uint32_t a, std::
 
 bool try_shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin,
                               std::vector<std::uint32_t>* created, std::uint32_t hint) {
-  return shell_transformation(mesh, a, b, margin, created, hint, nullptr);
+  return shell_transformation(mesh, a, b, margin, created, hint, nullptr, nullptr);
 }
 
 }  // namespace dtlab

@@ -14,19 +14,27 @@
 #include "algorithms/optimize3d/local.hpp"
 #include "algorithms/optimize3d/optimize3d.hpp"
 #include "kernel/error.hpp"
+#include "kernel/quality.hpp"
 
 namespace dtlab {
 
 using optimize3d_detail::edge_length;
 using optimize3d_detail::tetrahedron_quality;
+using optimize3d_detail::QualityCache;
+using optimize3d_detail::SwapPassResult;
 
 QualitySummary3 summarize_quality(const Mesh3& mesh) {
   QualitySummary3 s;
   double sum = 0.0;
   std::uint64_t finite = 0;
+  double lowest_cosine = 1.0, highest_cosine = -1.0;
   for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
     if (!mesh.in_domain(t)) continue;
     const double q = tetrahedron_quality(mesh, t);
+    const auto v = mesh.tetrahedron(t);
+    const auto cosines = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+    lowest_cosine = std::min(lowest_cosine, cosines[0]);
+    highest_cosine = std::max(highest_cosine, cosines[1]);
     ++s.tetrahedra;
     s.worst = std::max(s.worst, q);
     if (std::isfinite(q)) {
@@ -35,6 +43,11 @@ QualitySummary3 summarize_quality(const Mesh3& mesh) {
     }
   }
   s.mean = finite > 0 ? sum / static_cast<double>(finite) : 0.0;
+  constexpr double kDegrees = 57.295779513082320877;  // 180 / pi
+  if (s.tetrahedra > 0) {
+    s.min_dihedral_deg = std::acos(std::clamp(highest_cosine, -1.0, 1.0)) * kDegrees;
+    s.max_dihedral_deg = std::acos(std::clamp(lowest_cosine, -1.0, 1.0)) * kDegrees;
+  }
   return s;
 }
 
@@ -137,6 +150,20 @@ void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const M
 
 }  // namespace
 
+Optimize3dOptions optimize3d_effort(const std::string& level) {
+  Optimize3dOptions o;
+  if (level == "light") {
+    o.max_rounds = 1;
+  } else if (level == "standard") {
+    o.goal_worst_quality = 3.0;
+    o.goal_min_dihedral_deg = 20.0;
+    o.goal_max_dihedral_deg = 150.0;
+  } else if (level != "thorough") {
+    throw InputError("unknown optimization effort '" + level + "' (light, standard, thorough)");
+  }
+  return o;
+}
+
 Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field) {
   const auto start = std::chrono::steady_clock::now();
   Optimize3dStats stats;
@@ -146,6 +173,8 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
   stats.tetrahedra_before = before.tetrahedra;
   stats.vertices_before = mesh.live_vertex_count();
   QualitySummary3 last = before;
+  optimize3d_detail::AttemptMemo memo_storage(mesh);
+  optimize3d_detail::AttemptMemo* memo = options.remember_failures ? &memo_storage : nullptr;
   stats.stopped_by = "max_rounds";
   for (std::uint32_t round = 0; round < options.max_rounds; ++round) {
     poll_interrupt(options.interrupt, "optimize3d: at the start of a round");
@@ -173,7 +202,8 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     }
     poll_interrupt(options.interrupt, "optimize3d: after the collapses and splits");
     if (options.swaps) {
-      const SwapPass3Result r = swap_pass3(mesh, options.margin, {}, options.swap_threshold);
+      QualityCache cache;
+      const SwapPassResult r = optimize3d_detail::swap_pass(mesh, options.margin, {}, options.swap_threshold, cache, memo);
       stats.face_swaps += r.face_swaps;
       stats.shell_transformations += r.shell_transformations;
       if (r.limit_reached) {
@@ -184,7 +214,7 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     poll_interrupt(options.interrupt, "optimize3d: after the swaps");
     if (options.relocation) {
       for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
-        const std::uint64_t moved = relocate_sweep3(mesh, field, options.relocate);
+        const std::uint64_t moved = optimize3d_detail::relocate_sweep(mesh, field, options.relocate, memo);
         stats.relocations += moved;
         if (moved == 0) break;
       }
@@ -194,6 +224,14 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     const bool improved = now.worst < last.worst * keep || now.mean < last.mean * keep;
     last = now;
     if (limit) break;
+    const bool goal_asked =
+        options.goal_worst_quality > 0.0 || options.goal_min_dihedral_deg > 0.0 || options.goal_max_dihedral_deg > 0.0;
+    if (goal_asked && (options.goal_worst_quality <= 0.0 || now.worst <= options.goal_worst_quality) &&
+        now.min_dihedral_deg >= options.goal_min_dihedral_deg &&
+        (options.goal_max_dihedral_deg <= 0.0 || now.max_dihedral_deg <= options.goal_max_dihedral_deg)) {
+      stats.stopped_by = "goal";
+      break;
+    }
     // A few collapses and splits that undo each other around a locked feature do not make a round
     // worth another: under one change per thousand vertices counts as none.
     if (!improved && size_changes * 1000 <= mesh.live_vertex_count()) {

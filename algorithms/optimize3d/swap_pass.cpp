@@ -31,7 +31,7 @@ constexpr std::array<std::array<std::uint32_t, 2>, 6> kEdges{{{0, 1}, {0, 2}, {0
 }  // namespace
 
 SwapPassResult optimize3d_detail::swap_pass(Mesh3& mesh, double margin, std::span<const std::uint32_t> seeds,
-                                            double threshold, QualityCache& cache) {
+                                            double threshold, QualityCache& cache, AttemptMemo* memo) {
   SwapPassResult result;
   std::priority_queue<Entry> queue;
   auto push = [&](std::uint32_t t) {
@@ -62,7 +62,8 @@ SwapPassResult optimize3d_detail::swap_pass(Mesh3& mesh, double margin, std::spa
       }
     }
     for (std::uint32_t k = 0; k < 6 && !changed; ++k) {
-      if (shell_transformation(mesh, e.v[kEdges[k][0]], e.v[kEdges[k][1]], margin, &created, e.t, &cache)) {
+      if (shell_transformation(mesh, e.v[kEdges[k][0]], e.v[kEdges[k][1]], margin, &created, e.t, &cache,
+                               memo ? &memo->shell : nullptr)) {
         ++result.shell_transformations;
         changed = true;
       }

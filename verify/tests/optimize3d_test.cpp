@@ -512,5 +512,95 @@ TEST(Optimize3d, StrategyImprovesARandomMesh) {
   EXPECT_EQ(again.domain(), m.domain());
 }
 
+// The memos of failed attempts (Mesh3's change epochs) skip only what would fail again: the
+// same mesh with and without them, isotropic and anisotropic, and the skips do happen (fewer
+// seconds is not asked of a unit test; the counts are the same by construction).
+TEST(Optimize3d, RememberingFailuresChangesNothing) {
+  for (const bool anisotropic : {false, true}) {
+    const auto field = [anisotropic](const Vec3& p) {
+      return anisotropic ? Metric3{{1.0 / (0.12 * 0.12), 0.0, 1.0 / (0.3 * 0.3), 0.0, 0.0, 1.0 / (0.2 * 0.2 + p.x * 0.01)}}
+                         : Metric3::isotropic(0.15);
+    };
+    auto run = [&](bool remember) {
+      Mesh3 m = delaunay_mesh(cube_points(500, 23));
+      for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) m.set_metric(v, field(m.point(v)));
+      Optimize3dOptions o;
+      o.remember_failures = remember;
+      const Optimize3dStats s = optimize3d(m, o, field);
+      m.check();
+      return std::make_pair(m.domain(), s.relocations + s.shell_transformations + s.face_swaps);
+    };
+    const auto with = run(true), without = run(false);
+    EXPECT_EQ(with.first, without.first) << (anisotropic ? "anisotropic" : "isotropic");
+    EXPECT_EQ(with.second, without.second);
+  }
+}
+
+TEST(Optimize3d, ChangeEpochsTouchWhatChanged) {
+  Mesh3 m = delaunay_mesh(cube_points(50, 5));
+  std::uint32_t t = 0;
+  while (!m.in_domain(t)) ++t;
+  const auto v = m.tetrahedron(t);
+  const std::uint64_t e = m.new_epoch();
+  for (std::uint32_t w = 0; w < m.vertex_capacity(); ++w) EXPECT_LT(m.changed_at(w), e);
+  m.set_point(v[0], m.point(v[0]));
+  EXPECT_GE(m.changed_at(v[0]), e);
+  EXPECT_LT(m.changed_at(v[1]), e);
+  const std::uint64_t f = m.new_epoch();
+  m.set_metric(v[1], m.metric(v[1]));
+  EXPECT_GE(m.changed_at(v[1]), f);
+  EXPECT_LT(m.changed_at(v[2]), f);
+  const std::uint64_t g = m.new_epoch();
+  m.remove_tetrahedron(t);
+  for (const std::uint32_t w : v) EXPECT_GE(m.changed_at(w), g);
+  const std::uint64_t h = m.new_epoch();
+  for (const std::uint32_t w : v) EXPECT_LT(m.changed_at(w), h);
+  m.add_tetrahedron(v[0], v[1], v[2], v[3], 1);
+  for (const std::uint32_t w : v) EXPECT_GE(m.changed_at(w), h);
+}
+
+TEST(Optimize3d, GoalStopsTheRoundsWhereItIsMet) {
+  auto mesh = [] {
+    Mesh3 m = delaunay_mesh(cube_points(400, 11));
+    for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) m.set_metric(v, Metric3::isotropic(0.15));
+    return m;
+  };
+  const auto field = [](const Vec3&) { return Metric3::isotropic(0.15); };
+  Optimize3dOptions o = optimize3d_effort("standard");
+  Mesh3 m = mesh();
+  const Optimize3dStats s = optimize3d(m, o, field);
+  const QualitySummary3 q = summarize_quality(m);
+  if (s.stopped_by == "goal") {
+    EXPECT_LE(q.worst, 3.0);
+    EXPECT_GE(q.min_dihedral_deg, 20.0);
+    EXPECT_LE(q.max_dihedral_deg, 150.0);
+  }
+  // A goal no mesh meets (every dihedral angle above 80 degrees) never stops the rounds.
+  o.goal_min_dihedral_deg = 80.0;
+  Mesh3 n = mesh();
+  EXPECT_NE(optimize3d(n, o, field).stopped_by, "goal");
+  // light: one round.
+  Mesh3 l = mesh();
+  EXPECT_EQ(optimize3d(l, optimize3d_effort("light"), field).rounds, 1u);
+  EXPECT_THROW(optimize3d_effort("fast"), InputError);
+}
+
+// summarize_quality's dihedral range on known tetrahedra: the regular one (acos(1/3) at every
+// edge) and the corner of a cube (90 degrees at the three axes, acos(1/sqrt3) at the others).
+TEST(Optimize3d, DihedralRangeOfKnownTetrahedra) {
+  const double s = std::sqrt(3.0) / 2.0;
+  const auto regular =
+      dihedral_cosine_range({0, 0, 0}, {1, 0, 0}, {0.5, s, 0}, {0.5, s / 3.0, std::sqrt(2.0 / 3.0)});
+  EXPECT_NEAR(regular[0], 1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(regular[1], 1.0 / 3.0, 1e-12);
+  const auto corner = dihedral_cosine_range({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  EXPECT_NEAR(corner[0], 0.0, 1e-12);
+  EXPECT_NEAR(corner[1], 1.0 / std::sqrt(3.0), 1e-12);
+  // The order of the vertices does not matter.
+  const auto turned = dihedral_cosine_range({0, 1, 0}, {0, 0, 0}, {0, 0, 1}, {1, 0, 0});
+  EXPECT_NEAR(turned[0], corner[0], 1e-12);
+  EXPECT_NEAR(turned[1], corner[1], 1e-12);
+}
+
 }  // namespace
 }  // namespace dtlab
