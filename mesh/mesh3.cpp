@@ -234,6 +234,68 @@ void Mesh3::remove_tetrahedron(std::uint32_t t) {
   free_tetrahedra_.push_back(t);
 }
 
+namespace {
+
+// new_of[old] for an order of the live slots; InputError naming `what` when it is no permutation.
+std::vector<std::uint32_t> inverse_order(std::span<const std::uint32_t> order, std::uint32_t capacity,
+                                         std::uint32_t live, const auto& is_live, const char* what) {
+  if (order.size() != live) {
+    throw InputError(std::string("Mesh3::renumber: ") + what + " order lists " + std::to_string(order.size()) +
+                     " entries for " + std::to_string(live) + " live ones");
+  }
+  std::vector<std::uint32_t> new_of(capacity, Mesh3::kNone);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const std::uint32_t old = order[k];
+    if (old >= capacity || !is_live(old) || new_of[old] != Mesh3::kNone) {
+      throw InputError(std::string("Mesh3::renumber: ") + what + " " + std::to_string(old) + " (entry " +
+                       std::to_string(k) + ") is dead, out of range or listed twice");
+    }
+    new_of[old] = static_cast<std::uint32_t>(k);
+  }
+  return new_of;
+}
+
+template <class T>
+void permute(std::vector<T>& values, std::span<const std::uint32_t> order, std::size_t width = 1) {
+  std::vector<T> moved(order.size() * width);
+  for (std::size_t k = 0; k < order.size(); ++k)
+    for (std::size_t i = 0; i < width; ++i) moved[width * k + i] = values[width * order[k] + i];
+  values = std::move(moved);
+}
+
+}  // namespace
+
+void Mesh3::renumber(std::span<const std::uint32_t> vertex_order, std::span<const std::uint32_t> tetrahedron_order) {
+  const std::vector<std::uint32_t> vertex_of = inverse_order(
+      vertex_order, vertex_capacity(), live_vertex_count(), [&](std::uint32_t v) { return !is_dead_vertex(v); }, "vertex");
+  const std::vector<std::uint32_t> tetrahedron_of_old =
+      inverse_order(tetrahedron_order, tetrahedron_capacity(), live_tetrahedron_count(),
+                    [&](std::uint32_t t) { return is_alive(t); }, "tetrahedron");
+  auto new_vertex = [&](std::uint32_t v) { return v == kInfinite ? kInfinite : vertex_of[v]; };
+  auto new_handle = [&](std::uint32_t h) { return 4 * tetrahedron_of_old[tetrahedron_of(h)] + index_in_tetrahedron(h); };
+  permute(points_, vertex_order);
+  permute(metrics_, vertex_order);
+  permute(vertex_flags_, vertex_order);
+  permute(changed_at_, vertex_order);
+  permute(vertex_tetrahedron_, vertex_order);
+  for (std::uint32_t& t : vertex_tetrahedron_) t = t == kNone ? kNone : tetrahedron_of_old[t];
+  free_vertices_.clear();
+  permute(vertices_, tetrahedron_order, 4);
+  for (std::uint32_t& v : vertices_) v = new_vertex(v);
+  permute(neighbours_, tetrahedron_order, 4);
+  for (std::uint32_t& h : neighbours_) h = new_handle(h);
+  permute(refs_, tetrahedron_order);
+  permute(facet_refs_, tetrahedron_order, 4);
+  free_tetrahedra_.clear();
+  std::unordered_map<std::uint64_t, std::uint8_t> edges;
+  edges.reserve(constrained_edges_.size());
+  for (const auto& [key, value] : constrained_edges_) {
+    edges.emplace(edge_key(vertex_of[static_cast<std::uint32_t>(key >> 32)], vertex_of[static_cast<std::uint32_t>(key)]),
+                  value);
+  }
+  constrained_edges_ = std::move(edges);
+}
+
 bool Mesh3::is_constrained_edge(std::uint32_t a, std::uint32_t b) const {
   return constrained_edges_.count(edge_key(a, b)) != 0;
 }

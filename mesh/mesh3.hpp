@@ -192,6 +192,15 @@ class Mesh3 {
   std::uint64_t changed_at(std::uint32_t v) const noexcept { return changed_at_[v]; }
   void touch(std::uint32_t v) noexcept { changed_at_[v] = epoch_; }
 
+  // --- Renumbering -----------------------------------------------------------------------------
+  // Renumbers the vertices and the tetrahedra, dropping the free slots: `vertex_order` lists every
+  // live vertex once (the new id of vertex_order[k] is k), `tetrahedron_order` every live
+  // tetrahedron once, ghosts included (the new slot of tetrahedron_order[k] is k). Everything
+  // moves with them: coordinates, metrics, flags, references, constrained facets and edges,
+  // links, change epochs. For locality (the operators that follow touch neighbours: neighbours
+  // in memory then): InputError when a list is not such a permutation.
+  void renumber(std::span<const std::uint32_t> vertex_order, std::span<const std::uint32_t> tetrahedron_order);
+
   // --- Whole-mesh --------------------------------------------------------------------------------
   // Throws InternalError naming the first problem: links symmetric over the same three vertices
   // in opposite cyclic order, no live tetrahedron on a dead vertex, vertex_tetrahedron current,

@@ -456,3 +456,90 @@ RC_GTEST_PROP(Mesh3Properties, QueriesAgreeWithBruteForce, ()) {
 
 }  // namespace
 }  // namespace dtlab
+
+namespace dtlab {
+namespace {
+
+// The domain as a set of tetrahedra by corner coordinates (sorted) with their references, and the
+// constrained facets likewise: what a renumbering must keep.
+std::multiset<std::pair<std::vector<std::array<double, 3>>, int>> geometry(const MeshData3& d, bool facets) {
+  std::multiset<std::pair<std::vector<std::array<double, 3>>, int>> out;
+  auto corners = [&](auto ids) {
+    std::vector<std::array<double, 3>> c;
+    for (const auto v : ids) c.push_back({d.vertices[v].x, d.vertices[v].y, d.vertices[v].z});
+    std::sort(c.begin(), c.end());
+    return c;
+  };
+  if (facets) {
+    for (std::size_t k = 0; k < d.triangles.size(); ++k) out.emplace(corners(d.triangles[k]), d.triangle_refs[k]);
+  } else {
+    for (std::size_t k = 0; k < d.tetrahedra.size(); ++k) out.emplace(corners(d.tetrahedra[k]), d.tetrahedron_refs[k]);
+  }
+  return out;
+}
+
+TEST(Mesh3, RenumberKeepsEverythingAndDropsFreeSlots) {
+  Mesh3 m = mesh3_from_data(cubes({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, 2));
+  // A dead vertex slot and a dead tetrahedron slot.
+  const std::uint32_t dead_v = m.add_vertex({9, 9, 9}, Metric3::isotropic(1.0));
+  m.remove_vertex(dead_v);
+  const auto first = m.tetrahedron(0);
+  m.remove_tetrahedron(m.add_tetrahedron(first[0], first[1], first[2], first[3], 7));
+  for (const std::uint32_t v : first) m.set_vertex_tetrahedron(v, 0);
+  m.check();
+  const MeshData3 before = m.domain();
+  std::vector<std::uint32_t> vorder, torder;
+  for (std::uint32_t v = m.vertex_capacity(); v-- > 0;)
+    if (!m.is_dead_vertex(v)) vorder.push_back(v);
+  for (std::uint32_t t = m.tetrahedron_capacity(); t-- > 0;)
+    if (m.is_alive(t)) torder.push_back(t);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> constrained;
+  for (std::uint32_t a = 0; a < m.vertex_capacity(); ++a)
+    for (std::uint32_t b = a + 1; b < m.vertex_capacity(); ++b)
+      if (!m.is_dead_vertex(a) && !m.is_dead_vertex(b) && m.is_constrained_edge(a, b)) constrained.emplace_back(a, b);
+  ASSERT_FALSE(constrained.empty());
+  const std::uint32_t live_v = m.live_vertex_count(), live_t = m.live_tetrahedron_count();
+  std::vector<std::uint8_t> flags;
+  std::vector<Vec3> points;
+  for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) {
+    flags.push_back(m.flags(v));
+    points.push_back(m.point(v));
+  }
+  m.renumber(vorder, torder);
+  m.check();
+  EXPECT_EQ(m.vertex_capacity(), live_v);
+  EXPECT_EQ(m.tetrahedron_capacity(), live_t);
+  const MeshData3 after = m.domain();
+  EXPECT_EQ(geometry(after, false), geometry(before, false));
+  EXPECT_EQ(geometry(after, true), geometry(before, true));
+  // Vertex vorder[k] is k now: its constrained edges moved with it, and no other pair is one.
+  std::vector<std::uint32_t> new_of(vorder.size() + 1, Mesh3::kNone);
+  for (std::uint32_t k = 0; k < vorder.size(); ++k) new_of[vorder[k]] = k;
+  for (const auto& [a, b] : constrained) EXPECT_TRUE(m.is_constrained_edge(new_of[a], new_of[b]));
+  EXPECT_EQ(m.constrained_edge_count(), constrained.size());
+  for (std::uint32_t k = 0; k < vorder.size(); ++k) {
+    EXPECT_EQ(m.flags(k), flags[vorder[k]]);
+    EXPECT_EQ(m.point(k), points[vorder[k]]);
+  }
+}
+
+TEST(Mesh3, RenumberRefusesWhatIsNoPermutation) {
+  Mesh3 m = mesh3_from_data(cubes({{0, 0, 0}}));
+  std::vector<std::uint32_t> vorder(m.vertex_capacity()), torder(m.tetrahedron_capacity());
+  for (std::uint32_t k = 0; k < vorder.size(); ++k) vorder[k] = k;
+  for (std::uint32_t k = 0; k < torder.size(); ++k) torder[k] = k;
+  auto twice = vorder;
+  twice[1] = twice[0];
+  EXPECT_THROW(m.renumber(twice, torder), InputError);
+  auto short_list = torder;
+  short_list.pop_back();
+  EXPECT_THROW(m.renumber(vorder, short_list), InputError);
+  auto outside = vorder;
+  outside.back() = m.vertex_capacity() + 5;
+  EXPECT_THROW(m.renumber(outside, torder), InputError);
+  m.renumber(vorder, torder);  // the identity
+  m.check();
+}
+
+}  // namespace
+}  // namespace dtlab
