@@ -163,10 +163,17 @@ std::uint32_t ControlSpace3::walk(const Vec3& p, std::uint32_t t) const {
 }
 
 Metric3 ControlSpace3::metric_at(const Vec3& p, std::uint32_t& hint) const {
-  std::uint32_t start = 0;
-  if (hint < tets_.size()) start = hint;
-  else if (const auto near = grid_.candidates(p); !near.empty()) start = near.front();
-  std::uint32_t t = walk(p, start);
+  // The hint when it holds p (consecutive questions are usually close), else a walk from an
+  // element of p's grid bucket: a walk from a far hint (the relocation sweep asks worst ball
+  // first, anywhere in the domain) would cross the background.
+  std::uint32_t t;
+  if (hint < tets_.size() && contains(hint, p)) {
+    t = hint;
+  } else {
+    std::uint32_t start = hint < tets_.size() ? hint : 0;
+    if (const auto near = grid_.candidates(p); !near.empty()) start = near.front();
+    t = walk(p, start);
+  }
   if (!contains(t, p)) {
     // The walk stopped at the boundary: through a hole or a concavity, or p is outside.
     for (const std::uint32_t c : grid_.candidates(p)) {
