@@ -176,7 +176,8 @@ void add_mesh(CLI::App& app) {
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the optimization step");
   cmd->add_option("--optimize", args->optimize,
                   "Closed surfaces: the optimization effort: light (one round), standard (rounds until Q_K <= 3 and "
-                  "dihedral angles in [20, 150] deg, or no more gain; the default), thorough (rounds until no gain)")
+                  "dihedral angles in [20, 150] deg, or no more gain; the default), thorough (two relocation sweeps "
+                  "a round, rounds until no gain)")
       ->check(CLI::IsMember({"light", "standard", "thorough"}));
   cmd->add_flag("--remove-cavities", args->remove_cavities,
                 "Closed surfaces: drop the regions bounded only by shells nested inside another (a cube minus a ball)");

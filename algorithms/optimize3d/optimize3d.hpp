@@ -82,10 +82,12 @@ struct QualitySummary3 {
 QualitySummary3 summarize_quality(const Mesh3& mesh);
 
 // The effort levels of `dtlab mesh --optimize LEVEL` (throws InputError on another name):
-//   light     one round;
-//   standard  rounds until the goal Q_K <= 3 (the book's bad-element threshold, §8.6), dihedral
-//             angles in [20, 150] degrees is met, or until they no longer improve (at most 6);
-//   thorough  rounds until the worst and the mean Q_K no longer improve (at most 6: the defaults).
+//   light     one round, one relocation sweep;
+//   standard  one relocation sweep a round, rounds until the goal Q_K <= 3 (the book's
+//             bad-element threshold, §8.6), dihedral angles in [20, 150] degrees is met, or until
+//             they no longer improve (at most 6);
+//   thorough  two relocation sweeps a round, rounds until the worst and the mean Q_K no longer
+//             improve (at most 6: the defaults).
 Optimize3dOptions optimize3d_effort(const std::string& level);
 
 // Optimizes `mesh` in place; `field` is the control space (empty: vertices keep their metrics,

@@ -154,7 +154,9 @@ Optimize3dOptions optimize3d_effort(const std::string& level) {
   Optimize3dOptions o;
   if (level == "light") {
     o.max_rounds = 1;
+    o.relocation_sweeps = 1;
   } else if (level == "standard") {
+    o.relocation_sweeps = 1;
     o.goal_worst_quality = 3.0;
     o.goal_min_dihedral_deg = 20.0;
     o.goal_max_dihedral_deg = 150.0;
