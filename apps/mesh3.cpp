@@ -135,6 +135,7 @@ int run_mesh3(const Mesh3CliArgs& args) {
     throw InputError(args.input + ": " + e.what(), e.items());
   }
   const double peak_mb = peak_rss_mb();
+  result.mesh = Mesh3();  // the output holds what follows needs: the working mesh's memory goes back
   for (const std::string& m : result.messages) std::cerr << "dtlab: " << m << "\n";
 
   bool ok = true;
