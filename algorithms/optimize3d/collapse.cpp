@@ -96,6 +96,10 @@ bool try_collapse3(Mesh3& mesh, std::uint32_t u, std::uint32_t v, const Collapse
 }
 
 std::uint64_t collapse_pass3(Mesh3& mesh, const Collapse3Options& options) {
+  return optimize3d_detail::collapse_pass(mesh, options, {});
+}
+
+std::uint64_t optimize3d_detail::collapse_pass(Mesh3& mesh, const Collapse3Options& options, Region region) {
   std::vector<std::tuple<double, std::uint32_t, std::uint32_t>> edges;
   for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
     if (!mesh.in_domain(t)) continue;
@@ -106,6 +110,7 @@ std::uint64_t collapse_pass3(Mesh3& mesh, const Collapse3Options& options) {
         // Only edges with a free end can collapse.
         if ((mesh.flags(a) & (Mesh3::kFixed | Mesh3::kOnBoundary)) && (mesh.flags(b) & (Mesh3::kFixed | Mesh3::kOnBoundary)))
           continue;
+        if (!in_region(region, a) || !in_region(region, b)) continue;
         const double l = edge_length(mesh, a, b);
         if (l < options.short_length) edges.emplace_back(l, a, b);
       }

@@ -146,8 +146,18 @@ struct SwapPassResult {
 };
 SwapPassResult swap_pass(Mesh3& mesh, double margin, std::span<const std::uint32_t> seeds, double threshold,
                          QualityCache& cache, AttemptMemo* memo = nullptr);
-// relocate_sweep3, skipping the vertices `memo` knows will fail (null: none).
-std::uint64_t relocate_sweep(Mesh3& mesh, const MetricField3& field, const Relocate3Options& options, AttemptMemo* memo);
+// The vertices a pass works on when a round is restricted to a region: empty, every vertex;
+// else v when active[v] != 0, and every vertex made during the pass (v >= size).
+using Region = std::span<const std::uint8_t>;
+inline bool in_region(Region region, std::uint32_t v) noexcept {
+  return region.empty() || v >= region.size() || region[v] != 0;
+}
+// relocate_sweep3 over the region's vertices, skipping those `memo` knows will fail (null: none).
+std::uint64_t relocate_sweep(Mesh3& mesh, const MetricField3& field, const Relocate3Options& options, AttemptMemo* memo,
+                             Region region = {});
+// collapse_pass3 and split_pass3 over the edges with both ends in the region.
+std::uint64_t collapse_pass(Mesh3& mesh, const Collapse3Options& options, Region region);
+SplitPass3Result split_pass(Mesh3& mesh, const MetricField3& field, const Split3Options& options, Region region);
 
 // The worst Q_K of a set of live tetrahedra / of candidates.
 double worst_quality(const Mesh3& mesh, std::span<const std::uint32_t> tetrahedra) noexcept;

@@ -32,6 +32,9 @@ struct Optimize3dOptions {
   double goal_worst_quality = 0.0;
   double goal_min_dihedral_deg = 0.0;
   double goal_max_dihedral_deg = 0.0;
+  // With a goal, rounds after the first work only on the vertices within this many rings of
+  // the tetrahedra that miss it (0: every round on the whole mesh).
+  std::uint32_t goal_rings = 0;
   // Tetrahedra worse than this are treated one by one, worst first, at the start of each round.
   double bad_quality = 3.0;
   bool swaps = true;
@@ -85,7 +88,8 @@ QualitySummary3 summarize_quality(const Mesh3& mesh);
 //   light     one round, one relocation sweep;
 //   standard  one relocation sweep a round, rounds until the goal Q_K <= 3 (the book's
 //             bad-element threshold, §8.6), dihedral angles in [20, 150] degrees is met, or until
-//             they no longer improve (at most 6);
+//             they no longer improve (at most 6); rounds after the first only within 3 rings of
+//             the tetrahedra that miss the goal;
 //   thorough  two relocation sweeps a round, rounds until the worst and the mean Q_K no longer
 //             improve (at most 6: the defaults).
 Optimize3dOptions optimize3d_effort(const std::string& level);

@@ -232,7 +232,7 @@ std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relo
 }
 
 std::uint64_t optimize3d_detail::relocate_sweep(Mesh3& mesh, const MetricField3& field, const Relocate3Options& options,
-                                                AttemptMemo* memo) {
+                                                AttemptMemo* memo, Region region) {
   // Worst ball first (ties by vertex id): the classification of §8.6. One pass over the
   // tetrahedra gives every vertex's worst Q_K and what is_free_vertex asks of its ball (every
   // tetrahedron at it in the domain, with one reference, no constrained facet at it); the ball
@@ -274,7 +274,7 @@ std::uint64_t optimize3d_detail::relocate_sweep(Mesh3& mesh, const MetricField3&
   std::vector<std::pair<double, std::uint32_t>> order;
   for (std::uint32_t v = 0; v < nv; ++v) {
     if (mesh.is_dead_vertex(v) || locked[v] || ref[v] == kUnset) continue;
-    if ((mesh.flags(v) & (Mesh3::kFixed | Mesh3::kOnBoundary)) != 0) continue;
+    if ((mesh.flags(v) & (Mesh3::kFixed | Mesh3::kOnBoundary)) != 0 || !in_region(region, v)) continue;
     order.emplace_back(worst[v], v);
   }
   std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) {

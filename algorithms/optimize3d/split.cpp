@@ -112,12 +112,18 @@ std::uint32_t try_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const Me
 }
 
 SplitPass3Result split_pass3(Mesh3& mesh, const MetricField3& field, const Split3Options& options) {
+  return optimize3d_detail::split_pass(mesh, field, options, {});
+}
+
+SplitPass3Result optimize3d_detail::split_pass(Mesh3& mesh, const MetricField3& field, const Split3Options& options,
+                                               Region region) {
   SplitPass3Result result;
   using Item = std::tuple<double, std::uint32_t, std::uint32_t>;
   // Longest first; ties by the smaller ids (tuple order on the negated key keeps it deterministic).
   std::priority_queue<Item, std::vector<Item>, std::less<>> queue;
   auto consider = [&](std::uint32_t a, std::uint32_t b) {
     if (a > b) std::swap(a, b);
+    if (!in_region(region, a) || !in_region(region, b)) return;
     const double l = edge_length(mesh, a, b);
     if (l > options.long_length) queue.emplace(l, a, b);
   };

@@ -53,6 +53,42 @@ QualitySummary3 summarize_quality(const Mesh3& mesh) {
 
 namespace {
 
+bool goal_asked(const Optimize3dOptions& o) {
+  return o.goal_worst_quality > 0.0 || o.goal_min_dihedral_deg > 0.0 || o.goal_max_dihedral_deg > 0.0;
+}
+
+bool meets_goal(const QualitySummary3& q, const Optimize3dOptions& o) {
+  return (o.goal_worst_quality <= 0.0 || q.worst <= o.goal_worst_quality) && q.min_dihedral_deg >= o.goal_min_dihedral_deg &&
+         (o.goal_max_dihedral_deg <= 0.0 || q.max_dihedral_deg <= o.goal_max_dihedral_deg);
+}
+
+// The region of a goal-driven round: the vertices of the tetrahedra that miss the goal (or are
+// bad), then `rings` times every vertex of a tetrahedron that has one.
+std::vector<std::uint8_t> goal_region(const Mesh3& mesh, const Optimize3dOptions& o) {
+  std::vector<std::uint8_t> active(mesh.vertex_capacity(), 0);
+  constexpr double kRadians = 0.017453292519943295769;  // pi / 180
+  const double cos_min = std::cos(o.goal_min_dihedral_deg * kRadians);
+  const double cos_max = o.goal_max_dihedral_deg > 0.0 ? std::cos(o.goal_max_dihedral_deg * kRadians) : -2.0;
+  const double worst = o.goal_worst_quality > 0.0 ? std::min(o.goal_worst_quality, o.bad_quality) : o.bad_quality;
+  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+    if (!mesh.in_domain(t)) continue;
+    const auto v = mesh.tetrahedron(t);
+    const auto c = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+    if (c[1] > cos_min || c[0] < cos_max || tetrahedron_quality(mesh, t) > worst)
+      for (const std::uint32_t w : v) active[w] = 1;
+  }
+  for (std::uint32_t ring = 0; ring < o.goal_rings; ++ring) {
+    const std::vector<std::uint8_t> inner = active;
+    for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+      if (!mesh.is_alive(t) || mesh.is_ghost(t)) continue;
+      const auto v = mesh.tetrahedron(t);
+      if (inner[v[0]] || inner[v[1]] || inner[v[2]] || inner[v[3]])
+        for (const std::uint32_t w : v) active[w] = 1;
+    }
+  }
+  return active;
+}
+
 constexpr std::array<std::array<std::uint32_t, 2>, 6> kEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 
 void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field,
@@ -157,6 +193,7 @@ Optimize3dOptions optimize3d_effort(const std::string& level) {
     o.relocation_sweeps = 1;
   } else if (level == "standard") {
     o.relocation_sweeps = 1;
+    o.goal_rings = 3;
     o.goal_worst_quality = 3.0;
     o.goal_min_dihedral_deg = 20.0;
     o.goal_max_dihedral_deg = 150.0;
@@ -183,17 +220,29 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     ++stats.rounds;
     std::uint64_t size_changes = 0;
     bool limit = false;
+    // After the first round, with a goal and goal_rings: only around what misses it.
+    std::vector<std::uint8_t> region_storage;
+    if (round > 0 && options.goal_rings > 0 && goal_asked(options)) region_storage = goal_region(mesh, options);
+    const optimize3d_detail::Region region = region_storage;
+    std::vector<std::uint32_t> seeds;
+    if (!region.empty()) {
+      for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+        if (!mesh.in_domain(t)) continue;
+        const auto v = mesh.tetrahedron(t);
+        if (region[v[0]] || region[v[1]] || region[v[2]] || region[v[3]]) seeds.push_back(t);
+      }
+    }
     treat_bad_tetrahedra(mesh, options, field, stats);
     poll_interrupt(options.interrupt, "optimize3d: after the bad tetrahedra");
     if (options.collapses) {
-      const std::uint64_t c = collapse_pass3(mesh, options.collapse);
+      const std::uint64_t c = optimize3d_detail::collapse_pass(mesh, options.collapse, region);
       stats.collapses += c;
       size_changes += c;
     }
     if (options.splits) {
       Split3Options split = options.split;
       split.margin = options.margin;
-      const SplitPass3Result r = split_pass3(mesh, field, split);
+      const SplitPass3Result r = optimize3d_detail::split_pass(mesh, field, split, region);
       stats.splits += r.splits;
       stats.face_swaps += r.swaps;  // counted together: split_pass3 does not tell them apart
       size_changes += r.splits;
@@ -205,7 +254,7 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     poll_interrupt(options.interrupt, "optimize3d: after the collapses and splits");
     if (options.swaps) {
       QualityCache cache;
-      const SwapPassResult r = optimize3d_detail::swap_pass(mesh, options.margin, {}, options.swap_threshold, cache, memo);
+      const SwapPassResult r = optimize3d_detail::swap_pass(mesh, options.margin, seeds, options.swap_threshold, cache, memo);
       stats.face_swaps += r.face_swaps;
       stats.shell_transformations += r.shell_transformations;
       if (r.limit_reached) {
@@ -216,7 +265,7 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     poll_interrupt(options.interrupt, "optimize3d: after the swaps");
     if (options.relocation) {
       for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
-        const std::uint64_t moved = optimize3d_detail::relocate_sweep(mesh, field, options.relocate, memo);
+        const std::uint64_t moved = optimize3d_detail::relocate_sweep(mesh, field, options.relocate, memo, region);
         stats.relocations += moved;
         if (moved == 0) break;
       }
@@ -226,11 +275,7 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     const bool improved = now.worst < last.worst * keep || now.mean < last.mean * keep;
     last = now;
     if (limit) break;
-    const bool goal_asked =
-        options.goal_worst_quality > 0.0 || options.goal_min_dihedral_deg > 0.0 || options.goal_max_dihedral_deg > 0.0;
-    if (goal_asked && (options.goal_worst_quality <= 0.0 || now.worst <= options.goal_worst_quality) &&
-        now.min_dihedral_deg >= options.goal_min_dihedral_deg &&
-        (options.goal_max_dihedral_deg <= 0.0 || now.max_dihedral_deg <= options.goal_max_dihedral_deg)) {
+    if (goal_asked(options) && meets_goal(now, options)) {
       stats.stopped_by = "goal";
       break;
     }
