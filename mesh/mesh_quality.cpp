@@ -15,6 +15,7 @@
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/quality.hpp"
+#include "kernel/radix_sort.hpp"
 #include "mesh/io/text_output.hpp"
 
 namespace dtlab {
@@ -156,7 +157,7 @@ std::vector<std::uint64_t> unique_edges(std::span<const std::array<std::uint32_t
       }
     }
   }
-  std::sort(edges.begin(), edges.end());
+  radix_sort(edges);
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   return edges;
 }

@@ -2,6 +2,7 @@
 #include "algorithms/mesh3d/delaunay_kernel.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -163,13 +164,27 @@ std::uint32_t DelaunayKernel3::commit(const Vec3& p, const Metric3& mp, std::uin
     laterals_.push_back({edge_key(s.c, s.a), Mesh3::facet(t, 3)});
     ball_.push_back(t);
   }
-  std::sort(laterals_.begin(), laterals_.end(),
-            [](const Lateral& x, const Lateral& y) { return x.edge != y.edge ? x.edge < y.edge : x.handle < y.handle; });
-  for (std::size_t k = 0; k < laterals_.size(); k += 2) {
-    DTLAB_ASSERT(k + 1 < laterals_.size() && laterals_[k].edge == laterals_[k + 1].edge &&
-                 (k + 2 >= laterals_.size() || laterals_[k + 2].edge != laterals_[k].edge));
-    mesh_.link(laterals_[k].handle, laterals_[k + 1].handle);
+  // Each lateral edge is shared by exactly two new tetrahedra (the cavity's boundary is a closed
+  // surface): matched through a small open-addressing table keyed by the edge.
+  const std::size_t capacity = std::bit_ceil(2 * laterals_.size());
+  const int shift = 64 - std::countr_zero(capacity);
+  table_.assign(capacity, kNone);
+  std::size_t links = 0;
+  for (std::uint32_t k = 0; k < laterals_.size(); ++k) {
+    const std::uint64_t edge = laterals_[k].edge;
+    std::size_t slot = static_cast<std::size_t>((edge * 0x9E3779B97F4A7C15ull) >> shift) & (capacity - 1);
+    while (table_[slot] != kNone && laterals_[table_[slot]].edge != edge) slot = (slot + 1) & (capacity - 1);
+    if (table_[slot] == kNone) {
+      table_[slot] = k;
+      continue;
+    }
+    Lateral& other = laterals_[table_[slot]];
+    DTLAB_ASSERT(other.handle != kNone);  // a third facet on one edge: the cavity was not closed
+    mesh_.link(other.handle, laterals_[k].handle);
+    other.handle = kNone;
+    ++links;
   }
+  DTLAB_ASSERT(2 * links == laterals_.size());
   return v;
 }
 

@@ -69,6 +69,8 @@ class DelaunayKernel3 {
     std::uint32_t handle;
   };
   std::vector<Lateral> laterals_;
+  std::vector<std::uint32_t> table_;  // commit's matching of the laterals (open addressing)
+  static constexpr std::uint32_t kNone = Mesh3::kNone;
   std::uint32_t stamp_ = 0;
   std::uint32_t exclusion_stamp_ = 0;
   std::uint64_t corrections_ = 0;

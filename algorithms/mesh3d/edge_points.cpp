@@ -16,6 +16,7 @@
 #include "algorithms/mesh2d/edge_cuts.hpp"
 #include "algorithms/mesh3d/delaunay_kernel.hpp"
 #include "algorithms/mesh3d/mesh3d.hpp"
+#include "kernel/radix_sort.hpp"
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/error.hpp"
 
@@ -123,7 +124,7 @@ void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dO
       for (std::uint32_t i = 0; i < 4; ++i)
         for (std::uint32_t j = i + 1; j < 4; ++j) edges.push_back(edge_key(mesh.vertex(t, i), mesh.vertex(t, j)));
     }
-    std::sort(edges.begin(), edges.end());
+    radix_sort(edges);
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     candidates.clear();
     for (const std::uint64_t k : edges) {
