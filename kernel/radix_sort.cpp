@@ -18,15 +18,19 @@ void radix_sort(std::vector<std::uint64_t>& keys) {
   std::uint64_t any = 0;
   for (const std::uint64_t k : keys) any |= k;
   const int bits = 64 - std::countl_zero(any);
+  const int digits = (bits + kDigitBits - 1) / kDigitBits;
+  // Every digit's histogram in one read of the keys.
+  std::vector<std::size_t> count(static_cast<std::size_t>(digits) * kBuckets, 0);
+  for (const std::uint64_t k : keys)
+    for (int d = 0; d < digits; ++d) ++count[d * kBuckets + ((k >> (d * kDigitBits)) & (kBuckets - 1))];
   std::vector<std::uint64_t> scratch(n);
-  std::vector<std::size_t> count(kBuckets);
-  for (int shift = 0; shift < bits; shift += kDigitBits) {
-    std::fill(count.begin(), count.end(), 0);
-    for (const std::uint64_t k : keys) ++count[(k >> shift) & (kBuckets - 1)];
-    if (count[(keys[0] >> shift) & (kBuckets - 1)] == n) continue;  // one bucket: nothing moves
+  for (int d = 0; d < digits; ++d) {
+    std::size_t* c = count.data() + d * kBuckets;
+    const int shift = d * kDigitBits;
+    if (c[(keys[0] >> shift) & (kBuckets - 1)] == n) continue;  // one bucket: nothing moves
     std::size_t sum = 0;
-    for (std::size_t& c : count) sum += std::exchange(c, sum);
-    for (const std::uint64_t k : keys) scratch[count[(k >> shift) & (kBuckets - 1)]++] = k;
+    for (std::size_t b = 0; b < kBuckets; ++b) sum += std::exchange(c[b], sum);
+    for (const std::uint64_t k : keys) scratch[c[(k >> shift) & (kBuckets - 1)]++] = k;
     keys.swap(scratch);
   }
 }
