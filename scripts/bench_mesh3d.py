@@ -295,6 +295,9 @@ def report(data):
     lines.append("Commands (run in the work folder):\n")
     for n, c in data["commands"].items():
         lines.append(f"- {n}: `{c}`")
+    if not data["optimize"]:  # --no-optimize
+        lines.append("")
+        return "\n".join(lines)
     lines.append("\n## `dtlab optimize` on the peers' meshes\n")
     lines.append(f"`dtlab optimize IN -o OUT --size {h}` (default rounds), measured by the same checker; boundary: the "
                  "set of boundary faces (corner coordinates) identical before and after.\n")
