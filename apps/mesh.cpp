@@ -36,6 +36,7 @@ struct MeshArgs {
   bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
   bool remove_cavities = false;  // surfaces only (apps/mesh3.cpp)
   std::string optimize = "standard";  // surfaces only: the effort (optimize3d_effort)
+  bool triangulate_nonplanar = false;  // surfaces only
 };
 
 // A uniform size: the box of the input, enlarged by 1 on each side.
@@ -66,7 +67,8 @@ int run_mesh(const MeshArgs& args) {
                       .size_map = args.size_map, .metric = args.metric, .background = args.background,
                       .method = args.method, .interpolation = args.interpolation, .no_optimize = args.no_optimize,
                       .stats = args.stats, .verify = args.verify, .resample_boundary = args.resample_boundary,
-                      .remove_cavities = args.remove_cavities, .optimize = args.optimize});
+                      .remove_cavities = args.remove_cavities, .optimize = args.optimize,
+                      .triangulate_nonplanar = args.triangulate_nonplanar});
   }
   const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
   if (given > 1) throw InputError("give one of --size, --size-map, --metric");
@@ -174,6 +176,9 @@ void add_mesh(CLI::App& app) {
   cmd->add_flag("--resample-boundary", args->resample_boundary,
                 "Cut the input segments anew in the size or metric given (default: they are the boundary discretisation)");
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the optimization step");
+  cmd->add_flag("--triangulate-nonplanar", args->triangulate_nonplanar,
+                "Closed surfaces: triangulate a polygonal face whose corners are not in one plane in its projection "
+                "(each triangle a boundary face with the face's marker) instead of refusing it; counted on stderr");
   cmd->add_option("--optimize", args->optimize,
                   "Closed surfaces: the optimization effort: light (one round), standard (rounds until Q_K <= 3 and "
                   "dihedral angles in [20, 150] deg, or no more gain; the default), thorough (two relocation sweeps "

@@ -89,7 +89,8 @@ int run_mesh3(const Mesh3CliArgs& args) {
   const SurfaceInput in = read_surface(args.input);
   FacetTriangulation facets;
   try {
-    facets = triangulate_facets(in.plc, {.facet_name = [&in](std::size_t f) { return in.facet_name(f); },
+    facets = triangulate_facets(in.plc, {.triangulate_nonplanar = args.triangulate_nonplanar,
+                                         .facet_name = [&in](std::size_t f) { return in.facet_name(f); },
                                          .first_vertex_number = in.first_vertex_number});
   } catch (const InputError& e) {
     throw InputError(args.input + ": " + e.what(), e.items());

@@ -15,6 +15,7 @@ struct Mesh3CliArgs {
   bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
   bool remove_cavities = false;  // Mesh3dOptions::remove_cavities
   std::string optimize = "standard";  // the effort: optimize3d_effort (optimize3d.hpp)
+  bool triangulate_nonplanar = false;  // FacetTriangulationOptions::triangulate_nonplanar
 };
 
 // Returns the exit status: 0 success, 3 --verify failed. Throws InputError for bad input.

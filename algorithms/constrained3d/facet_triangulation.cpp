@@ -64,7 +64,7 @@ struct LocalVertices {
 class FacetTriangulator {
  public:
   FacetTriangulator(const Plc3& plc, const FacetTriangulationOptions& options, FacetTriangulation& out)
-      : plc_(plc), names_(options), out_(out) {}
+      : plc_(plc), names_(options), out_(out), triangulate_nonplanar_(options.triangulate_nonplanar) {}
 
   void facet(std::size_t f) {
     const PlcFacet3& facet = plc_.facets[f];
@@ -103,8 +103,10 @@ class FacetTriangulator {
     out_.triangle_facet.push_back(static_cast<std::uint32_t>(f));
   }
 
-  // Planarity against the first three non-collinear vertices; returns the drop axis.
-  int plane_of(std::size_t f, const std::vector<std::uint32_t>& ids) const {
+  // Planarity against the first three non-collinear vertices; returns the drop axis (of a
+  // non-planar facet under triangulate_nonplanar: the largest component of its first polygon's
+  // Newell normal).
+  int plane_of(std::size_t f, const std::vector<std::uint32_t>& ids) {
     const auto& P = plc_.vertices;
     const Vec3& a = P[ids[0]];
     std::size_t ib = 0, ic = 0;
@@ -123,6 +125,18 @@ class FacetTriangulator {
       ++off;
       const double d = std::fabs(dot(n, P[ids[i]] - a)) / std::sqrt(dot(n, n));
       if (d > distance) distance = d, farthest = i;
+    }
+    if (off > 0 && triangulate_nonplanar_) {
+      const PlcFacet3& facet = plc_.facets[f];
+      for (const auto& poly : facet.polygons) {
+        if (poly.size() < 3) continue;
+        Vec3 newell{0.0, 0.0, 0.0};
+        for (std::size_t i = 0; i < poly.size(); ++i) newell = newell + cross(P[poly[i]], P[poly[(i + 1) % poly.size()]]);
+        const double m[3] = {std::fabs(newell.x), std::fabs(newell.y), std::fabs(newell.z)};
+        if (!(std::max({m[0], m[1], m[2]}) > 0.0)) break;
+        ++out_.nonplanar_facets;
+        return m[0] >= m[1] && m[0] >= m[2] ? 0 : (m[1] >= m[2] ? 1 : 2);
+      }
     }
     if (off > 0) {
       char buf[32];
@@ -254,6 +268,7 @@ class FacetTriangulator {
   const Plc3& plc_;
   Names names_;
   FacetTriangulation& out_;
+  bool triangulate_nonplanar_ = false;
 };
 
 // --- Merging coplanar facets ---------------------------------------------------------------------
@@ -428,6 +443,10 @@ FacetTriangulation triangulate_facets(const Plc3& plc, const FacetTriangulationO
   FacetTriangulator triangulator(plc, options, out);
   for (std::size_t f = 0; f < plc.facets.size(); ++f) triangulator.facet(f);
   if (options.merge_coplanar) CoplanarMerger(plc, out).run();
+  if (out.nonplanar_facets > 0) {
+    out.messages.push_back(std::to_string(out.nonplanar_facets) +
+                           " facet(s) not planar, triangulated in their projection (as asked)");
+  }
   return out;
 }
 

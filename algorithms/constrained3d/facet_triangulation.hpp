@@ -47,6 +47,13 @@ namespace dtlab {
 
 struct FacetTriangulationOptions {
   bool merge_coplanar = false;
+  // A facet whose vertices are not in one plane (quadrilaterals of a scanned or smoothed
+  // surface, off their plane by 1e-7): triangulated in its projection along the largest
+  // component of its first polygon's Newell normal instead of refused, each triangle a boundary
+  // face of its own with the facet's marker. Asked for, never silent: the count is in
+  // FacetTriangulation::nonplanar_facets and a message. The projection must be simple, as a
+  // planar facet's must (else refused by name).
+  bool triangulate_nonplanar = false;
   // How messages name facet f (0-based): empty, "facet <f + 1>".
   std::function<std::string(std::size_t)> facet_name;
   std::uint32_t first_vertex_number = 1;  // how messages number vertices (0 for OFF)
@@ -58,6 +65,7 @@ struct FacetTriangulation {
   std::vector<std::uint32_t> triangle_facet;            // the facet it comes from (merged: the group's first)
   std::size_t polygon_facets = 0;      // facets triangulated in their plane (not one triangle)
   std::size_t segments_alone = 0;      // facets of segments and isolated vertices only (no area)
+  std::size_t nonplanar_facets = 0;    // triangulate_nonplanar: facets triangulated in their projection
   std::vector<std::vector<std::uint32_t>> merged;  // merge_coplanar: each group of facets merged, sorted
   std::size_t merged_facets = 0;       // facets in those groups
   std::vector<std::string> messages;   // what the user should know (facets with no area left, ...)

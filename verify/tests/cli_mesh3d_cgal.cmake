@@ -21,7 +21,8 @@ set(_dtlab_cgal_cases
     "mesh:cube_quad.off:0.231"                          # quadrilateral faces
     "mesh:tripod.off" "mesh:tripod.off:0.0909"
     "refuse:open_cube.off" "refuse:degtri_sliding.off" "refuse:oblong-shuffled.off" "refuse:torus_quad.off"
-    "refuse:prim.off" "refuse:elk.off")
+    "refuse:prim.off" "refuse:elk.off"
+    "mesh_nonplanar:torus_quad.off" "mesh_nonplanar:double-torus-example.off")  # quads off their plane
 set(_dtlab_cgal_expect_open_cube.off "the surface is open: 4 free edge")
 set(_dtlab_cgal_expect_degtri_sliding.off "degenerate face")
 set(_dtlab_cgal_expect_oblong-shuffled.off "duplicate vertex pair")

@@ -167,6 +167,36 @@ TEST(FacetTriangulation, NonPlanarFacetIsRefusedNamingItsFarthestVertex) {
   expect_input_error([&] { triangulate_facets(ulp); }, {"facet 2 is not planar", "the farthest vertex 8 at"}, {1});
 }
 
+// Asked for (triangulate_nonplanar), the same non-planar facets are triangulated in their
+// projection: the cube stays closed and outward, each triangle's corners are its face's, the
+// count and the message say how many facets were.
+TEST(FacetTriangulation, NonPlanarFacetTriangulatedInItsProjectionWhereAsked) {
+  Plc3 ulp = quad_cube();
+  ulp.vertices[6].z = std::nextafter(2.0, 3.0);  // one corner of the top face an ulp off its plane
+  Plc3 bent = quad_cube();
+  bent.vertices[6].z = 2.25;                      // a quarter off
+  for (const Plc3* plc : {&ulp, &bent}) {
+    FacetTriangulationOptions o;
+    o.triangulate_nonplanar = true;
+    const FacetTriangulation t = triangulate_facets(*plc, o);
+    EXPECT_EQ(t.triangles.size(), 12u);
+    // Vertex 6 moves along z: in the planes of its two side faces, off the top face's.
+    EXPECT_EQ(t.nonplanar_facets, 1u);
+    ASSERT_FALSE(t.messages.empty());
+    EXPECT_NE(t.messages.back().find("1 facet(s) not planar, triangulated in their projection"), std::string::npos);
+    for (std::size_t i = 0; i < t.triangles.size(); ++i) {
+      const auto& q = plc->facets[t.triangle_facet[i]].polygons[0];
+      for (const std::uint32_t v : t.triangles[i]) EXPECT_NE(std::find(q.begin(), q.end(), v), q.end());
+    }
+    EXPECT_TRUE(closed_and_oriented(t.triangles));
+    EXPECT_TRUE(all_outward(plc->vertices, t.triangles, {1, 1, 1}));
+  }
+  // Planar facets are not counted.
+  FacetTriangulationOptions o;
+  o.triangulate_nonplanar = true;
+  EXPECT_EQ(triangulate_facets(quad_cube(), o).nonplanar_facets, 0u);
+}
+
 TEST(FacetTriangulation, NonSimplePolygonsAreRefusedByName) {
   Plc3 plc;
   plc.vertices = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {1, 1, 0}, {1, 0, 0}, {3, 1, 0}, {4, 0, 0}};

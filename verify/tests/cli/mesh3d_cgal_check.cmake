@@ -3,7 +3,8 @@
 #   cmake -DDTLAB=<dtlab binary> -DARCHIVE=<data.tar.gz> -DWORK=<scratch dir> -DCASE=<kind>:<file>[:<size>]
 #         [-DEXPECT=<regex>] -P mesh3d_cgal_check.cmake
 # kind "mesh": meshed (classical, or --size <size>) with --verify --stats: exit 0, the verifier's ok
-# line, at least 10 tetrahedra. kind "refuse": exit 1, stderr naming the file and matching EXPECT,
+# line, at least 10 tetrahedra; kind "mesh_nonplanar": the same with --triangulate-nonplanar, and
+# stderr counting the facets triangulated in their projection. kind "refuse": exit 1, stderr naming the file and matching EXPECT,
 # no output written.
 set(DTLAB_CLI_REQUIRED DTLAB ARCHIVE WORK CASE)
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake)
@@ -17,15 +18,21 @@ if(bad)
 endif()
 set(surface ${WORK}/data/meshes/${name})
 
-if(kind STREQUAL "mesh")
+if(kind STREQUAL "mesh" OR kind STREQUAL "mesh_nonplanar")
   set(size_args)
+  if(kind STREQUAL "mesh_nonplanar")
+    list(APPEND size_args --triangulate-nonplanar)
+  endif()
   list(LENGTH parts n)
   if(n GREATER 2)
     list(GET parts 2 size)
-    set(size_args --size ${size})
+    list(APPEND size_args --size ${size})
   endif()
   run(mesh ${surface} -o out.mesh ${size_args} --verify --stats)
   expect_success()
+  if(kind STREQUAL "mesh_nonplanar" AND NOT err MATCHES "[0-9]+ facet\\(s\\) not planar, triangulated in their projection")
+    fail("no count of the facets triangulated in their projection on stderr")
+  endif()
   if(NOT out MATCHES "(^|\n)ok: ")
     fail("no ok line from --verify")
   endif()
