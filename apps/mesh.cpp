@@ -181,7 +181,7 @@ void add_mesh(CLI::App& app) {
                 "(each triangle a boundary face with the face's marker) instead of refusing it; counted on stderr");
   cmd->add_option("--optimize", args->optimize,
                   "Closed surfaces: the optimization effort: light (one round), standard (rounds until Q_K <= 3 and "
-                  "dihedral angles in [20, 150] deg, or no more gain; the default), thorough (two relocation sweeps "
+                  "dihedral angles in [20, 150] deg and 97 % of Q_K in [1, 2], or no more gain; the default), thorough (two relocation sweeps "
                   "a round, rounds until no gain)")
       ->check(CLI::IsMember({"light", "standard", "thorough"}));
   cmd->add_flag("--remove-cavities", args->remove_cavities,

@@ -28,6 +28,7 @@ QualitySummary3 summarize_quality(const Mesh3& mesh) {
   double sum = 0.0;
   std::uint64_t finite = 0;
   double lowest_cosine = 1.0, highest_cosine = -1.0;
+  std::uint64_t in_1_2 = 0;
   for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
     if (!mesh.in_domain(t)) continue;
     const double q = tetrahedron_quality(mesh, t);
@@ -36,6 +37,7 @@ QualitySummary3 summarize_quality(const Mesh3& mesh) {
     lowest_cosine = std::min(lowest_cosine, cosines[0]);
     highest_cosine = std::max(highest_cosine, cosines[1]);
     ++s.tetrahedra;
+    in_1_2 += q <= 2.0;
     s.worst = std::max(s.worst, q);
     if (std::isfinite(q)) {
       sum += q;
@@ -45,6 +47,7 @@ QualitySummary3 summarize_quality(const Mesh3& mesh) {
   s.mean = finite > 0 ? sum / static_cast<double>(finite) : 0.0;
   constexpr double kDegrees = 57.295779513082320877;  // 180 / pi
   if (s.tetrahedra > 0) {
+    s.share_1_2 = static_cast<double>(in_1_2) / static_cast<double>(s.tetrahedra);
     s.min_dihedral_deg = std::acos(std::clamp(highest_cosine, -1.0, 1.0)) * kDegrees;
     s.max_dihedral_deg = std::acos(std::clamp(lowest_cosine, -1.0, 1.0)) * kDegrees;
   }
@@ -54,38 +57,42 @@ QualitySummary3 summarize_quality(const Mesh3& mesh) {
 namespace {
 
 bool goal_asked(const Optimize3dOptions& o) {
-  return o.goal_worst_quality > 0.0 || o.goal_min_dihedral_deg > 0.0 || o.goal_max_dihedral_deg > 0.0;
+  return o.goal_worst_quality > 0.0 || o.goal_min_dihedral_deg > 0.0 || o.goal_max_dihedral_deg > 0.0 ||
+         o.goal_share_1_2 > 0.0;
 }
+
+bool share_short(const QualitySummary3& q, const Optimize3dOptions& o) { return q.share_1_2 < o.goal_share_1_2; }
 
 bool meets_goal(const QualitySummary3& q, const Optimize3dOptions& o) {
   return (o.goal_worst_quality <= 0.0 || q.worst <= o.goal_worst_quality) && q.min_dihedral_deg >= o.goal_min_dihedral_deg &&
-         (o.goal_max_dihedral_deg <= 0.0 || q.max_dihedral_deg <= o.goal_max_dihedral_deg);
+         (o.goal_max_dihedral_deg <= 0.0 || q.max_dihedral_deg <= o.goal_max_dihedral_deg) && !share_short(q, o);
 }
 
-// Whether tetrahedron t misses the goal: a dihedral angle out of its bounds, or Q_K above it
-// (or above bad_quality).
-bool misses_goal(const Mesh3& mesh, std::uint32_t t, const Optimize3dOptions& o) {
+// Whether tetrahedron t misses the goal: a dihedral angle out of its bounds, Q_K above it (or
+// above bad_quality), or, while the share in [1, 2] is short (`share`), Q_K above 2.
+bool misses_goal(const Mesh3& mesh, std::uint32_t t, const Optimize3dOptions& o, bool share) {
   constexpr double kRadians = 0.017453292519943295769;  // pi / 180
   const double cos_min = std::cos(o.goal_min_dihedral_deg * kRadians);
   const double cos_max = o.goal_max_dihedral_deg > 0.0 ? std::cos(o.goal_max_dihedral_deg * kRadians) : -2.0;
-  const double worst = o.goal_worst_quality > 0.0 ? std::min(o.goal_worst_quality, o.bad_quality) : o.bad_quality;
+  double worst = o.goal_worst_quality > 0.0 ? std::min(o.goal_worst_quality, o.bad_quality) : o.bad_quality;
+  if (share) worst = std::min(worst, 2.0);
   const auto v = mesh.tetrahedron(t);
   const auto c = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
   return c[1] > cos_min || c[0] < cos_max || tetrahedron_quality(mesh, t) > worst;
 }
 
-std::uint64_t count_goal_misses(const Mesh3& mesh, const Optimize3dOptions& o) {
+std::uint64_t count_goal_misses(const Mesh3& mesh, const Optimize3dOptions& o, bool share) {
   std::uint64_t n = 0;
-  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) n += mesh.in_domain(t) && misses_goal(mesh, t, o);
+  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) n += mesh.in_domain(t) && misses_goal(mesh, t, o, share);
   return n;
 }
 
 // The region of a goal-driven round: the vertices of the tetrahedra that miss the goal, then
 // `goal_rings` times every vertex of a tetrahedron that has one.
-std::vector<std::uint8_t> goal_region(const Mesh3& mesh, const Optimize3dOptions& o) {
+std::vector<std::uint8_t> goal_region(const Mesh3& mesh, const Optimize3dOptions& o, bool share) {
   std::vector<std::uint8_t> active(mesh.vertex_capacity(), 0);
   for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
-    if (mesh.in_domain(t) && misses_goal(mesh, t, o))
+    if (mesh.in_domain(t) && misses_goal(mesh, t, o, share))
       for (const std::uint32_t w : mesh.tetrahedron(t)) active[w] = 1;
   }
   for (std::uint32_t ring = 0; ring < o.goal_rings; ++ring) {
@@ -207,6 +214,7 @@ Optimize3dOptions optimize3d_effort(const std::string& level) {
     o.relocation_sweeps = 1;
     o.goal_rings = 3;
     o.goal_worst_quality = 3.0;
+    o.goal_share_1_2 = 0.97;
     o.goal_min_dihedral_deg = 20.0;
     o.goal_max_dihedral_deg = 150.0;
   } else if (level != "thorough") {
@@ -235,7 +243,8 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     bool limit = false;
     // After the first round, with a goal and goal_rings: only around what misses it.
     std::vector<std::uint8_t> region_storage;
-    if (round > 0 && options.goal_rings > 0 && goal_asked(options)) region_storage = goal_region(mesh, options);
+    if (round > 0 && options.goal_rings > 0 && goal_asked(options))
+      region_storage = goal_region(mesh, options, share_short(last, options));
     const optimize3d_detail::Region region = region_storage;
     std::vector<std::uint32_t> seeds;
     if (!region.empty()) {
@@ -289,7 +298,7 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     if (goal_asked(options)) {
       // A round that leaves a tenth fewer tetrahedra missing the goal improved too: rounds
       // restricted to their region hardly move the mean.
-      const std::uint64_t misses = count_goal_misses(mesh, options);
+      const std::uint64_t misses = count_goal_misses(mesh, options, share_short(now, options));
       improved = improved || 10 * misses < 9 * last_misses;
       last_misses = misses;
     }
