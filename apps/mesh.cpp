@@ -182,7 +182,7 @@ void add_mesh(CLI::App& app) {
   cmd->add_option("--optimize", args->optimize,
                   "Closed surfaces: the optimization effort: light (one round), standard (rounds until Q_K <= 3 and "
                   "dihedral angles in [20, 150] deg and 97 % of Q_K in [1, 2], or no more gain; the default), thorough (two relocation sweeps "
-                  "a round, rounds until no gain)")
+                  "a round, rounds until no gain, then vertices moved for dihedral angles of at least 25 deg)")
       ->check(CLI::IsMember({"light", "standard", "thorough"}));
   cmd->add_flag("--remove-cavities", args->remove_cavities,
                 "Closed surfaces: drop the regions bounded only by shells nested inside another (a cube minus a ball)");

@@ -93,6 +93,20 @@ bool try_relocate3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, cons
 // One sweep: every free vertex once, worst ball first. Returns the number of vertices moved.
 std::uint64_t relocate_sweep3(Mesh3& mesh, const MetricField3& field, const Relocate3Options& options = {});
 
+// --- Relocation for dihedral angles (relocate_dihedral.cpp) -------------------------------------
+struct RelocateDihedral3Options {
+  double quality_limit = 3.0;      // the ball's worst Q_K may rise up to this (or its old worst)
+  double max_dihedral_cos = -2.0;  // the ball's largest angle may rise up to this one's (cos), or its old
+  double margin = 1e-9;            // the smallest angle's cosine must fall by this
+  std::uint32_t tries = 6;         // w = 1, 1/2, ...
+};
+// Moves a free vertex v toward the optimal point of its ball (8.17), else toward the centroid of
+// its link, with relaxation, when the ball's smallest dihedral angle grows, no new tetrahedron is
+// inverted (exact), its largest angle stays below max(old largest, max_dihedral_cos's) and its
+// worst Q_K at most max(old worst, quality_limit). True when v moved.
+bool try_relocate_dihedral3(Mesh3& mesh, std::uint32_t v, const MetricField3& field,
+                            const RelocateDihedral3Options& options = {});
+
 // --- Collapse (book §8.3.5) ---------------------------------------------------------------------
 struct Collapse3Options {
   double short_length = kShortEdgeLength3;  // collapse_pass3: edges shorter than this, in the metric

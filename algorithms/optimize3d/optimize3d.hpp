@@ -34,6 +34,12 @@ struct Optimize3dOptions {
   double goal_max_dihedral_deg = 0.0;
   // And at least this share of the tetrahedra with Q_K in [1, 2] (0: not asked).
   double goal_share_1_2 = 0.0;
+  // Stop at the first round that meets the goal (else the rounds run until no gain). Either way,
+  // a dihedral goal still missed after the rounds gets a last step: the vertices of the
+  // tetrahedra below goal_min_dihedral_deg moved for their dihedral angles
+  // (try_relocate_dihedral3, a few passes).
+  bool stop_at_goal = true;
+  bool dihedral_step = true;  // off: no last step (to compare)
   // With a goal, rounds after the first work only on the vertices within this many rings of
   // the tetrahedra that miss it (0: every round on the whole mesh).
   std::uint32_t goal_rings = 0;
@@ -95,7 +101,8 @@ QualitySummary3 summarize_quality(const Mesh3& mesh);
 //             improve (at most 6); rounds after the first only within 3 rings of the tetrahedra
 //             that miss the goal (with those of Q_K > 2 while the share is short);
 //   thorough  two relocation sweeps a round, rounds until the worst and the mean Q_K no longer
-//             improve (at most 6: the defaults).
+//             improve (at most 6: the former defaults), then the dihedral step toward
+//             angles in [25, 150] degrees.
 Optimize3dOptions optimize3d_effort(const std::string& level);
 
 // Optimizes `mesh` in place; `field` is the control space (empty: vertices keep their metrics,

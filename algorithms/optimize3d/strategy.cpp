@@ -107,6 +107,44 @@ std::vector<std::uint8_t> goal_region(const Mesh3& mesh, const Optimize3dOptions
   return active;
 }
 
+// The dihedral goal's last step, after the rounds: the free vertices of the tetrahedra whose
+// smallest dihedral angle is below goal_min_dihedral_deg, smallest angle first, moved by
+// try_relocate_dihedral3 (their balls' worst Q_K kept at most the mesh's worst, `worst`, or their
+// own; the largest angle below the goal's). A few passes while they still move some.
+std::uint64_t polish_dihedral_angles(Mesh3& mesh, const Optimize3dOptions& o, const MetricField3& field, double worst) {
+  constexpr double kRadians = 0.017453292519943295769;  // pi / 180
+  const double cos_min = std::cos(o.goal_min_dihedral_deg * kRadians);
+  RelocateDihedral3Options r;
+  r.quality_limit = worst;
+  if (o.goal_max_dihedral_deg > 0.0) r.max_dihedral_cos = std::cos(o.goal_max_dihedral_deg * kRadians);
+  std::uint64_t moved = 0;
+  std::vector<std::pair<double, std::uint32_t>> small;
+  std::vector<std::uint32_t> tried;
+  for (int pass = 0; pass < 3; ++pass) {
+    small.clear();
+    for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+      if (!mesh.in_domain(t)) continue;
+      const auto v = mesh.tetrahedron(t);
+      const auto c = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+      if (c[1] > cos_min) small.emplace_back(-c[1], t);
+    }
+    std::sort(small.begin(), small.end());
+    tried.clear();
+    std::uint64_t moved_now = 0;
+    for (const auto& [key, t] : small) {
+      if (!mesh.in_domain(t)) continue;
+      for (const std::uint32_t v : mesh.tetrahedron(t)) {
+        if (std::find(tried.begin(), tried.end(), v) != tried.end()) continue;
+        tried.push_back(v);
+        moved_now += try_relocate_dihedral3(mesh, v, field, r) ? 1 : 0;
+      }
+    }
+    moved += moved_now;
+    if (moved_now == 0) break;
+  }
+  return moved;
+}
+
 constexpr std::array<std::array<std::uint32_t, 2>, 6> kEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 
 void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field,
@@ -217,7 +255,11 @@ Optimize3dOptions optimize3d_effort(const std::string& level) {
     o.goal_share_1_2 = 0.97;
     o.goal_min_dihedral_deg = 20.0;
     o.goal_max_dihedral_deg = 150.0;
-  } else if (level != "thorough") {
+  } else if (level == "thorough") {
+    o.goal_min_dihedral_deg = 25.0;
+    o.goal_max_dihedral_deg = 150.0;
+    o.stop_at_goal = false;
+  } else {
     throw InputError("unknown optimization effort '" + level + "' (light, standard, thorough)");
   }
   return o;
@@ -304,7 +346,7 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     }
     last = now;
     if (limit) break;
-    if (goal_asked(options) && meets_goal(now, options)) {
+    if (options.stop_at_goal && goal_asked(options) && meets_goal(now, options)) {
       stats.stopped_by = "goal";
       break;
     }
@@ -314,6 +356,11 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
       stats.stopped_by = "converged";
       break;
     }
+  }
+  if (options.dihedral_step && options.goal_min_dihedral_deg > 0.0 &&
+      last.min_dihedral_deg < options.goal_min_dihedral_deg && options.relocation) {
+    stats.relocations += polish_dihedral_angles(mesh, options, field, last.worst);
+    last = summarize_quality(mesh);
   }
   stats.worst_after = last.worst;
   stats.mean_after = last.mean;

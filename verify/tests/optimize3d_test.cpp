@@ -613,3 +613,81 @@ TEST(Optimize3d, DihedralRangeOfKnownTetrahedra) {
 
 }  // namespace
 }  // namespace dtlab
+
+namespace dtlab {
+namespace {
+
+// The smallest dihedral angle's cosine (the largest cosine) and the worst Q_K over v's ball.
+std::pair<double, double> ball_angles(const Mesh3& m, std::uint32_t v) {
+  std::vector<std::uint32_t> ball;
+  m.ball(v, ball);
+  double smallest_cos = -1.0, worst = 0.0;
+  for (const std::uint32_t t : ball) {
+    if (m.is_ghost(t)) continue;
+    const auto w = m.tetrahedron(t);
+    smallest_cos = std::max(smallest_cos, dihedral_cosine_range(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3]))[1]);
+    worst = std::max(worst, tetrahedron_quality(m, t));
+  }
+  return {smallest_cos, worst};
+}
+
+// try_relocate_dihedral3 on the vertices of the tetrahedra with the smallest dihedral angles of a
+// random mesh: every accepted move leaves the mesh valid (exact), the boundary as it was, the
+// ball's smallest angle larger and its worst Q_K at most max(old worst, quality_limit); some move.
+TEST(Optimize3d, DihedralRelocationGrowsTheSmallestAngle) {
+  Mesh3 m = delaunay_mesh(cube_points(300, 17));
+  for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) m.set_metric(v, Metric3::isotropic(0.15));
+  const Boundary b = boundary_of(m);
+  std::vector<std::pair<double, std::uint32_t>> small;
+  for (std::uint32_t t = 0; t < m.tetrahedron_capacity(); ++t) {
+    if (!m.in_domain(t)) continue;
+    const auto w = m.tetrahedron(t);
+    small.emplace_back(-dihedral_cosine_range(m.point(w[0]), m.point(w[1]), m.point(w[2]), m.point(w[3]))[1], t);
+  }
+  std::sort(small.begin(), small.end());
+  small.resize(40);
+  RelocateDihedral3Options o;
+  o.quality_limit = 4.0;
+  int moved = 0;
+  for (const auto& [key, t] : small) {
+    if (!m.in_domain(t)) continue;
+    for (const std::uint32_t v : m.tetrahedron(t)) {
+      if ((m.flags(v) & (Mesh3::kFixed | Mesh3::kOnBoundary)) != 0) continue;
+      const auto [cos_before, worst_before] = ball_angles(m, v);
+      if (!try_relocate_dihedral3(m, v, {}, o)) continue;
+      ++moved;
+      m.check();
+      const auto [cos_after, worst_after] = ball_angles(m, v);
+      EXPECT_LT(cos_after, cos_before);
+      EXPECT_LE(worst_after, std::max(worst_before, o.quality_limit));
+    }
+  }
+  EXPECT_GT(moved, 0);
+  EXPECT_EQ(boundary_of(m), b);
+}
+
+// thorough's dihedral step after its rounds (the same rounds without it for comparison): the
+// smallest angle no smaller than the rounds left it, the worst Q_K not larger, something moved.
+TEST(Optimize3d, ThoroughEndsWithTheDihedralStep) {
+  const auto field = [](const Vec3&) { return Metric3::isotropic(0.15); };
+  auto mesh = [] {
+    Mesh3 m = delaunay_mesh(cube_points(400, 29));
+    for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v) m.set_metric(v, Metric3::isotropic(0.15));
+    return m;
+  };
+  Optimize3dOptions without = optimize3d_effort("thorough");
+  without.dihedral_step = false;
+  Mesh3 a = mesh(), c = mesh();
+  const Optimize3dStats sa = optimize3d(a, without, field);
+  const Optimize3dStats s = optimize3d(c, optimize3d_effort("thorough"), field);
+  c.check();
+  const QualitySummary3 qa = summarize_quality(a), qc = summarize_quality(c);
+  EXPECT_GE(qc.min_dihedral_deg, qa.min_dihedral_deg - 1e-9);
+  EXPECT_LE(qc.worst, qa.worst + 1e-12);
+  EXPECT_NE(s.stopped_by, "goal");  // thorough never stops at the goal
+  EXPECT_EQ(s.rounds, sa.rounds);
+  if (qa.min_dihedral_deg < 25.0) EXPECT_GT(s.relocations, sa.relocations);
+}
+
+}  // namespace
+}  // namespace dtlab
