@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -131,6 +132,33 @@ struct AttemptMemo {
   explicit AttemptMemo(const Mesh3& mesh) : relocation(mesh), shell(mesh) {}
   EpochMemo relocation, shell;
 };
+
+// The relaxation (8.13) of vertex relocation, shared by relocate.cpp and relocate_dihedral.cpp:
+// P' = (1 - w) P + w T for each finite target T in turn and w = 1, 1/2, ... (`tries` values), each
+// candidate with its metric from `field` (empty: v's own). The first that `accept(P', metric)`
+// takes is applied: v moved there with that metric and every vertex of `ball` (v's) touched, its
+// tetrahedra having changed shape (Mesh3's change epochs). True when v moved.
+template <class Accept>
+bool relax_vertex(Mesh3& mesh, std::uint32_t v, std::span<const Vec3> targets, std::uint32_t tries,
+                  const MetricField3& field, std::span<const std::uint32_t> ball, Accept accept) {
+  const Vec3 p = mesh.point(v);
+  for (const Vec3& target : targets) {
+    if (!std::isfinite(target.x) || !std::isfinite(target.y) || !std::isfinite(target.z)) continue;
+    double w = 1.0;
+    for (std::uint32_t k = 0; k < tries; ++k, w *= 0.5) {
+      const Vec3 moved = (1.0 - w) * p + w * target;
+      if (moved == p) break;
+      const Metric3 metric = field ? field(moved) : mesh.metric(v);
+      if (!accept(moved, metric)) continue;
+      mesh.set_point(v, moved);
+      mesh.set_metric(v, metric);
+      for (const std::uint32_t t : ball)
+        for (std::uint32_t i = 0; i < 4; ++i) mesh.touch(mesh.vertex(t, i));
+      return true;
+    }
+  }
+  return false;
+}
 
 // The local index (0..5, kEdges order: 01 02 03 12 13 23) of edge ab in tetrahedron t.
 std::uint32_t local_edge(const Mesh3& mesh, std::uint32_t t, std::uint32_t a, std::uint32_t b) noexcept;

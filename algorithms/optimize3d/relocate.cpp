@@ -127,7 +127,6 @@ struct RelocateScratch {
 bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const Relocate3Options& options,
                           RelocateScratch& s) {
   const std::vector<std::uint32_t>& ball = s.ball;
-  const Vec3 p = mesh.point(v);
   std::vector<std::array<std::uint32_t, 3>>& facets = s.facets;
   facets.clear();
   s.quality.clear();
@@ -164,58 +163,43 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
   auto index_at = [](std::size_t first, std::size_t k) { return k == 0 ? first : (k <= first ? k - 1 : k); };
   s.prepared.resize(n);
   s.state.assign(n, 0);
-  for (const Vec3& target : targets) {
-    if (!std::isfinite(target.x) || !std::isfinite(target.y) || !std::isfinite(target.z)) continue;
-    double w = 1.0;
-    for (std::uint32_t k = 0; k < options.tries; ++k, w *= 0.5) {
-      const Vec3 moved = (1.0 - w) * p + w * target;
-      if (moved == p) break;
-      const Metric3 metric = field ? field(moved) : mesh.metric(v);
-      const bool euclidean = metric.is_scalar();
-      // The quality bound first, then the exact orientations: most candidates fail the bound
-      // (early, on the facet that refused the last one), and a candidate is kept only when both
-      // hold, so the order changes no decision. Q_K without the flatness test, as
-      // positive_quality_in computes it (in isotropic metrics, the Euclidean value); of an
-      // inverted candidate it is some finite or infinite value, and the orientation refuses it.
-      // The ball's new worst is below the bound iff each new tetrahedron's Q_K is.
-      bool better = true;
-      for (std::size_t j = 0; j < n && better; ++j) {
-        const std::size_t i = index_at(first_worse, j);
-        const auto& f = facets[i];
-        if (s.state[i] == 0) {
-          const bool iso = mesh.metric(f[0]).is_scalar() && mesh.metric(f[1]).is_scalar() && mesh.metric(f[2]).is_scalar();
-          if (iso) s.prepared[i] = FacetQuality3(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]));
-          s.state[i] = iso ? 1 : 2;
-        }
-        better = euclidean && s.state[i] == 1
-                     ? s.prepared[i].below(moved, bound)
-                     : positive_quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved, mesh.metric(f[0]),
-                                           mesh.metric(f[1]), mesh.metric(f[2]), metric) < bound;
-        if (!better) first_worse = i;
+  const bool moved_v = relax_vertex(mesh, v, targets, options.tries, field, ball, [&](const Vec3& moved, const Metric3& metric) {
+    const bool euclidean = metric.is_scalar();
+    // The quality bound first, then the exact orientations: most candidates fail the bound
+    // (early, on the facet that refused the last one), and a candidate is kept only when both
+    // hold, so the order changes no decision. Q_K without the flatness test, as
+    // positive_quality_in computes it (in isotropic metrics, the Euclidean value); of an
+    // inverted candidate it is some finite or infinite value, and the orientation refuses it.
+    // The ball's new worst is below the bound iff each new tetrahedron's Q_K is.
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t i = index_at(first_worse, j);
+      const auto& f = facets[i];
+      if (s.state[i] == 0) {
+        const bool iso = mesh.metric(f[0]).is_scalar() && mesh.metric(f[1]).is_scalar() && mesh.metric(f[2]).is_scalar();
+        if (iso) s.prepared[i] = FacetQuality3(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]));
+        s.state[i] = iso ? 1 : 2;
       }
-      if (!better) continue;
-      bool valid = true;
-      for (std::size_t j = 0; j < n; ++j) {
-        const auto& f = facets[index_at(first_flat, j)];
-        if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved) != Sign::Positive) {
-          first_flat = index_at(first_flat, j);
-          valid = false;
-          break;
-        }
-      }
-      if (valid) {
-        mesh.set_point(v, moved);
-        mesh.set_metric(v, metric);
-        // Every tetrahedron of the ball changed shape (Mesh3's change epochs).
-        for (const std::uint32_t t : ball)
-          for (std::uint32_t i = 0; i < 4; ++i) mesh.touch(mesh.vertex(t, i));
-        if (s.known)
-          for (const std::uint32_t t : ball) (*s.known)[t] = std::numeric_limits<double>::quiet_NaN();
-        return true;
+      const bool better = euclidean && s.state[i] == 1
+                              ? s.prepared[i].below(moved, bound)
+                              : positive_quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved,
+                                                    mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]), metric) < bound;
+      if (!better) {
+        first_worse = i;
+        return false;
       }
     }
-  }
-  return false;
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto& f = facets[index_at(first_flat, j)];
+      if (orient3d(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved) != Sign::Positive) {
+        first_flat = index_at(first_flat, j);
+        return false;
+      }
+    }
+    return true;
+  });
+  if (moved_v && s.known)
+    for (const std::uint32_t t : ball) (*s.known)[t] = std::numeric_limits<double>::quiet_NaN();
+  return moved_v;
 }
 
 }  // namespace

@@ -53,42 +53,22 @@ bool try_relocate_dihedral3(Mesh3& mesh, std::uint32_t v, const MetricField3& fi
   link = (1.0 / static_cast<double>(facets.size())) * link;
   const double quality_bound = std::max(before.worst, options.quality_limit);
   const double largest_bound = std::min(before.largest_cos, options.max_dihedral_cos);
-  const Vec3 p = mesh.point(v);
   const std::array<Vec3, 2> targets{optimal_point(mesh, v, ball), link};
-  for (const Vec3& target : targets) {
-    if (!std::isfinite(target.x) || !std::isfinite(target.y) || !std::isfinite(target.z)) continue;
-    double w = 1.0;
-    for (std::uint32_t k = 0; k < options.tries; ++k, w *= 0.5) {
-      const Vec3 moved = (1.0 - w) * p + w * target;
-      if (moved == p) break;
-      const Metric3 metric = field ? field(moved) : mesh.metric(v);
-      bool ok = true;
-      double smallest_cos = -1.0;
-      for (const auto& f : facets) {
-        const Vec3 &a = mesh.point(f[0]), &b = mesh.point(f[1]), &c = mesh.point(f[2]);
-        if (orient3d(a, b, c, moved) != Sign::Positive) {
-          ok = false;
-          break;
-        }
-        const auto range = dihedral_cosine_range(a, b, c, moved);
-        smallest_cos = std::max(smallest_cos, range[1]);
-        if (range[0] < largest_bound ||
-            positive_quality_in(a, b, c, moved, mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]), metric) >
-                quality_bound) {
-          ok = false;
-          break;
-        }
-      }
-      // The smallest angle must grow: its cosine fall, by a margin against rounding.
-      if (!ok || !(smallest_cos < before.smallest_cos - options.margin)) continue;
-      mesh.set_point(v, moved);
-      mesh.set_metric(v, metric);
-      for (const std::uint32_t t : ball)
-        for (std::uint32_t i = 0; i < 4; ++i) mesh.touch(mesh.vertex(t, i));
-      return true;
+  return relax_vertex(mesh, v, targets, options.tries, field, ball, [&](const Vec3& moved, const Metric3& metric) {
+    double smallest_cos = -1.0;
+    for (const auto& f : facets) {
+      const Vec3 &a = mesh.point(f[0]), &b = mesh.point(f[1]), &c = mesh.point(f[2]);
+      if (orient3d(a, b, c, moved) != Sign::Positive) return false;
+      const auto range = dihedral_cosine_range(a, b, c, moved);
+      smallest_cos = std::max(smallest_cos, range[1]);
+      if (range[0] < largest_bound ||
+          positive_quality_in(a, b, c, moved, mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]), metric) >
+              quality_bound)
+        return false;
     }
-  }
-  return false;
+    // The smallest angle must grow: its cosine fall, by a margin against rounding.
+    return smallest_cos < before.smallest_cos - options.margin;
+  });
 }
 
 }  // namespace dtlab

@@ -68,22 +68,39 @@ bool meets_goal(const QualitySummary3& q, const Optimize3dOptions& o) {
          (o.goal_max_dihedral_deg <= 0.0 || q.max_dihedral_deg <= o.goal_max_dihedral_deg) && !share_short(q, o);
 }
 
-// Whether tetrahedron t misses the goal: a dihedral angle out of its bounds, Q_K above it (or
-// above bad_quality), or, while the share in [1, 2] is short (`share`), Q_K above 2.
-bool misses_goal(const Mesh3& mesh, std::uint32_t t, const Optimize3dOptions& o, bool share) {
-  constexpr double kRadians = 0.017453292519943295769;  // pi / 180
-  const double cos_min = std::cos(o.goal_min_dihedral_deg * kRadians);
-  const double cos_max = o.goal_max_dihedral_deg > 0.0 ? std::cos(o.goal_max_dihedral_deg * kRadians) : -2.0;
-  double worst = o.goal_worst_quality > 0.0 ? std::min(o.goal_worst_quality, o.bad_quality) : o.bad_quality;
-  if (share) worst = std::min(worst, 2.0);
-  const auto v = mesh.tetrahedron(t);
-  const auto c = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
-  return c[1] > cos_min || c[0] < cos_max || tetrahedron_quality(mesh, t) > worst;
-}
+// Whether a tetrahedron misses the goal: a dihedral angle out of its bounds, Q_K above it (or
+// above bad_quality), or, while the share in [1, 2] is short (`share`), Q_K above 2. The bounds
+// as cosines, computed once.
+class GoalTest {
+ public:
+  GoalTest(const Optimize3dOptions& o, bool share) {
+    constexpr double kRadians = 0.017453292519943295769;  // pi / 180
+    cos_min_ = std::cos(o.goal_min_dihedral_deg * kRadians);
+    cos_max_ = o.goal_max_dihedral_deg > 0.0 ? std::cos(o.goal_max_dihedral_deg * kRadians) : -2.0;
+    worst_ = o.goal_worst_quality > 0.0 ? std::min(o.goal_worst_quality, o.bad_quality) : o.bad_quality;
+    if (share) worst_ = std::min(worst_, 2.0);
+  }
+  // The cosine of the smallest dihedral angle of t when it is below the goal's, else +2: the
+  // sort key of the dihedral step.
+  double small_angle_cos(const Mesh3& mesh, std::uint32_t t) const {
+    const auto v = mesh.tetrahedron(t);
+    const auto c = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+    return c[1] > cos_min_ ? c[1] : 2.0;
+  }
+  bool misses(const Mesh3& mesh, std::uint32_t t) const {
+    const auto v = mesh.tetrahedron(t);
+    const auto c = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+    return c[1] > cos_min_ || c[0] < cos_max_ || tetrahedron_quality(mesh, t) > worst_;
+  }
+
+ private:
+  double cos_min_ = 2.0, cos_max_ = -2.0, worst_ = 0.0;
+};
 
 std::uint64_t count_goal_misses(const Mesh3& mesh, const Optimize3dOptions& o, bool share) {
+  const GoalTest goal(o, share);
   std::uint64_t n = 0;
-  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) n += mesh.in_domain(t) && misses_goal(mesh, t, o, share);
+  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) n += mesh.in_domain(t) && goal.misses(mesh, t);
   return n;
 }
 
@@ -91,8 +108,9 @@ std::uint64_t count_goal_misses(const Mesh3& mesh, const Optimize3dOptions& o, b
 // `goal_rings` times every vertex of a tetrahedron that has one.
 std::vector<std::uint8_t> goal_region(const Mesh3& mesh, const Optimize3dOptions& o, bool share) {
   std::vector<std::uint8_t> active(mesh.vertex_capacity(), 0);
+  const GoalTest goal(o, share);
   for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
-    if (mesh.in_domain(t) && misses_goal(mesh, t, o, share))
+    if (mesh.in_domain(t) && goal.misses(mesh, t))
       for (const std::uint32_t w : mesh.tetrahedron(t)) active[w] = 1;
   }
   for (std::uint32_t ring = 0; ring < o.goal_rings; ++ring) {
@@ -113,7 +131,7 @@ std::vector<std::uint8_t> goal_region(const Mesh3& mesh, const Optimize3dOptions
 // own; the largest angle below the goal's). A few passes while they still move some.
 std::uint64_t polish_dihedral_angles(Mesh3& mesh, const Optimize3dOptions& o, const MetricField3& field, double worst) {
   constexpr double kRadians = 0.017453292519943295769;  // pi / 180
-  const double cos_min = std::cos(o.goal_min_dihedral_deg * kRadians);
+  const GoalTest goal(o, false);
   RelocateDihedral3Options r;
   r.quality_limit = worst;
   if (o.goal_max_dihedral_deg > 0.0) r.max_dihedral_cos = std::cos(o.goal_max_dihedral_deg * kRadians);
@@ -124,9 +142,8 @@ std::uint64_t polish_dihedral_angles(Mesh3& mesh, const Optimize3dOptions& o, co
     small.clear();
     for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
       if (!mesh.in_domain(t)) continue;
-      const auto v = mesh.tetrahedron(t);
-      const auto c = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
-      if (c[1] > cos_min) small.emplace_back(-c[1], t);
+      const double c = goal.small_angle_cos(mesh, t);
+      if (c <= 1.0) small.emplace_back(-c, t);
     }
     std::sort(small.begin(), small.end());
     tried.clear();

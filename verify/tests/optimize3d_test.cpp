@@ -686,7 +686,9 @@ TEST(Optimize3d, ThoroughEndsWithTheDihedralStep) {
   EXPECT_LE(qc.worst, qa.worst + 1e-12);
   EXPECT_NE(s.stopped_by, "goal");  // thorough never stops at the goal
   EXPECT_EQ(s.rounds, sa.rounds);
-  if (qa.min_dihedral_deg < 25.0) EXPECT_GT(s.relocations, sa.relocations);
+  if (qa.min_dihedral_deg < 25.0) {
+    EXPECT_GT(s.relocations, sa.relocations);
+  }
 }
 
 }  // namespace
