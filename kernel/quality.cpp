@@ -52,14 +52,9 @@ double longest_edge(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) 
   return h_max;
 }
 
-}  // namespace
-
-double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
-  if (orient3d(a, b, c, d) == Sign::Zero) return kInfinity;
-  return shape_quality_nonflat(a, b, c, d);
-}
-
-double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+// Q_K from the hypot norms: the value outside the range where quality_from_squares (below) keeps
+// its relative precision (very small or very large differences of coordinates).
+double shape_quality_by_hypot(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
   const double h_max = longest_edge(a, b, c, d);
   const Vec3 ba = b - a, ca = c - a, da = d - a;
   // rho = |det| / (sum over the faces of |cross|).
@@ -68,6 +63,57 @@ double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const 
   const double six_volume = std::fabs(dot(ba, cross(ca, da)));
   if (six_volume == 0.0) return kInfinity;
   return kQualityAlpha3d * h_max * twice_area / six_volume;
+}
+
+constexpr double kLowSquare = 1e-200;  // above it, squared areas are normal numbers
+
+// Q_K of the tetrahedron with edges ba, ca, da (from a) and cb, db (from b), the first facet's
+// twice-area given, from the square roots of the rounded squared norms (each correctly rounded,
+// about five times cheaper than hypot's scaled sums); NaN outside the range where those squares
+// keep their relative precision (squared edges within [1e-140, 1e140] keep the squared areas
+// below 1e280), so that every comparison with it fails.
+double quality_from_squares(double s_max, double area_abc, const Vec3& ba, const Vec3& ca, const Vec3& da,
+                            const Vec3& cb, const Vec3& db) noexcept {
+  const Vec3 n1 = cross(ba, da), n2 = cross(ca, da), n3 = cross(cb, db);
+  const double q1 = dot(n1, n1), q2 = dot(n2, n2), q3 = dot(n3, n3);
+  const double six_volume = std::fabs(dot(ba, cross(ca, da)));
+  if (!(s_max > 1e-140 && s_max < 1e140 && q1 > kLowSquare && q2 > kLowSquare && q3 > kLowSquare &&
+        six_volume > 0.0))
+    return std::numeric_limits<double>::quiet_NaN();
+  const double twice_area = area_abc + std::sqrt(q1) + std::sqrt(q2) + std::sqrt(q3);
+  return kQualityAlpha3d * std::sqrt(s_max) * twice_area / six_volume;
+}
+
+// The first facet's twice-area for quality_from_squares, NaN where its square is too small.
+double root_area(const Vec3& ba, const Vec3& ca) noexcept {
+  const Vec3 n0 = cross(ba, ca);
+  const double q0 = dot(n0, n0);
+  return q0 > kLowSquare ? std::sqrt(q0) : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Q_K by the square roots of the squares where they keep their precision, NaN elsewhere.
+double quality_by_squares(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  const Vec3 ba = b - a, ca = c - a, da = d - a, cb = c - b, db = d - b, dc = d - c;
+  const double s_max = std::max({dot(ba, ba), dot(ca, ca), dot(da, da), dot(cb, cb), dot(db, db), dot(dc, dc)});
+  const double area = root_area(ba, ca);
+  if (std::isnan(area)) return area;
+  return quality_from_squares(s_max, area, ba, ca, da, cb, db);
+}
+
+}  // namespace
+
+double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  if (orient3d(a, b, c, d) == Sign::Zero) return kInfinity;
+  return shape_quality_nonflat(a, b, c, d);
+}
+
+double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
+  const double q = quality_by_squares(a, b, c, d);
+  return std::isnan(q) ? shape_quality_by_hypot(a, b, c, d) : q;
+}
+
+bool shape_quality_clearly_at_least(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double bound) noexcept {
+  return quality_by_squares(a, b, c, d) >= bound;  // NaN (out of range): false
 }
 
 std::array<double, 2> dihedral_cosine_range(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
@@ -82,7 +128,8 @@ std::array<double, 2> dihedral_cosine_range(const Vec3& a, const Vec3& b, const 
     Vec3 m = cross(y - x, z - x);
     if (dot(m, p[i] - x) > 0.0) m = -1.0 * m;
     n[i] = m;
-    length[i] = norm(m);
+    const double q = dot(m, m);  // its root where the square keeps its precision, hypot's elsewhere
+    length[i] = q > kLowSquare && q < 1e280 ? std::sqrt(q) : norm(m);
   }
   double lo = 1.0, hi = -1.0;
   for (int i = 0; i < 4; ++i)
@@ -99,70 +146,21 @@ FacetQuality3::FacetQuality3(const Vec3& a, const Vec3& b, const Vec3& c) noexce
   s_ba_ = dot(ba_, ba_);
   s_ca_ = dot(ca_, ca_);
   s_cb_ = dot(cb_, cb_);
-  area_abc_ = norm(cross(ba_, ca_));
+  root_area_abc_ = root_area(ba_, ca_);
 }
 
-// shape_quality_nonflat and longest_edge above, step for step, with the facet's terms read.
+// shape_quality_nonflat above with the facet's terms read.
 double FacetQuality3::with_apex(const Vec3& d) const noexcept {
-  const Vec3 da = d - a_, db = d - b_, dc = d - c_;
-  // The edges in longest_edge's order: ba, ca, da, cb, db, dc.
-  const std::array<const Vec3*, 6> e{&ba_, &ca_, &da, &cb_, &db, &dc};
-  const std::array<double, 6> s{s_ba_, s_ca_, dot(da, da), s_cb_, dot(db, db), dot(dc, dc)};
-  double s_max = 0.0;
-  for (int i = 0; i < 6; ++i) s_max = std::max(s_max, s[i]);
-  const bool safe = s_max > 1e-280 && s_max < 1e280;
-  const double floor = safe ? s_max * (1.0 - 1e-9) : 0.0;
-  double h_max = 0.0;
-  for (int i = 0; i < 6; ++i)
-    if (!safe || s[i] >= floor) h_max = std::max(h_max, norm(*e[i]));
-  const double twice_area = area_abc_ + norm(cross(ba_, da)) + norm(cross(ca_, da)) + norm(cross(cb_, db));
-  const double six_volume = std::fabs(dot(ba_, cross(ca_, da)));
-  if (six_volume == 0.0) return kInfinity;
-  return kQualityAlpha3d * h_max * twice_area / six_volume;
+  if (!std::isnan(root_area_abc_)) {
+    const Vec3 da = d - a_, db = d - b_, dc = d - c_;
+    const double s_max = std::max({s_ba_, s_ca_, dot(da, da), s_cb_, dot(db, db), dot(dc, dc)});
+    const double q = quality_from_squares(s_max, root_area_abc_, ba_, ca_, da, cb_, db);
+    if (!std::isnan(q)) return q;
+  }
+  return shape_quality_by_hypot(a_, b_, c_, d);
 }
 
-namespace {
-
-// The two quality filters below: squares whose roots stay within a few ulps of hypot's norms,
-// and the relative margin that clears that difference by far.
-constexpr double kLowSquare = 1e-200;  // above it, squared areas are normal numbers
-constexpr double kClear = 1e-12;
-
-// Q_K of the tetrahedron with edges ba, ca, da (from a) and cb, db (from b), the first facet's
-// twice-area given, from the square roots of the rounded squared norms instead of hypot; NaN
-// outside the range where those squares keep their relative precision (squared edges within
-// [1e-140, 1e140] keep the squared areas below 1e280), so that every comparison with it fails.
-double quality_from_squares(double s_max, double area_abc, const Vec3& ba, const Vec3& ca, const Vec3& da,
-                            const Vec3& cb, const Vec3& db) noexcept {
-  const Vec3 n1 = cross(ba, da), n2 = cross(ca, da), n3 = cross(cb, db);
-  const double q1 = dot(n1, n1), q2 = dot(n2, n2), q3 = dot(n3, n3);
-  const double six_volume = std::fabs(dot(ba, cross(ca, da)));
-  if (!(s_max > 1e-140 && s_max < 1e140 && q1 > kLowSquare && q2 > kLowSquare && q3 > kLowSquare &&
-        six_volume > 0.0))
-    return std::numeric_limits<double>::quiet_NaN();
-  const double twice_area = area_abc + std::sqrt(q1) + std::sqrt(q2) + std::sqrt(q3);
-  return kQualityAlpha3d * std::sqrt(s_max) * twice_area / six_volume;
-}
-
-}  // namespace
-
-bool shape_quality_clearly_at_least(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double bound) noexcept {
-  const Vec3 ba = b - a, ca = c - a, da = d - a, cb = c - b, db = d - b, dc = d - c;
-  const double s_max = std::max({dot(ba, ba), dot(ca, ca), dot(da, da), dot(cb, cb), dot(db, db), dot(dc, dc)});
-  const Vec3 n0 = cross(ba, ca);
-  const double q0 = dot(n0, n0);
-  if (!(q0 > kLowSquare)) return false;
-  return quality_from_squares(s_max, std::sqrt(q0), ba, ca, da, cb, db) > bound * (1.0 + kClear);
-}
-
-bool FacetQuality3::below(const Vec3& d, double bound) const noexcept {
-  const Vec3 da = d - a_, db = d - b_, dc = d - c_;
-  const double s_max = std::max({s_ba_, s_ca_, s_cb_, dot(da, da), dot(db, db), dot(dc, dc)});
-  const double q = quality_from_squares(s_max, area_abc_, ba_, ca_, da, cb_, db);
-  if (q < bound * (1.0 - kClear)) return true;
-  if (q > bound * (1.0 + kClear)) return false;
-  return with_apex(d) < bound;  // too close to call, or out of the filter's range (NaN)
-}
+bool FacetQuality3::below(const Vec3& d, double bound) const noexcept { return with_apex(d) < bound; }
 
 namespace {
 

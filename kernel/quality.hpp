@@ -34,10 +34,10 @@ double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const 
 double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
                              const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept;
 
-// A filter for shape_quality_nonflat(a, b, c, d) >= bound (Euclidean): true only when it holds,
-// decided with the square roots of the rounded squared norms instead of hypot (a few ulps
-// apart) where they clear the bound by a relative 1e-12; false when unsure or below. Whatever
-// the orientation of (a, b, c, d) (the measure of |det|).
+// A filter for shape_quality_nonflat(a, b, c, d) >= bound (Euclidean), before the exact
+// orientation test: true only when it holds; false when below, or when the edges are so short or
+// so long that the value needs hypot's norms. Whatever the orientation of (a, b, c, d) (the
+// measure of |det|).
 bool shape_quality_clearly_at_least(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double bound) noexcept;
 
 // shape_quality_nonflat(a, b, c, d) (Euclidean) for many apexes d over one facet (a, b, c), as
@@ -48,16 +48,13 @@ class FacetQuality3 {
   FacetQuality3() = default;
   FacetQuality3(const Vec3& a, const Vec3& b, const Vec3& c) noexcept;
   double with_apex(const Vec3& d) const noexcept;
-  // with_apex(d) < bound, by a filter: the same measures with the square roots of the rounded
-  // squared norms instead of hypot (a few ulps apart), trusted where they clear the bound by a
-  // relative 1e-12, far beyond that difference; else, and outside the range where the squares
-  // keep their relative precision, with_apex itself. The same answer as with_apex(d) < bound.
+  // with_apex(d) < bound.
   bool below(const Vec3& d, double bound) const noexcept;
 
  private:
   Vec3 a_{}, b_{}, c_{}, ba_{}, ca_{}, cb_{};
   double s_ba_ = 0.0, s_ca_ = 0.0, s_cb_ = 0.0;  // squared lengths
-  double area_abc_ = 0.0;                        // |ba x ca|
+  double root_area_abc_ = 0.0;                   // |ba x ca| from its square, NaN when too small
 };
 
 // The cosines of the largest and the smallest of the six interior dihedral angles of a

@@ -15,7 +15,6 @@
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/quality.hpp"
-#include "kernel/radix_sort.hpp"
 #include "mesh/io/text_output.hpp"
 
 namespace dtlab {
@@ -78,21 +77,49 @@ double signed_measure(const std::array<Vec3, 4>& p) noexcept { return signed_vol
 double angle_between(const Vec2& u, const Vec2& v) noexcept { return std::atan2(std::fabs(cross(u, v)), dot(u, v)); }
 double angle_between(const Vec3& u, const Vec3& v) noexcept { return std::atan2(norm(cross(u, v)), dot(u, v)); }
 
+// The smallest and the largest of the angles between pairs (u, v), each measured by
+// angle_between only when it can be one of them: its cosine from the normalised dot product
+// (within a few 1e-16 of the true cosine where the squared norms are normal numbers) comes within
+// 1e-9 of the largest or the smallest such cosine seen so far. The extreme angles are always among
+// those measured, so the range is the one measuring every angle gives, bit for bit, for a few
+// atan2 calls instead of six per tetrahedron.
+class AngleRange {
+ public:
+  template <class V>
+  void add(const V& u, const V& v) noexcept {
+    const double uu = dot(u, u), vv = dot(v, v);
+    const double product = uu * vv;
+    const bool usable = uu > 1e-290 && vv > 1e-290 && product > 1e-290 && product < 1e290;
+    const double c = usable ? dot(u, v) / std::sqrt(product) : 0.0;
+    if (usable && c < max_cosine_ - kMargin && c > min_cosine_ + kMargin) return;
+    if (usable) {
+      max_cosine_ = std::max(max_cosine_, c);
+      min_cosine_ = std::min(min_cosine_, c);
+    }
+    range_.add(angle_between(u, v));
+  }
+  const Range& range() const noexcept { return range_; }
+
+ private:
+  static constexpr double kMargin = 1e-9;
+  Range range_;
+  double max_cosine_ = -kInfinity, min_cosine_ = kInfinity;
+};
+
 // The three angles of a triangle.
-void add_angles(const std::array<Vec2, 3>& p, Range& angles) noexcept {
-  for (int i = 0; i < 3; ++i)
-    angles.add(angle_between(p[(i + 1) % 3] - p[i], p[(i + 2) % 3] - p[i]));
+void add_angles(const std::array<Vec2, 3>& p, AngleRange& angles) noexcept {
+  for (int i = 0; i < 3; ++i) angles.add(p[(i + 1) % 3] - p[i], p[(i + 2) % 3] - p[i]);
 }
 
 // The six dihedral angles of a tetrahedron: along edge ij, the angle between e x (pk - pi) and
 // e x (pl - pi), e = pj - pi: both normals are the projections of pk and pl on the plane normal
 // to e turned by the same quarter turn, so their angle is the interior dihedral angle.
-void add_angles(const std::array<Vec3, 4>& p, Range& angles) noexcept {
+void add_angles(const std::array<Vec3, 4>& p, AngleRange& angles) noexcept {
   static constexpr int kEdgeAndOthers[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
                                                {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
   for (const auto& q : kEdgeAndOthers) {
     const Vec3 e = p[q[1]] - p[q[0]];
-    angles.add(angle_between(cross(e, p[q[2]] - p[q[0]]), cross(e, p[q[3]] - p[q[0]])));
+    angles.add(cross(e, p[q[2]] - p[q[0]]), cross(e, p[q[3]] - p[q[0]]));
   }
 }
 
@@ -144,21 +171,37 @@ std::vector<char> check_input(std::span<const Point> points, std::span<const std
   return used;
 }
 
-// Each edge once, as (smaller index << 32 | larger index), sorted.
+// Each edge once, as (smaller index << 32 | larger index), sorted: the elements' edges bucketed
+// by their smaller end (a counting sort), each bucket's larger ends deduplicated by a stamp and
+// sorted. The list sorting all the keys and dropping repeats gives, in two linear passes.
 template <std::size_t N>
-std::vector<std::uint64_t> unique_edges(std::span<const std::array<std::uint32_t, N>> cells) {
-  std::vector<std::uint64_t> edges;
-  edges.reserve(cells.size() * kEdgesPerElement<N>);
-  for (const auto& c : cells) {
-    for (std::size_t i = 0; i < N; ++i) {
-      for (std::size_t j = i + 1; j < N; ++j) {
-        const std::uint64_t lo = std::min(c[i], c[j]), hi = std::max(c[i], c[j]);
-        edges.push_back(lo << 32 | hi);
-      }
-    }
+std::vector<std::uint64_t> unique_edges(std::span<const std::array<std::uint32_t, N>> cells, std::size_t point_count) {
+  std::vector<std::size_t> start(point_count + 1, 0);
+  for (const auto& c : cells)
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = i + 1; j < N; ++j) ++start[std::min(c[i], c[j]) + 1];
+  for (std::size_t v = 0; v < point_count; ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> upper(start[point_count]);
+  {
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (const auto& c : cells)
+      for (std::size_t i = 0; i < N; ++i)
+        for (std::size_t j = i + 1; j < N; ++j) upper[next[std::min(c[i], c[j])]++] = std::max(c[i], c[j]);
   }
-  radix_sort(edges);
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  constexpr std::uint32_t kNone = 0xffffffffu;
+  std::vector<std::uint32_t> stamp(point_count, kNone);
+  std::vector<std::uint64_t> edges;
+  edges.reserve(upper.size() / 4);
+  for (std::size_t lo = 0; lo < point_count; ++lo) {
+    const std::size_t first = edges.size();
+    for (std::size_t k = start[lo]; k < start[lo + 1]; ++k) {
+      const std::uint32_t hi = upper[k];
+      if (stamp[hi] == lo) continue;
+      stamp[hi] = static_cast<std::uint32_t>(lo);
+      edges.push_back(static_cast<std::uint64_t>(lo) << 32 | hi);
+    }
+    std::sort(edges.begin() + static_cast<std::ptrdiff_t>(first), edges.end());
+  }
   return edges;
 }
 
@@ -184,7 +227,7 @@ QualityReport measure(std::span<const Point> points, std::span<const std::array<
   Sum quality_sum, mean_ratio_sum, measure_sum;
   std::uint64_t finite_quality = 0;
   double worst = -kInfinity, worst_ratio = kInfinity;
-  Range angles;
+  AngleRange angles;
   for (const auto& c : cells) {
     std::array<Point, N> p;
     std::array<Metric, N> m;
@@ -225,13 +268,13 @@ QualityReport measure(std::span<const Point> points, std::span<const std::array<
     if (finite_quality > 0) r.quality_mean = quality_sum.value() / static_cast<double>(finite_quality);
     for (std::size_t b = 0; b < r.quality_bins.size(); ++b)
       r.quality_shares[b] = static_cast<double>(r.quality_bins[b]) / n;
-    r.angle_min = angles.min * kDegreesPerRadian;
-    r.angle_max = angles.max * kDegreesPerRadian;
+    r.angle_min = angles.range().min * kDegreesPerRadian;
+    r.angle_max = angles.range().max * kDegreesPerRadian;
     r.mean_ratio_worst = worst_ratio;
     r.mean_ratio_mean = mean_ratio_sum.value() / n;
   }
 
-  const std::vector<std::uint64_t> edges = unique_edges(cells);
+  const std::vector<std::uint64_t> edges = unique_edges(cells, points.size());
   r.edges = edges.size();
   if (!edges.empty()) {
     Range euclidean, metric_range;

@@ -143,6 +143,32 @@ RC_GTEST_PROP(ShapeQuality3, ClearlyAtLeastOnlyWhenAtLeast, ()) {
   RC_ASSERT(shape_quality_clearly_at_least(a, b, c, d, 0.5 * q) == (q > 0.0 && std::isfinite(q)));
 }
 
+// Q_K is taken from the square roots of the squared norms where those keep their precision and
+// from hypot's norms outside: the same tetrahedron scaled by powers of two (exactly) gives the
+// same value within rounding on both sides of the switch, and FacetQuality3 follows it bit for bit.
+RC_GTEST_PROP(ShapeQuality3, ScaleInvariantAcrossTheHypotFallback, ()) {
+  const Vec3 a{*gen_unit(), *gen_unit(), *gen_unit()}, b{*gen_unit(), *gen_unit(), *gen_unit()};
+  const Vec3 c{*gen_unit(), *gen_unit(), *gen_unit()}, d{*gen_unit(), *gen_unit(), *gen_unit()};
+  const double q = shape_quality_nonflat(a, b, c, d);
+  RC_PRE(std::isfinite(q) && q < 1e6);
+  for (const int e : {-300, -100, 0, 100, 300}) {
+    const auto s = [e](const Vec3& p) { return std::ldexp(1.0, e) * p; };
+    const double scaled = shape_quality_nonflat(s(a), s(b), s(c), s(d));
+    RC_ASSERT(std::fabs(scaled - q) <= 1e-9 * q);
+    const double facet = FacetQuality3(s(a), s(b), s(c)).with_apex(s(d));
+    RC_ASSERT(std::memcmp(&facet, &scaled, sizeof facet) == 0);
+    // Out of the squares' range (|e| = 300 here) the filter says nothing.
+    if (std::abs(e) == 300) RC_ASSERT(!shape_quality_clearly_at_least(s(a), s(b), s(c), s(d), 0.5 * q));
+  }
+}
+
+TEST(ShapeQuality3, RegularTetrahedronAtExtremeScales) {
+  for (const double scale : {1.0, 0x1p-300, 0x1p300}) {
+    const auto s = [scale](const Vec3& p) { return scale * p; };
+    EXPECT_TRUE(close(shape_quality_nonflat(s(kReg[0]), s(kReg[1]), s(kReg[2]), s(kReg[3])), 1.0, 8 * kEps)) << scale;
+  }
+}
+
 TEST(Inradius, KnownValues) {
   // 3-4-5 triangle: r = area / semi-perimeter = 6 / 6.
   EXPECT_EQ(inradius(Vec2{0, 0}, Vec2{3, 0}, Vec2{0, 4}), 1.0);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -397,6 +398,57 @@ RC_GTEST_PROP(MeshQuality, BinsCountEveryElementOnceAndSharesSumToOne, ()) {
   // The same input gives the same bytes.
   RC_ASSERT(quality_json(measure_quality(p, tets)) == quality_json(r));
   RC_ASSERT(quality_table(measure_quality(p, tets)) == quality_table(r));
+}
+
+// The angle range measures by atan2 only the angles whose cosine can make them extreme, and the
+// edges are counted by buckets instead of a global sort: the same figures as measuring every
+// dihedral angle and sorting every edge key, to the last bit.
+RC_GTEST_PROP(MeshQuality3d, AnglesAndEdgesAsTheDirectScan, ()) {
+  std::vector<Vec3> p;
+  std::vector<Tet> tets;
+  if (*rc::gen::arbitrary<bool>()) {
+    // Random tetrahedra over a few points, repeated vertices (flat) included.
+    const int n = *rc::gen::inRange(4, 30);
+    for (int i = 0; i < n; ++i) p.push_back({*gen_coordinate(), *gen_coordinate(), *gen_coordinate()});
+    const auto index = rc::gen::inRange<std::uint32_t>(0, static_cast<std::uint32_t>(n));
+    tets.resize(*rc::gen::inRange(1, 80));
+    for (Tet& t : tets) t = {*index, *index, *index, *index};
+  } else {
+    // Near copies of one tetrahedron: extreme angles a hair apart, in any order.
+    std::array<Vec3, 4> base;
+    for (Vec3& b : base) b = {*gen_coordinate(), *gen_coordinate(), *gen_coordinate()};
+    const int copies = *rc::gen::inRange(1, 40);
+    for (int k = 0; k < copies; ++k) {
+      const auto first = static_cast<std::uint32_t>(p.size());
+      for (const Vec3& b : base)
+        p.push_back(b + 1e-4 * Vec3{*gen_coordinate(), *gen_coordinate(), *gen_coordinate()});
+      tets.push_back({first, first + 1, first + 2, first + 3});
+    }
+  }
+  double lo = kInf, hi = -kInf;
+  std::vector<std::uint64_t> keys;
+  static constexpr int kEdge[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  for (const Tet& t : tets) {
+    for (const auto& q : kEdge) {
+      const Vec3 e = p[t[q[1]]] - p[t[q[0]]];
+      const Vec3 u = cross(e, p[t[q[2]]] - p[t[q[0]]]), v = cross(e, p[t[q[3]]] - p[t[q[0]]]);
+      const double angle = std::atan2(norm(cross(u, v)), dot(u, v));
+      lo = std::min(lo, angle);
+      hi = std::max(hi, angle);
+      const std::uint64_t a = std::min(t[q[0]], t[q[1]]), b = std::max(t[q[0]], t[q[1]]);
+      keys.push_back(a << 32 | b);  // a loop (a == b) too, as the report counts it
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  const QualityReport r = measure_quality(p, tets);
+  constexpr double kDegrees = 57.295779513082320876798;
+  RC_ASSERT(r.angle_min == lo * kDegrees);
+  RC_ASSERT(r.angle_max == hi * kDegrees);
+  RC_ASSERT(r.edges == keys.size());
+  double longest = 0.0;
+  for (const std::uint64_t k : keys) longest = std::max(longest, norm(p[k & 0xffffffffu] - p[k >> 32]));
+  RC_ASSERT(r.edge_length_max == longest);
 }
 
 }  // namespace
