@@ -112,10 +112,6 @@ double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const 
   return std::isnan(q) ? shape_quality_by_hypot(a, b, c, d) : q;
 }
 
-bool shape_quality_clearly_at_least(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double bound) noexcept {
-  return quality_by_squares(a, b, c, d) >= bound;  // NaN (out of range): false
-}
-
 std::array<double, 2> dihedral_cosine_range(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept {
   // Outward normals of the faces opposite a, b, c, d: each turned away from its vertex.
   const std::array<Vec3, 4> p{a, b, c, d};
@@ -159,8 +155,6 @@ double FacetQuality3::with_apex(const Vec3& d) const noexcept {
   }
   return shape_quality_by_hypot(a_, b_, c_, d);
 }
-
-bool FacetQuality3::below(const Vec3& d, double bound) const noexcept { return with_apex(d) < bound; }
 
 namespace {
 

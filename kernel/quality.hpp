@@ -29,16 +29,12 @@ double shape_quality(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
 
 // The 3D values above for a tetrahedron already known not to be flat (orient3d(a, b, c, d) is not
 // Zero, as an operator that tested it exactly knows): the same values, without the second test.
+// Whatever the orientation (the measure of |det|); of a flat tetrahedron, +inf or a meaningless
+// large value, so a caller that compares it with a bound before the exact test must still make it.
 double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) noexcept;
 double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& m) noexcept;
 double shape_quality_nonflat(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Metric3& ma,
                              const Metric3& mb, const Metric3& mc, const Metric3& md) noexcept;
-
-// A filter for shape_quality_nonflat(a, b, c, d) >= bound (Euclidean), before the exact
-// orientation test: true only when it holds; false when below, or when the edges are so short or
-// so long that the value needs hypot's norms. Whatever the orientation of (a, b, c, d) (the
-// measure of |det|).
-bool shape_quality_clearly_at_least(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double bound) noexcept;
 
 // shape_quality_nonflat(a, b, c, d) (Euclidean) for many apexes d over one facet (a, b, c), as
 // vertex relocation asks it: what depends only on the facet (its three edges, its area) is
@@ -48,8 +44,6 @@ class FacetQuality3 {
   FacetQuality3() = default;
   FacetQuality3(const Vec3& a, const Vec3& b, const Vec3& c) noexcept;
   double with_apex(const Vec3& d) const noexcept;
-  // with_apex(d) < bound.
-  bool below(const Vec3& d, double bound) const noexcept;
 
  private:
   Vec3 a_{}, b_{}, c_{}, ba_{}, ca_{}, cb_{};

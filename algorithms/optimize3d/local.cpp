@@ -45,11 +45,10 @@ double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::u
   const Vec3 &pa = mesh.point(a), &pb = mesh.point(b), &pc = mesh.point(c), &pd = mesh.point(d);
   if (mesh.metric(a).is_scalar() && mesh.metric(b).is_scalar() && mesh.metric(c).is_scalar() &&
       mesh.metric(d).is_scalar()) {
-    // Most candidates of a shell or a face swap lie far above the bound: refused by the filter
-    // before the exact orientation and the hypot-based value (+inf either way).
-    if (shape_quality_clearly_at_least(pa, pb, pc, pd, bound) || !positive(mesh, a, b, c, d)) return kInf;
+    // Most candidates of a shell or a face swap lie far above the bound: refused on the value
+    // (which measures |det|, whatever the orientation) before the exact orientation test.
     const double q = shape_quality_nonflat(pa, pb, pc, pd);
-    return q < bound ? q : kInf;
+    return q < bound && positive(mesh, a, b, c, d) ? q : kInf;
   }
   if (!positive(mesh, a, b, c, d)) return kInf;
   double worst = 0.0;

@@ -180,7 +180,7 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
         s.state[i] = iso ? 1 : 2;
       }
       const bool better = euclidean && s.state[i] == 1
-                              ? s.prepared[i].below(moved, bound)
+                              ? s.prepared[i].with_apex(moved) < bound
                               : positive_quality_in(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), moved,
                                                     mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]), metric) < bound;
       if (!better) {
