@@ -103,6 +103,9 @@ void ControlSpace3::build(MetricInterpolation mode) {
     const auto& v = tets_[t];
     uniform_[t] = metrics_[v[0]] == metrics_[v[1]] && metrics_[v[1]] == metrics_[v[2]] && metrics_[v[2]] == metrics_[v[3]];
   }
+  constant_ = true;
+  for (std::size_t t = 0; t < tets_.size() && constant_; ++t)
+    constant_ = uniform_[t] && metrics_[tets_[t][0]] == metrics_[tets_[0][0]];
   grid_ = ElementGrid<Vec3>(points_, std::span<const std::array<std::uint32_t, 4>>(tets_));
 }
 
@@ -166,6 +169,7 @@ Metric3 ControlSpace3::metric_at(const Vec3& p, std::uint32_t& hint) const {
   // The hint when it holds p (consecutive questions are usually close), else a walk from an
   // element of p's grid bucket: a walk from a far hint (the relocation sweep asks worst ball
   // first, anywhere in the domain) would cross the background.
+  if (constant_) return metrics_[tets_[0][0]];  // the size map of `--size`: nothing to locate
   std::uint32_t t;
   if (hint < tets_.size() && contains(hint, p)) {
     t = hint;

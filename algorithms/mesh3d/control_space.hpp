@@ -68,6 +68,7 @@ class ControlSpace3 {
   std::vector<std::array<std::uint32_t, 4>> tets_;
   std::vector<std::array<std::uint32_t, 4>> neighbours_;  // tetrahedron across facet i, or kNone
   std::vector<std::uint8_t> uniform_;                     // per tetrahedron: its four metrics equal
+  bool constant_ = false;                                 // one metric at every vertex of every tetrahedron
   MetricInterpolation mode_ = MetricInterpolation::Sizes;
   ElementGrid<Vec3> grid_;                                // the tetrahedra by bucket
 };

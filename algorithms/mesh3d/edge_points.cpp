@@ -8,6 +8,7 @@
 // grid. Passes repeat over the new tetrahedra until no candidate is accepted (saturation), bounded.
 // Within a pass the edges are taken in Hilbert order of their midpoints (algorithms/spatial_sort).
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -35,18 +36,34 @@ std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
 }
 
 // The vertices bucketed in cubic cells of side `cell`, each cell a singly linked list through
-// `next_` (vertex ids). Only insertion: the edge method never removes a vertex.
+// `next_` (vertex ids). Only insertion: the edge method never removes a vertex. The cells over
+// the box [lo, hi] (the empty mesh's vertices: every field point lies on one of its edges) are a
+// dense array when there are at most kDenseCells of them; others, and all of them past that
+// bound, in a hash table. The candidate filter looks at 27 cells a point: an array read each
+// instead of a hash lookup.
 class VertexGrid {
  public:
-  VertexGrid(const Vec3& origin, double cell) : origin_(origin), cell_(cell) {}
+  VertexGrid(const Vec3& lo, const Vec3& hi, double cell) : origin_(lo), cell_(cell) {
+    const std::int64_t nx = coordinate(hi.x - lo.x) + 1, ny = coordinate(hi.y - lo.y) + 1,
+                       nz = coordinate(hi.z - lo.z) + 1;
+    if (nx > 0 && ny > 0 && nz > 0 && nx <= kDenseCells && ny <= kDenseCells && nz <= kDenseCells &&
+        nx * ny <= kDenseCells && nx * ny * nz <= kDenseCells) {
+      n_ = {nx, ny, nz};
+      dense_.assign(static_cast<std::size_t>(nx * ny * nz), kEnd);
+    }
+  }
 
   void insert(std::uint32_t v, const Vec3& p) {
     if (next_.size() <= v) next_.resize(std::max<std::size_t>(v + 1, next_.size() * 3 / 2), kEnd);
-    const auto [it, fresh] = head_.try_emplace(key(coordinate(p.x - origin_.x), coordinate(p.y - origin_.y),
-                                                   coordinate(p.z - origin_.z)),
-                                               kEnd);
-    next_[v] = it->second;
-    it->second = v;
+    const std::int64_t x = coordinate(p.x - origin_.x), y = coordinate(p.y - origin_.y),
+                       z = coordinate(p.z - origin_.z);
+    std::uint32_t* head = nullptr;
+    if (const std::int64_t i = dense_index(x, y, z); i >= 0)
+      head = &dense_[static_cast<std::size_t>(i)];
+    else
+      head = &head_.try_emplace(key(x, y, z), kEnd).first->second;
+    next_[v] = *head;
+    *head = v;
   }
 
   // Whether a vertex lies closer than `distance` to p in the metric m, whose largest size is
@@ -59,9 +76,7 @@ class VertexGrid {
     for (std::int64_t x = x0; x <= x1; ++x)
       for (std::int64_t y = y0; y <= y1; ++y)
         for (std::int64_t z = z0; z <= z1; ++z) {
-          const auto it = head_.find(key(x, y, z));
-          if (it == head_.end()) continue;
-          for (std::uint32_t v = it->second; v != kEnd; v = next_[v]) {
+          for (std::uint32_t v = first(x, y, z); v != kEnd; v = next_[v]) {
             if (m.length(points[v] - p) < distance) return true;
           }
         }
@@ -70,7 +85,18 @@ class VertexGrid {
 
  private:
   static constexpr std::uint32_t kEnd = 0xFFFFFFFFu;
+  static constexpr std::int64_t kDenseCells = std::int64_t{1} << 22;  // 16 MB of heads at most
   std::int64_t coordinate(double d) const { return static_cast<std::int64_t>(std::floor(d / cell_)); }
+  std::int64_t dense_index(std::int64_t x, std::int64_t y, std::int64_t z) const {
+    if (dense_.empty() || x < 0 || y < 0 || z < 0 || x >= n_[0] || y >= n_[1] || z >= n_[2]) return -1;
+    return (z * n_[1] + y) * n_[0] + x;
+  }
+  std::uint32_t first(std::int64_t x, std::int64_t y, std::int64_t z) const {
+    if (const std::int64_t i = dense_index(x, y, z); i >= 0) return dense_[static_cast<std::size_t>(i)];
+    if (head_.empty()) return kEnd;
+    const auto it = head_.find(key(x, y, z));
+    return it == head_.end() ? kEnd : it->second;
+  }
   // Cells far apart may share a key: their lists merge, which only adds vertices to look at.
   static std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z) {
     return (static_cast<std::uint64_t>(x) * 73856093u) ^ (static_cast<std::uint64_t>(y) * 19349663u * 1000003u) ^
@@ -79,6 +105,8 @@ class VertexGrid {
 
   Vec3 origin_;
   double cell_;
+  std::array<std::int64_t, 3> n_{};
+  std::vector<std::uint32_t> dense_;
   std::unordered_map<std::uint64_t, std::uint32_t> head_;
   std::vector<std::uint32_t> next_;
 };
@@ -118,7 +146,14 @@ void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dO
   std::uint32_t first_live = 0;
   while (first_live < mesh.vertex_capacity() && mesh.is_dead_vertex(first_live)) ++first_live;
   DTLAB_ASSERT(first_live < mesh.vertex_capacity());
-  VertexGrid grid(mesh.point(first_live), options.filter_distance * control.median_largest_size());
+  Vec3 lo = mesh.point(first_live), hi = lo;
+  for (std::uint32_t v = first_live; v < mesh.vertex_capacity(); ++v) {
+    if (mesh.is_dead_vertex(v)) continue;
+    const Vec3& p = mesh.point(v);
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  VertexGrid grid(lo, hi, options.filter_distance * control.median_largest_size());
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
     if (!mesh.is_dead_vertex(v)) grid.insert(v, mesh.point(v));
   }
