@@ -95,7 +95,7 @@ QualitySummary3 summarize_quality(const Mesh3& mesh);
 
 // The effort levels of `dtlab mesh --optimize LEVEL` (throws InputError on another name):
 //   light     one round, one relocation sweep;
-//   standard  one relocation sweep a round, the swap pass seeded with Q_K > 1.7, rounds until
+//   standard  one relocation sweep a round, the swap pass seeded with Q_K > 2, rounds until
 //             the goal is met — Q_K <= 3 (the book's bad-element threshold, §8.6), dihedral
 //             angles in [20, 150] degrees, 97 % of Q_K in [1, 2] — or until they no longer
 //             improve (at most 6); rounds after the first only within 3 rings of the tetrahedra

@@ -265,7 +265,7 @@ Optimize3dOptions optimize3d_effort(const std::string& level) {
     o.max_rounds = 1;
     o.relocation_sweeps = 1;
   } else if (level == "standard") {
-    o.swap_threshold = 1.7;
+    o.swap_threshold = 2.0;
     o.relocation_sweeps = 1;
     o.goal_rings = 3;
     o.goal_worst_quality = 3.0;
