@@ -124,8 +124,7 @@ std::array<double, 2> dihedral_cosine_range(const Vec3& a, const Vec3& b, const 
     Vec3 m = cross(y - x, z - x);
     if (dot(m, p[i] - x) > 0.0) m = -1.0 * m;
     n[i] = m;
-    const double q = dot(m, m);  // its root where the square keeps its precision, hypot's elsewhere
-    length[i] = q > kLowSquare && q < 1e280 ? std::sqrt(q) : norm(m);
+    length[i] = norm_by_square(m);
   }
   double lo = 1.0, hi = -1.0;
   for (int i = 0; i < 4; ++i)

@@ -47,5 +47,12 @@ constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 inline double norm(const Vec3& a) { return std::hypot(a.x, a.y, a.z); }
+// |a| as the square root of the rounded dot(a, a) where that square keeps its relative precision
+// (a correctly rounded sqrt, several times cheaper than hypot's scaled sums; within an ulp or two
+// of it), hypot's outside.
+inline double norm_by_square(const Vec3& a) {
+  const double q = dot(a, a);
+  return q > 1e-280 && q < 1e280 ? std::sqrt(q) : norm(a);
+}
 
 }  // namespace dtlab

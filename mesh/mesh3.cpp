@@ -113,6 +113,7 @@ Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_re
   }
   points_.assign(tet.points().begin(), tet.points().end());
   metrics_.assign(n, metric);
+  anisotropic_slots_ = metric.is_scalar() ? 0 : n;
   vertex_flags_.assign(n, kFixed);
   vertex_tetrahedron_.assign(n, kNone);
   changed_at_.assign(n, 0);
@@ -175,7 +176,7 @@ std::uint32_t Mesh3::add_vertex(const Vec3& p, const Metric3& m, std::uint8_t fl
     const std::uint32_t v = free_vertices_.back();
     free_vertices_.pop_back();
     points_[v] = p;
-    metrics_[v] = m;
+    replace_metric(v, m);
     vertex_flags_[v] = flags;
     vertex_tetrahedron_[v] = kNone;
     touch(v);
@@ -184,6 +185,7 @@ std::uint32_t Mesh3::add_vertex(const Vec3& p, const Metric3& m, std::uint8_t fl
   DTLAB_ASSERT(points_.size() < Tetrahedralization3::kMaxPoints);
   points_.push_back(p);
   metrics_.push_back(m);
+  anisotropic_slots_ += !m.is_scalar();
   vertex_flags_.push_back(flags);
   vertex_tetrahedron_.push_back(kNone);
   changed_at_.push_back(epoch_);
@@ -275,6 +277,8 @@ void Mesh3::renumber(std::span<const std::uint32_t> vertex_order, std::span<cons
   auto new_handle = [&](std::uint32_t h) { return 4 * tetrahedron_of_old[tetrahedron_of(h)] + index_in_tetrahedron(h); };
   permute(points_, vertex_order);
   permute(metrics_, vertex_order);
+  anisotropic_slots_ = static_cast<std::uint64_t>(
+      std::count_if(metrics_.begin(), metrics_.end(), [](const Metric3& m) { return !m.is_scalar(); }));
   permute(vertex_flags_, vertex_order);
   permute(changed_at_, vertex_order);
   permute(vertex_tetrahedron_, vertex_order);

@@ -83,9 +83,12 @@ class Mesh3 {
     touch(v);
   }
   void set_metric(std::uint32_t v, const Metric3& m) noexcept {
-    metrics_[v] = m;
+    replace_metric(v, m);
     touch(v);
   }
+  // Whether every vertex slot's metric is scalar (lambda I): Q_K is then the Euclidean one, and
+  // the optimizer's quality tests need not read the metrics.
+  bool metrics_all_scalar() const noexcept { return anisotropic_slots_ == 0; }
   void set_flags(std::uint32_t v, std::uint8_t f) noexcept { vertex_flags_[v] = f; }
   // One live tetrahedron incident to v (kNone for a dead vertex). Operators keep it current.
   std::uint32_t vertex_tetrahedron(std::uint32_t v) const noexcept { return vertex_tetrahedron_[v]; }
@@ -219,11 +222,16 @@ class Mesh3 {
 
   std::vector<Vec3> points_;
   std::vector<Metric3> metrics_;
+  std::uint64_t anisotropic_slots_ = 0;  // vertex slots (dead ones too) whose metric is not scalar
   std::vector<std::uint8_t> vertex_flags_;
   std::vector<std::uint32_t> vertex_tetrahedron_;
   std::vector<std::uint32_t> free_vertices_;
   std::vector<std::uint64_t> changed_at_;  // per vertex: the epoch of its last change
   std::uint64_t epoch_ = 0;
+  void replace_metric(std::uint32_t v, const Metric3& m) noexcept {
+    anisotropic_slots_ += static_cast<std::uint64_t>(!m.is_scalar()) - static_cast<std::uint64_t>(!metrics_[v].is_scalar());
+    metrics_[v] = m;
+  }
 
   std::vector<std::uint32_t> vertices_;    // 4 per tetrahedron; vertices_[4t] == kNone: dead
   std::vector<std::uint32_t> neighbours_;  // 4 per tetrahedron: twin facet handles

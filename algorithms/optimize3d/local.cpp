@@ -43,8 +43,8 @@ double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::u
                      double bound) noexcept {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const Vec3 &pa = mesh.point(a), &pb = mesh.point(b), &pc = mesh.point(c), &pd = mesh.point(d);
-  if (mesh.metric(a).is_scalar() && mesh.metric(b).is_scalar() && mesh.metric(c).is_scalar() &&
-      mesh.metric(d).is_scalar()) {
+  if (mesh.metrics_all_scalar() || (mesh.metric(a).is_scalar() && mesh.metric(b).is_scalar() &&
+                                    mesh.metric(c).is_scalar() && mesh.metric(d).is_scalar())) {
     // Most candidates of a shell or a face swap lie far above the bound: refused on the value
     // (which measures |det|, whatever the orientation) before the exact orientation test.
     const double q = shape_quality_nonflat(pa, pb, pc, pd);
@@ -61,6 +61,8 @@ double quality_below(const Mesh3& mesh, std::uint32_t a, std::uint32_t b, std::u
 
 double tetrahedron_quality(const Mesh3& mesh, std::uint32_t t) noexcept {
   const auto v = mesh.tetrahedron(t);
+  if (mesh.metrics_all_scalar())
+    return shape_quality_nonflat(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
   return positive_quality_in(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]), mesh.metric(v[0]),
                     mesh.metric(v[1]), mesh.metric(v[2]), mesh.metric(v[3]));
 }

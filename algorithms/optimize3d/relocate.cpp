@@ -33,19 +33,15 @@ std::array<std::uint32_t, 3> opposite_facet(const Mesh3& mesh, std::uint32_t t, 
   return {Mesh3::kNone, Mesh3::kNone, Mesh3::kNone};
 }
 
-// M^1/2 and M^-1/2 of the last metric asked for: a uniform size field asks for the same one at
-// every facet, and the powers (std::pow, or an eigen-decomposition) cost more than the rest of
-// ideal_apex. The same values as computing them each time.
+// M^1/2 and M^-1/2 of the last anisotropic metric asked for: a uniform field asks for the same
+// one at every facet, and the eigen-decompositions cost more than the rest of ideal_apex. The
+// same values as computing them each time.
 class MetricRoots {
  public:
   void of(const Metric3& m) {
     if (valid_ && m.m == metric_.m) return;
-    // m = lambda I: power() decomposes nothing (no rotation, unit eigenvectors) and gives
-    // pow(lambda, p) I exactly; the same values without the eigen-decomposition.
-    const bool isotropic = m.is_scalar();
-    auto scalar = [](double l) { return Metric3{{l, 0.0, l, 0.0, 0.0, l}}; };
-    root = isotropic ? scalar(std::pow(m.m[0], 0.5)) : power(m, 0.5);
-    inverse_root = isotropic ? scalar(std::pow(m.m[0], -0.5)) : power(m, -0.5);
+    root = power(m, 0.5);
+    inverse_root = power(m, -0.5);
     metric_ = m;
     valid_ = true;
   }
@@ -56,9 +52,20 @@ class MetricRoots {
   bool valid_ = false;
 };
 
-// The apex, on the positive side of (a, b, c), of the regular tetrahedron on the facet in m (its
-// edge the mean of the facet's three in m): in the space where m is the identity.
+// The apex, on the positive side of (a, b, c), of the regular tetrahedron on the facet (its edge
+// the mean of the facet's three): Euclidean, as in any scalar metric.
+Vec3 ideal_apex_euclidean(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = cross(b - a, c - a);
+  const double area2 = norm_by_square(n);
+  const double edge = (norm_by_square(b - a) + norm_by_square(c - b) + norm_by_square(a - c)) / 3.0;
+  const Vec3 centre = (1.0 / 3.0) * (a + b + c);
+  if (!(area2 > 0.0)) return centre;
+  return centre + (kRegularHeight * edge / area2) * n;
+}
+
+// The same in m: in the space where m is the identity.
 Vec3 ideal_apex(const Vec3& a, const Vec3& b, const Vec3& c, const Metric3& m, MetricRoots& roots) {
+  if (m.is_scalar()) return ideal_apex_euclidean(a, b, c);
   roots.of(m);
   const Metric3& root = roots.root;
   const Metric3& inverse_root = roots.inverse_root;
@@ -89,8 +96,12 @@ Vec3 optimal_point_of(const Mesh3& mesh, std::uint32_t v, std::span<const std::u
   for (std::size_t k = 0; k < ball.size(); ++k) {
     const auto f = opposite_facet(mesh, ball[k], v);
     const double w = std::min(quality[k], kMaxWeight);
-    const Metric3 m = mean_metric(mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2]));
-    sum = sum + w * ideal_apex(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]), m, roots);
+    const Vec3 apex =
+        mesh.metrics_all_scalar()
+            ? ideal_apex_euclidean(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]))
+            : ideal_apex(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]),
+                         mean_metric(mesh.metric(f[0]), mesh.metric(f[1]), mesh.metric(f[2])), roots);
+    sum = sum + w * apex;
     weights += w;
   }
   if (!(weights > 0.0)) return mesh.point(v);
@@ -175,7 +186,8 @@ bool relocate_free_vertex(Mesh3& mesh, std::uint32_t v, const MetricField3& fiel
       const std::size_t i = index_at(first_worse, j);
       const auto& f = facets[i];
       if (s.state[i] == 0) {
-        const bool iso = mesh.metric(f[0]).is_scalar() && mesh.metric(f[1]).is_scalar() && mesh.metric(f[2]).is_scalar();
+        const bool iso = mesh.metrics_all_scalar() || (mesh.metric(f[0]).is_scalar() && mesh.metric(f[1]).is_scalar() &&
+                                                        mesh.metric(f[2]).is_scalar());
         if (iso) s.prepared[i] = FacetQuality3(mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2]));
         s.state[i] = iso ? 1 : 2;
       }

@@ -523,6 +523,41 @@ TEST(Mesh3, RenumberKeepsEverythingAndDropsFreeSlots) {
   }
 }
 
+// metrics_all_scalar follows every way a metric enters a slot: set_metric both ways, a new
+// vertex, a reused slot, a renumbering that drops a dead slot holding an anisotropic metric.
+TEST(Mesh3, MetricsAllScalarFollowsEveryChange) {
+  const Metric3 aniso{{1.0, 0.5, 2.0, 0.0, 0.0, 3.0}};
+  ASSERT_FALSE(aniso.is_scalar());
+  Mesh3 m = mesh3_from_data(cubes({{0, 0, 0}, {1, 0, 0}}, 2));
+  EXPECT_TRUE(m.metrics_all_scalar());
+  m.set_metric(0, aniso);
+  EXPECT_FALSE(m.metrics_all_scalar());
+  m.set_metric(0, aniso);  // the same again: still one
+  m.set_metric(0, Metric3::isotropic(0.5));
+  EXPECT_TRUE(m.metrics_all_scalar());
+  const std::uint32_t v = m.add_vertex({9, 9, 9}, aniso);
+  EXPECT_FALSE(m.metrics_all_scalar());
+  m.remove_vertex(v);  // the dead slot keeps its metric: still counted
+  EXPECT_FALSE(m.metrics_all_scalar());
+  const std::uint32_t w = m.add_vertex({8, 8, 8}, Metric3::isotropic(1.0));  // reuses the slot
+  EXPECT_EQ(w, v);
+  EXPECT_TRUE(m.metrics_all_scalar());
+  m.set_metric(w, aniso);
+  m.remove_vertex(w);
+  EXPECT_FALSE(m.metrics_all_scalar());
+  std::vector<std::uint32_t> vorder, torder;
+  for (std::uint32_t x = 0; x < m.vertex_capacity(); ++x)
+    if (!m.is_dead_vertex(x)) vorder.push_back(x);
+  for (std::uint32_t t = 0; t < m.tetrahedron_capacity(); ++t)
+    if (m.is_alive(t)) torder.push_back(t);
+  m.renumber(vorder, torder);  // the dead slot goes
+  EXPECT_TRUE(m.metrics_all_scalar());
+  m.set_metric(1, aniso);
+  EXPECT_FALSE(m.metrics_all_scalar());
+  const Mesh3 copy = m;
+  EXPECT_FALSE(copy.metrics_all_scalar());
+}
+
 TEST(Mesh3, RenumberRefusesWhatIsNoPermutation) {
   Mesh3 m = mesh3_from_data(cubes({{0, 0, 0}}));
   std::vector<std::uint32_t> vorder(m.vertex_capacity()), torder(m.tetrahedron_capacity());
