@@ -4,6 +4,8 @@
 // operator to the whole mesh (sizes by collapse and split toward a unit mesh, the swap pass,
 // relocation sweeps), and repeat while a round still improves the worst or the mean quality.
 #include <algorithm>
+#include <span>
+#include <optional>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -22,37 +24,6 @@ using optimize3d_detail::edge_length;
 using optimize3d_detail::tetrahedron_quality;
 using optimize3d_detail::QualityCache;
 using optimize3d_detail::SwapPassResult;
-
-QualitySummary3 summarize_quality(const Mesh3& mesh) {
-  QualitySummary3 s;
-  double sum = 0.0;
-  std::uint64_t finite = 0;
-  double lowest_cosine = 1.0, highest_cosine = -1.0;
-  std::uint64_t in_1_2 = 0;
-  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
-    if (!mesh.in_domain(t)) continue;
-    const double q = tetrahedron_quality(mesh, t);
-    const auto v = mesh.tetrahedron(t);
-    const auto cosines = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
-    lowest_cosine = std::min(lowest_cosine, cosines[0]);
-    highest_cosine = std::max(highest_cosine, cosines[1]);
-    ++s.tetrahedra;
-    in_1_2 += q <= 2.0;
-    s.worst = std::max(s.worst, q);
-    if (std::isfinite(q)) {
-      sum += q;
-      ++finite;
-    }
-  }
-  s.mean = finite > 0 ? sum / static_cast<double>(finite) : 0.0;
-  constexpr double kDegrees = 57.295779513082320877;  // 180 / pi
-  if (s.tetrahedra > 0) {
-    s.share_1_2 = static_cast<double>(in_1_2) / static_cast<double>(s.tetrahedra);
-    s.min_dihedral_deg = std::acos(std::clamp(highest_cosine, -1.0, 1.0)) * kDegrees;
-    s.max_dihedral_deg = std::acos(std::clamp(lowest_cosine, -1.0, 1.0)) * kDegrees;
-  }
-  return s;
-}
 
 namespace {
 
@@ -87,30 +58,79 @@ class GoalTest {
     const auto c = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
     return c[1] > cos_min_ ? c[1] : 2.0;
   }
-  bool misses(const Mesh3& mesh, std::uint32_t t) const {
-    const auto v = mesh.tetrahedron(t);
-    const auto c = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
-    return c[1] > cos_min_ || c[0] < cos_max_ || tetrahedron_quality(mesh, t) > worst_;
+  // Whether a tetrahedron with dihedral cosines c (dihedral_cosine_range) and Q_K q misses it.
+  bool misses(const std::array<double, 2>& c, double q) const {
+    return c[1] > cos_min_ || c[0] < cos_max_ || q > worst_;
   }
 
  private:
   double cos_min_ = 2.0, cos_max_ = -2.0, worst_ = 0.0;
 };
 
-std::uint64_t count_goal_misses(const Mesh3& mesh, const Optimize3dOptions& o, bool share) {
-  const GoalTest goal(o, share);
+// Per tetrahedron slot of a scan: bit 0, it misses the goal; bit 1, it misses it while the share
+// in [1, 2] is short (Q_K > 2 too).
+constexpr std::uint8_t kMisses = 1, kMissesShareShort = 2;
+
+// One pass over the domain's tetrahedra for all that a round's end asks: the summary, and with a
+// goal, the goal flags by slot (the next round's region and the count of misses read them while
+// the mesh is unchanged). Q_K and the dihedral cosines of each tetrahedron computed once.
+QualitySummary3 scan_quality(const Mesh3& mesh, const Optimize3dOptions* goal_options, std::vector<std::uint8_t>* flags) {
+  std::optional<GoalTest> plain, share;
+  if (goal_options) {
+    plain.emplace(*goal_options, false);
+    share.emplace(*goal_options, true);
+    flags->assign(mesh.tetrahedron_capacity(), 0);
+  }
+  QualitySummary3 s;
+  double sum = 0.0;
+  std::uint64_t finite = 0;
+  double lowest_cosine = 1.0, highest_cosine = -1.0;
+  std::uint64_t in_1_2 = 0;
+  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+    if (!mesh.in_domain(t)) continue;
+    const double q = tetrahedron_quality(mesh, t);
+    const auto v = mesh.tetrahedron(t);
+    const auto cosines = dihedral_cosine_range(mesh.point(v[0]), mesh.point(v[1]), mesh.point(v[2]), mesh.point(v[3]));
+    if (goal_options)
+      (*flags)[t] = static_cast<std::uint8_t>((plain->misses(cosines, q) ? kMisses : 0) |
+                                              (share->misses(cosines, q) ? kMissesShareShort : 0));
+    lowest_cosine = std::min(lowest_cosine, cosines[0]);
+    highest_cosine = std::max(highest_cosine, cosines[1]);
+    ++s.tetrahedra;
+    in_1_2 += q <= 2.0;
+    s.worst = std::max(s.worst, q);
+    if (std::isfinite(q)) {
+      sum += q;
+      ++finite;
+    }
+  }
+  s.mean = finite > 0 ? sum / static_cast<double>(finite) : 0.0;
+  constexpr double kDegrees = 57.295779513082320877;  // 180 / pi
+  if (s.tetrahedra > 0) {
+    s.share_1_2 = static_cast<double>(in_1_2) / static_cast<double>(s.tetrahedra);
+    s.min_dihedral_deg = std::acos(std::clamp(highest_cosine, -1.0, 1.0)) * kDegrees;
+    s.max_dihedral_deg = std::acos(std::clamp(lowest_cosine, -1.0, 1.0)) * kDegrees;
+  }
+  return s;
+}
+
+std::uint8_t goal_bit(bool share) { return share ? kMissesShareShort : kMisses; }
+
+std::uint64_t count_goal_misses(std::span<const std::uint8_t> flags, bool share) {
+  const std::uint8_t bit = goal_bit(share);
   std::uint64_t n = 0;
-  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) n += mesh.in_domain(t) && goal.misses(mesh, t);
+  for (const std::uint8_t f : flags) n += (f & bit) != 0;
   return n;
 }
 
-// The region of a goal-driven round: the vertices of the tetrahedra that miss the goal, then
-// `goal_rings` times every vertex of a tetrahedron that has one.
-std::vector<std::uint8_t> goal_region(const Mesh3& mesh, const Optimize3dOptions& o, bool share) {
+// The region of a goal-driven round: the vertices of the tetrahedra that miss the goal (by the
+// last scan's flags), then `goal_rings` times every vertex of a tetrahedron that has one.
+std::vector<std::uint8_t> goal_region(const Mesh3& mesh, const Optimize3dOptions& o, std::span<const std::uint8_t> flags,
+                                      bool share) {
   std::vector<std::uint8_t> active(mesh.vertex_capacity(), 0);
-  const GoalTest goal(o, share);
+  const std::uint8_t bit = goal_bit(share);
   for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
-    if (mesh.in_domain(t) && goal.misses(mesh, t))
+    if (mesh.in_domain(t) && (flags[t] & bit))
       for (const std::uint32_t w : mesh.tetrahedron(t)) active[w] = 1;
   }
   for (std::uint32_t ring = 0; ring < o.goal_rings; ++ring) {
@@ -259,6 +279,8 @@ void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const M
 
 }  // namespace
 
+QualitySummary3 summarize_quality(const Mesh3& mesh) { return scan_quality(mesh, nullptr, nullptr); }
+
 Optimize3dOptions optimize3d_effort(const std::string& level) {
   Optimize3dOptions o;
   if (level == "light") {
@@ -285,7 +307,9 @@ Optimize3dOptions optimize3d_effort(const std::string& level) {
 Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field) {
   const auto start = std::chrono::steady_clock::now();
   Optimize3dStats stats;
-  const QualitySummary3 before = summarize_quality(mesh);
+  std::vector<std::uint8_t> flags;  // the last scan's goal flags, by tetrahedron slot
+  const Optimize3dOptions* goal = goal_asked(options) ? &options : nullptr;
+  const QualitySummary3 before = scan_quality(mesh, goal, &flags);
   stats.worst_before = before.worst;
   stats.mean_before = before.mean;
   stats.tetrahedra_before = before.tetrahedra;
@@ -303,7 +327,7 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     // After the first round, with a goal and goal_rings: only around what misses it.
     std::vector<std::uint8_t> region_storage;
     if (round > 0 && options.goal_rings > 0 && goal_asked(options))
-      region_storage = goal_region(mesh, options, share_short(last, options));
+      region_storage = goal_region(mesh, options, flags, share_short(last, options));
     const optimize3d_detail::Region region = region_storage;
     std::vector<std::uint32_t> seeds;
     if (!region.empty()) {
@@ -351,13 +375,13 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
         if (moved == 0) break;
       }
     }
-    const QualitySummary3 now = summarize_quality(mesh);
+    const QualitySummary3 now = scan_quality(mesh, goal, &flags);
     const double keep = 1.0 - options.round_improvement;
     bool improved = now.worst < last.worst * keep || now.mean < last.mean * keep;
     if (goal_asked(options)) {
       // A round that leaves a tenth fewer tetrahedra missing the goal improved too: rounds
       // restricted to their region hardly move the mean.
-      const std::uint64_t misses = count_goal_misses(mesh, options, share_short(now, options));
+      const std::uint64_t misses = count_goal_misses(flags, share_short(now, options));
       improved = improved || 10 * misses < 9 * last_misses;
       last_misses = misses;
     }
@@ -377,7 +401,7 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
   if (options.dihedral_step && options.goal_min_dihedral_deg > 0.0 &&
       last.min_dihedral_deg < options.goal_min_dihedral_deg && options.relocation) {
     stats.relocations += polish_dihedral_angles(mesh, options, field, last.worst);
-    last = summarize_quality(mesh);
+    last = scan_quality(mesh, nullptr, nullptr);
   }
   stats.worst_after = last.worst;
   stats.mean_after = last.mean;
