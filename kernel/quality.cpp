@@ -76,7 +76,7 @@ double quality_from_squares(double s_max, double area_abc, const Vec3& ba, const
                             const Vec3& cb, const Vec3& db) noexcept {
   const Vec3 n1 = cross(ba, da), n2 = cross(ca, da), n3 = cross(cb, db);
   const double q1 = dot(n1, n1), q2 = dot(n2, n2), q3 = dot(n3, n3);
-  const double six_volume = std::fabs(dot(ba, cross(ca, da)));
+  const double six_volume = std::fabs(dot(ba, n2));  // n2 = cross(ca, da)
   if (!(s_max > 1e-140 && s_max < 1e140 && q1 > kLowSquare && q2 > kLowSquare && q3 > kLowSquare &&
         six_volume > 0.0))
     return std::numeric_limits<double>::quiet_NaN();
