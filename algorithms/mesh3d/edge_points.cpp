@@ -38,16 +38,17 @@ std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
 // The vertices bucketed in cubic cells of side `cell`, each cell a singly linked list through
 // `next_` (vertex ids). Only insertion: the edge method never removes a vertex. The cells over
 // the box [lo, hi] (the empty mesh's vertices: every field point lies on one of its edges) are a
-// dense array when there are at most kDenseCells of them; others, and all of them past that
-// bound, in a hash table. The candidate filter looks at 27 cells a point: an array read each
+// dense array when there are at most `dense_cells` of them (Mesh3dOptions::filter_dense_cells);
+// others, and all of them past that bound, in a hash table. The candidate filter looks at 27 cells a point: an array read each
 // instead of a hash lookup.
 class VertexGrid {
  public:
-  VertexGrid(const Vec3& lo, const Vec3& hi, double cell) : origin_(lo), cell_(cell) {
+  VertexGrid(const Vec3& lo, const Vec3& hi, double cell, std::uint64_t dense_cells) : origin_(lo), cell_(cell) {
     const std::int64_t nx = coordinate(hi.x - lo.x) + 1, ny = coordinate(hi.y - lo.y) + 1,
                        nz = coordinate(hi.z - lo.z) + 1;
-    if (nx > 0 && ny > 0 && nz > 0 && nx <= kDenseCells && ny <= kDenseCells && nz <= kDenseCells &&
-        nx * ny <= kDenseCells && nx * ny * nz <= kDenseCells) {
+    const auto limit = static_cast<std::int64_t>(std::min<std::uint64_t>(dense_cells, std::uint64_t{1} << 40));
+    if (nx > 0 && ny > 0 && nz > 0 && nx <= limit && ny <= limit && nz <= limit && nx * ny <= limit &&
+        nx * ny * nz <= limit) {
       n_ = {nx, ny, nz};
       dense_.assign(static_cast<std::size_t>(nx * ny * nz), kEnd);
     }
@@ -85,7 +86,6 @@ class VertexGrid {
 
  private:
   static constexpr std::uint32_t kEnd = 0xFFFFFFFFu;
-  static constexpr std::int64_t kDenseCells = std::int64_t{1} << 22;  // 16 MB of heads at most
   std::int64_t coordinate(double d) const { return static_cast<std::int64_t>(std::floor(d / cell_)); }
   std::int64_t dense_index(std::int64_t x, std::int64_t y, std::int64_t z) const {
     if (dense_.empty() || x < 0 || y < 0 || z < 0 || x >= n_[0] || y >= n_[1] || z >= n_[2]) return -1;
@@ -153,7 +153,7 @@ void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dO
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
-  VertexGrid grid(lo, hi, options.filter_distance * control.median_largest_size());
+  VertexGrid grid(lo, hi, options.filter_distance * control.median_largest_size(), options.filter_dense_cells);
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
     if (!mesh.is_dead_vertex(v)) grid.insert(v, mesh.point(v));
   }

@@ -49,6 +49,9 @@ struct Mesh3dOptions {
   // A field point closer than this (metric length, in the metric at the point) to a vertex is
   // filtered out.
   double filter_distance = 0.7;
+  // The filter's grid keeps its cells over the empty mesh's box in an array up to this many
+  // cells, in a hash table beyond (or for all of them at 0): the same mesh either way.
+  std::uint64_t filter_dense_cells = std::uint64_t{1} << 22;
   // Internal edges longer than this in the metric get field points.
   double split_length = 1.4142135623730951;
   // Bounds, each with a named error when reached.
