@@ -49,6 +49,9 @@ struct Optimize3dOptions {
   // The swap pass starts from the tetrahedra worse than this (the others are reached as
   // neighbours of changed ones): a pass over all of them costs much and changes little.
   double swap_threshold = 1.5;
+  // The same in the rounds restricted to the goal region (goal_rings): a small region affords
+  // more seeds. 0: swap_threshold.
+  double region_swap_threshold = 0.0;
   bool relocation = true;
   std::uint32_t relocation_sweeps = 2;  // per round
   bool collapses = true;
@@ -95,7 +98,8 @@ QualitySummary3 summarize_quality(const Mesh3& mesh);
 
 // The effort levels of `dtlab mesh --optimize LEVEL` (throws InputError on another name):
 //   light     one round, one relocation sweep;
-//   standard  one relocation sweep a round, the swap pass seeded with Q_K > 2, rounds until
+//   standard  one relocation sweep a round, the swap pass seeded with Q_K > 2 (1.5 in the
+//             rounds restricted to the goal's region), rounds until
 //             the goal is met — Q_K <= 3 (the book's bad-element threshold, §8.6), dihedral
 //             angles in [20, 150] degrees, 97 % of Q_K in [1, 2] — or until they no longer
 //             improve (at most 6); rounds after the first only within 3 rings of the tetrahedra

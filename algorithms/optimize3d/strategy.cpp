@@ -288,6 +288,7 @@ Optimize3dOptions optimize3d_effort(const std::string& level) {
     o.relocation_sweeps = 1;
   } else if (level == "standard") {
     o.swap_threshold = 2.0;
+    o.region_swap_threshold = 1.5;
     o.relocation_sweeps = 1;
     o.goal_rings = 3;
     o.goal_worst_quality = 3.0;
@@ -359,7 +360,9 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
     poll_interrupt(options.interrupt, "optimize3d: after the collapses and splits");
     if (options.swaps) {
       QualityCache cache;
-      const SwapPassResult r = optimize3d_detail::swap_pass(mesh, options.margin, seeds, options.swap_threshold, cache, memo);
+      const double threshold =
+          !region.empty() && options.region_swap_threshold > 0.0 ? options.region_swap_threshold : options.swap_threshold;
+      const SwapPassResult r = optimize3d_detail::swap_pass(mesh, options.margin, seeds, threshold, cache, memo);
       stats.face_swaps += r.face_swaps;
       stats.shell_transformations += r.shell_transformations;
       if (r.limit_reached) {
