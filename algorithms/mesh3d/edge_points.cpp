@@ -39,14 +39,15 @@ std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
 // `next_` (vertex ids). Only insertion: the edge method never removes a vertex. The cells over
 // the box [lo, hi] (the empty mesh's vertices: every field point lies on one of its edges) are a
 // dense array when there are at most `dense_cells` of them (Mesh3dOptions::filter_dense_cells);
-// others, and all of them past that bound, in a hash table. The candidate filter looks at 27 cells a point: an array read each
-// instead of a hash lookup.
+// others, and all of them past that bound, in a hash table. The candidate filter looks at 27
+// cells a point: an array read each instead of a hash lookup.
 class VertexGrid {
  public:
   VertexGrid(const Vec3& lo, const Vec3& hi, double cell, std::uint64_t dense_cells) : origin_(lo), cell_(cell) {
     const std::int64_t nx = coordinate(hi.x - lo.x) + 1, ny = coordinate(hi.y - lo.y) + 1,
                        nz = coordinate(hi.z - lo.z) + 1;
-    const auto limit = static_cast<std::int64_t>(std::min<std::uint64_t>(dense_cells, std::uint64_t{1} << 40));
+    // At most 2^31, so that nx * ny and nx * ny * nz below cannot overflow.
+    const auto limit = static_cast<std::int64_t>(std::min<std::uint64_t>(dense_cells, std::uint64_t{1} << 31));
     if (nx > 0 && ny > 0 && nz > 0 && nx <= limit && ny <= limit && nz <= limit && nx * ny <= limit &&
         nx * ny * nz <= limit) {
       n_ = {nx, ny, nz};
@@ -111,16 +112,18 @@ class VertexGrid {
   std::vector<std::uint32_t> next_;
 };
 
+// Grows the box [lo, hi] to hold p.
+void extend_box(Vec3& lo, Vec3& hi, const Vec3& p) {
+  lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+  hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+}
+
 // Each candidate's cell: the Hilbert index of its edge's midpoint on a 2^10 grid over the
 // candidates' bounding cube (the sort key that keeps consecutive insertions close).
 void set_hilbert_cells(const Mesh3& mesh, std::vector<Candidate>& candidates) {
   Vec3 lo = mesh.point(candidates[0].a), hi = lo;
   for (const Candidate& c : candidates) {
-    for (const std::uint32_t v : {c.a, c.b}) {
-      const Vec3& p = mesh.point(v);
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
+    for (const std::uint32_t v : {c.a, c.b}) extend_box(lo, hi, mesh.point(v));
   }
   const double span = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-300});
   auto q = [&](double x, double l) { return static_cast<std::uint32_t>(std::clamp((x - l) / span * 1024.0, 0.0, 1023.0)); };
@@ -147,12 +150,8 @@ void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dO
   while (first_live < mesh.vertex_capacity() && mesh.is_dead_vertex(first_live)) ++first_live;
   DTLAB_ASSERT(first_live < mesh.vertex_capacity());
   Vec3 lo = mesh.point(first_live), hi = lo;
-  for (std::uint32_t v = first_live; v < mesh.vertex_capacity(); ++v) {
-    if (mesh.is_dead_vertex(v)) continue;
-    const Vec3& p = mesh.point(v);
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  for (std::uint32_t v = first_live; v < mesh.vertex_capacity(); ++v)
+    if (!mesh.is_dead_vertex(v)) extend_box(lo, hi, mesh.point(v));
   VertexGrid grid(lo, hi, options.filter_distance * control.median_largest_size(), options.filter_dense_cells);
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
     if (!mesh.is_dead_vertex(v)) grid.insert(v, mesh.point(v));

@@ -4,11 +4,11 @@
 // operator to the whole mesh (sizes by collapse and split toward a unit mesh, the swap pass,
 // relocation sweeps), and repeat while a round still improves the worst or the mean quality.
 #include <algorithm>
-#include <span>
-#include <optional>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -157,7 +157,7 @@ std::uint64_t polish_dihedral_angles(Mesh3& mesh, const Optimize3dOptions& o, co
   if (o.goal_max_dihedral_deg > 0.0) r.max_dihedral_cos = std::cos(o.goal_max_dihedral_deg * kRadians);
   std::uint64_t moved = 0;
   std::vector<std::pair<double, std::uint32_t>> small;
-  std::vector<std::uint32_t> tried;
+  std::vector<std::uint8_t> tried_in;  // per vertex slot: tried in this pass
   for (int pass = 0; pass < 3; ++pass) {
     small.clear();
     for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
@@ -166,13 +166,13 @@ std::uint64_t polish_dihedral_angles(Mesh3& mesh, const Optimize3dOptions& o, co
       if (c <= 1.0) small.emplace_back(-c, t);
     }
     std::sort(small.begin(), small.end());
-    tried.clear();
+    tried_in.assign(mesh.vertex_capacity(), 0);
     std::uint64_t moved_now = 0;
     for (const auto& [key, t] : small) {
       if (!mesh.in_domain(t)) continue;
       for (const std::uint32_t v : mesh.tetrahedron(t)) {
-        if (std::find(tried.begin(), tried.end(), v) != tried.end()) continue;
-        tried.push_back(v);
+        if (tried_in[v]) continue;
+        tried_in[v] = 1;
         moved_now += try_relocate_dihedral3(mesh, v, field, r) ? 1 : 0;
       }
     }
