@@ -34,6 +34,7 @@ struct MeshArgs {
   std::string method = "edge";
   std::string interpolation = "sizes";
   bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
+  bool no_remesh = false;  // surfaces only: Mesh3dOptions::local_remesh off
   bool remove_cavities = false;  // surfaces only (apps/mesh3.cpp)
   std::string optimize = "standard";  // surfaces only: the effort (optimize3d_effort)
   bool triangulate_nonplanar = false;  // surfaces only
@@ -68,7 +69,7 @@ int run_mesh(const MeshArgs& args) {
                       .method = args.method, .interpolation = args.interpolation, .no_optimize = args.no_optimize,
                       .stats = args.stats, .verify = args.verify, .resample_boundary = args.resample_boundary,
                       .remove_cavities = args.remove_cavities, .optimize = args.optimize,
-                      .triangulate_nonplanar = args.triangulate_nonplanar});
+                      .triangulate_nonplanar = args.triangulate_nonplanar, .no_remesh = args.no_remesh});
   }
   const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
   if (given > 1) throw InputError("give one of --size, --size-map, --metric");
@@ -176,6 +177,9 @@ void add_mesh(CLI::App& app) {
   cmd->add_flag("--resample-boundary", args->resample_boundary,
                 "Cut the input segments anew in the size or metric given (default: they are the boundary discretisation)");
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the optimization step");
+  cmd->add_flag("--no-remesh", args->no_remesh,
+                "Surfaces: after the optimization, do not mesh again the regions around the tetrahedra still below "
+                "its goal's smallest dihedral angle");
   cmd->add_flag("--triangulate-nonplanar", args->triangulate_nonplanar,
                 "Closed surfaces: triangulate a polygonal face whose corners are not in one plane in its projection "
                 "(each triangle a boundary face with the face's marker) instead of refusing it; counted on stderr");

@@ -107,6 +107,7 @@ int run_mesh3(const Mesh3CliArgs& args) {
   Mesh3dOptions options;
   options.method = args.method;
   options.optimize = !args.no_optimize;
+  options.local_remesh = !args.no_remesh;
   options.optimization = optimize3d_effort(args.optimize);
   options.remove_cavities = args.remove_cavities;
   const MetricInterpolation mode =
@@ -174,6 +175,7 @@ int run_mesh3(const Mesh3CliArgs& args) {
          << ",\"relocations\":" << s.relocations << ",\"collapses\":" << s.collapses << ",\"splits\":" << s.splits
          << ",\"optimization_rounds\":" << s.optimization_rounds
          << ",\"optimization_stopped_by\":" << json_string(s.optimization_stopped_by)
+         << ",\"remeshed_regions\":" << s.remeshed_regions
          << ",\"target\":" << json_number(target) << ",\"seconds\":" << json_number(s.seconds)
          << ",\"seconds_empty_mesh\":" << json_number(s.seconds_empty_mesh)
          << ",\"seconds_control_space\":" << json_number(s.seconds_control_space)

@@ -16,6 +16,7 @@ struct Mesh3CliArgs {
   bool remove_cavities = false;  // Mesh3dOptions::remove_cavities
   std::string optimize = "standard";  // the effort: optimize3d_effort (optimize3d.hpp)
   bool triangulate_nonplanar = false;  // FacetTriangulationOptions::triangulate_nonplanar
+  bool no_remesh = false;              // Mesh3dOptions::local_remesh off
 };
 
 // Returns the exit status: 0 success, 3 --verify failed. Throws InputError for bad input.

@@ -11,6 +11,7 @@
 // operation counts and both reports.
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "algorithms/mesh2d/control_space.hpp"
+#include "algorithms/mesh3d/local_remesh.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
 #include "algorithms/optimize3d/optimize3d.hpp"
 #include "apps/cli_util.hpp"
@@ -46,6 +48,7 @@ struct OptimizeArgs {
   bool shape_only = false;
   bool boundary_splits = false;
   bool valence = false;
+  bool no_remesh = false;
   bool stats = false;
 };
 
@@ -134,6 +137,11 @@ int run_optimize3(const OptimizeArgs& args) {
   options.max_rounds = args.rounds;
   options.collapses = options.splits = !args.shape_only;
   const Optimize3dStats stats = optimize3d(mesh, options, field);
+  // What the operators leave below 20 degrees, meshed again (algorithms/mesh3d/local_remesh.hpp).
+  LocalRemesh3Stats remesh;
+  const auto remesh_start = std::chrono::steady_clock::now();
+  if (!args.shape_only && !args.no_remesh) remesh = remesh_small_angles(mesh, field);
+  const double remesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - remesh_start).count();
   const Snapshot3 after = snapshot3(mesh, input);
   const QualityReport report_after = measure_quality(after.data.vertices, after.data.tetrahedra, after.metrics);
   if (!args.output.empty()) write_mesh3(args.output, after.data);
@@ -142,12 +150,16 @@ int run_optimize3(const OptimizeArgs& args) {
   std::cout << "operations: " << stats.face_swaps << " face swaps, " << stats.shell_transformations
             << " shell transformations, " << stats.relocations << " relocations, " << stats.collapses << " collapses, "
             << stats.splits << " splits in " << stats.rounds << " rounds (" << stats.stopped_by << "), "
-            << json_number(stats.seconds) << " s\n";
+            << json_number(stats.seconds) << " s; " << remesh.remeshed << " of " << remesh.tried
+            << " regions remeshed (" << remesh.vertices_added << " vertices added, " << remesh.vertices_removed
+            << " removed), " << json_number(remesh_seconds) << " s\n";
   if (args.stats) {
     std::ostringstream json;
     json << "{\"input\":" << json_string(args.input) << ",\"face_swaps\":" << stats.face_swaps
          << ",\"shell_transformations\":" << stats.shell_transformations << ",\"relocations\":" << stats.relocations
          << ",\"collapses\":" << stats.collapses << ",\"splits\":" << stats.splits << ",\"rounds\":" << stats.rounds
+         << ",\"remeshed_regions\":" << remesh.remeshed << ",\"remesh_tried\":" << remesh.tried
+         << ",\"remesh_seconds\":" << json_number(remesh_seconds)
          << ",\"stopped_by\":" << json_string(stats.stopped_by) << ",\"worst_before\":" << json_number(stats.worst_before)
          << ",\"mean_before\":" << json_number(stats.mean_before) << ",\"worst_after\":" << json_number(stats.worst_after)
          << ",\"mean_after\":" << json_number(stats.mean_after) << ",\"tetrahedra_before\":" << stats.tetrahedra_before
@@ -248,6 +260,9 @@ void add_optimize(CLI::App& app) {
   cmd->add_flag("--split-boundary", args->boundary_splits,
                 "Split long boundary edges too (2D only: the new points lie on them, their references kept)");
   cmd->add_flag("--valence", args->valence, "Add valence relaxation (degrees toward 6)");
+  cmd->add_flag("--no-remesh", args->no_remesh,
+                "3D: leave out the last step, which meshes again (by the generator) the regions around the "
+                "tetrahedra still below 20 degrees");
   cmd->add_flag("--stats", args->stats, "Print one JSON object with the counts and both quality reports as the last line");
   cmd->callback([args, size] {
     args->size_given = size->count() > 0;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "algorithms/mesh3d/local_remesh.hpp"
 #include "algorithms/mesh3d/spatial_renumber.hpp"
 #include "kernel/error.hpp"
 
@@ -87,6 +88,15 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
     result.stats.splits = o.splits;
     result.stats.optimization_rounds = o.rounds;
     result.stats.optimization_stopped_by = o.stopped_by;
+    // What the optimization leaves below the goal's smallest dihedral angle, meshed again
+    // (local_remesh.hpp, whose regions are meshed with local_remesh off: no deeper nesting).
+    if (options.local_remesh && optimization.goal_min_dihedral_deg > 0.0) {
+      LocalRemesh3Options remesh;
+      remesh.below_deg = optimization.goal_min_dihedral_deg;
+      if (optimization.goal_max_dihedral_deg > 0.0) remesh.max_dihedral_deg = optimization.goal_max_dihedral_deg;
+      if (optimization.goal_worst_quality > 0.0) remesh.quality_limit = optimization.goal_worst_quality;
+      result.stats.remeshed_regions = remesh_small_angles(result.mesh, field, remesh).remeshed;
+    }
   }
   result.stats.seconds_optimization = seconds_since(phase);
 

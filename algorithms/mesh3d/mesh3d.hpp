@@ -9,8 +9,9 @@
 //      saturation (edge_points.cpp);
 //   4. insertion by the constrained, possibly anisotropic Delaunay kernel (§7.9-§7.10,
 //      delaunay_kernel.hpp);
-//   5. optimization (algorithms/optimize3d), then the exterior removed, regions written with
-//      their references (Mesh3::domain).
+//   5. optimization (algorithms/optimize3d), the regions it cannot cure meshed again
+//      (local_remesh.hpp), then the exterior removed, regions written with their references
+//      (Mesh3::domain).
 //
 //   dtlab::Mesh3dResult r = dtlab::mesh3d({.points = pts, .triangles = tris}, {});
 //   write_mesh3("out.mesh", r.output);
@@ -43,6 +44,9 @@ struct Mesh3dOptions {
   // control space (moved and new points take their metric from it).
   bool optimize = true;
   Optimize3dOptions optimization = optimize3d_effort("standard");
+  // After it, the regions around the tetrahedra still below the optimization's goal for the
+  // smallest dihedral angle meshed again (local_remesh.hpp); none without such a goal.
+  bool local_remesh = true;
   // Drop the cavities: regions bounded only by shells nested inside another (a cube minus a
   // ball: the ball's inside), as Constrained3dOptions::remove_cavities.
   bool remove_cavities = false;
@@ -80,6 +84,7 @@ struct Mesh3dStats {
   std::uint64_t face_swaps = 0, shell_transformations = 0, relocations = 0, collapses = 0, splits = 0;
   std::uint32_t optimization_rounds = 0;
   std::string optimization_stopped_by;
+  std::uint64_t remeshed_regions = 0;  // local_remesh.hpp
 };
 
 struct Mesh3dResult {

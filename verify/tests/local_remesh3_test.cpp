@@ -1,0 +1,187 @@
+// Local remeshing (algorithms/mesh3d/local_remesh.hpp) on empty meshes, whose tetrahedra join
+// boundary vertices only (none of them may move: the operators of optimize3d cannot cure their
+// slivers): the smallest dihedral angle grows, the mesh stays valid (Mesh3::check, exact), the
+// domain's volume, every constrained facet with its reference, every constrained edge and every
+// fixed vertex are kept, two regions keep their internal face, and the result is deterministic.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "algorithms/constrained3d/constrained3d.hpp"
+#include "algorithms/mesh3d/local_remesh.hpp"
+#include "algorithms/mesh3d/mesh3d.hpp"
+#include "kernel/predicates.hpp"
+#include "kernel/quality.hpp"
+
+namespace dtlab {
+namespace {
+
+struct Surface {
+  std::vector<Vec3> points;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<int> refs;
+};
+
+// The box [lo, lo + size] with its faces cut in nx x n, n x n ... squares along x, y, z: a fine
+// `nx` along x makes thin triangles at the four edges parallel to x. Face reference ref_base +
+// face; points shared with an earlier box; `skip_face` left out (an internal face).
+void add_box(Surface& s, const Vec3& lo, double size, std::array<int, 3> n, int ref_base, int skip_face = -1) {
+  std::map<std::array<int, 3>, std::uint32_t> index;
+  const auto vertex = [&](std::array<int, 3> g) {
+    const auto [it, fresh] = index.try_emplace(g, static_cast<std::uint32_t>(s.points.size()));
+    if (fresh) {
+      const Vec3 p{lo.x + size * g[0] / n[0], lo.y + size * g[1] / n[1], lo.z + size * g[2] / n[2]};
+      for (std::uint32_t k = 0; k < s.points.size(); ++k)
+        if (s.points[k] == p) return it->second = k;
+      s.points.push_back(p);
+    }
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side < 2; ++side) {
+      const int face = 2 * axis + side;
+      if (face == skip_face) continue;
+      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+      for (int i = 0; i < n[u]; ++i)
+        for (int j = 0; j < n[w]; ++j) {
+          std::array<std::array<int, 3>, 4> c{};
+          for (int k = 0; k < 4; ++k) {
+            std::array<int, 3> g{};
+            g[axis] = side * n[axis];
+            g[u] = i + (k == 1 || k == 2);
+            g[w] = j + (k >= 2);
+            c[k] = g;
+          }
+          const std::uint32_t a = vertex(c[0]), b = vertex(c[1]), d = vertex(c[2]), e = vertex(c[3]);
+          s.triangles.push_back({a, b, d});
+          s.triangles.push_back({a, d, e});
+          s.refs.push_back(ref_base + face);
+          s.refs.push_back(ref_base + face);
+        }
+    }
+}
+
+Mesh3 empty_mesh_of(const Surface& s) {
+  Constrained3dOptions recovery;
+  recovery.method = "recover";
+  const ConstrainedInput3 input{.points = s.points, .triangles = s.triangles, .triangle_refs = s.refs, .holes = {}, .regions = {}};
+  return empty_mesh(constrained3d(input, recovery));
+}
+
+// What the domain is made of: its smallest dihedral angle (degrees), its volume, its constrained
+// facets (sorted vertex ids with their reference), its constrained edges, its fixed vertices.
+struct Summary {
+  double min_dihedral_deg = 180.0;
+  double volume = 0.0;
+  std::vector<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, int>> constrained_facets;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> constrained_edges;
+  std::vector<std::uint32_t> fixed_vertices;
+};
+
+Summary summarize(const Mesh3& m) {
+  Summary s;
+  double highest_cos = -1.0;
+  for (std::uint32_t t = 0; t < m.tetrahedron_capacity(); ++t) {
+    if (!m.in_domain(t)) continue;
+    const auto v = m.tetrahedron(t);
+    const Vec3 &a = m.point(v[0]), &b = m.point(v[1]), &c = m.point(v[2]), &d = m.point(v[3]);
+    highest_cos = std::max(highest_cos, dihedral_cosine_range(a, b, c, d)[1]);
+    s.volume += dot(b - a, cross(c - a, d - a)) / 6.0;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t h = Mesh3::facet(t, i);
+      if (!m.is_constrained(h)) continue;
+      auto f = m.facet_vertices(h);
+      std::sort(f.begin(), f.end());
+      s.constrained_facets.emplace_back(f[0], f[1], f[2], m.facet_ref(h));
+    }
+    for (std::uint32_t i = 0; i < 4; ++i)
+      for (std::uint32_t j = i + 1; j < 4; ++j)
+        if (m.is_constrained_edge(v[i], v[j])) s.constrained_edges.emplace_back(std::min(v[i], v[j]), std::max(v[i], v[j]));
+  }
+  for (std::uint32_t v = 0; v < m.vertex_capacity(); ++v)
+    if (!m.is_dead_vertex(v) && (m.flags(v) & Mesh3::kFixed)) s.fixed_vertices.push_back(v);
+  s.min_dihedral_deg = std::acos(highest_cos) * 57.295779513082320877;
+  for (auto* list : {&s.constrained_facets}) {
+    std::sort(list->begin(), list->end());
+    list->erase(std::unique(list->begin(), list->end()), list->end());
+  }
+  std::sort(s.constrained_edges.begin(), s.constrained_edges.end());
+  s.constrained_edges.erase(std::unique(s.constrained_edges.begin(), s.constrained_edges.end()), s.constrained_edges.end());
+  return s;
+}
+
+void expect_kept(const Summary& before, const Summary& after) {
+  EXPECT_NEAR(after.volume, before.volume, 1e-12 * before.volume);
+  EXPECT_EQ(after.constrained_facets, before.constrained_facets);
+  EXPECT_EQ(after.constrained_edges, before.constrained_edges);
+  EXPECT_EQ(after.fixed_vertices, before.fixed_vertices);
+}
+
+TEST(LocalRemesh3, LiftsTheSmallestAngleOfAnEmptyMesh) {
+  Surface s;
+  add_box(s, {0, 0, 0}, 1.0, {12, 3, 3}, 1);  // thin triangles along the edges parallel to x
+  Mesh3 m = empty_mesh_of(s);
+  const Summary before = summarize(m);
+  const LocalRemesh3Stats stats = remesh_small_angles(m, {});
+  m.check();
+  const Summary after = summarize(m);
+  expect_kept(before, after);
+  EXPECT_GT(stats.remeshed, 0u);
+  EXPECT_GT(stats.vertices_added, 0u);
+  EXPECT_GT(after.min_dihedral_deg, before.min_dihedral_deg + 1.0)
+      << "before " << before.min_dihedral_deg << ", after " << after.min_dihedral_deg;
+}
+
+TEST(LocalRemesh3, TwoRegionsKeepTheirInternalFace) {
+  Surface s;
+  add_box(s, {0, 0, 0}, 1.0, {6, 2, 2}, 1);
+  add_box(s, {1, 0, 0}, 1.0, {6, 2, 2}, 11, /*skip_face=*/0);  // shares the face x = 1
+  Mesh3 m = empty_mesh_of(s);
+  std::map<int, double> volume_before, volume_after;
+  const auto volumes = [](const Mesh3& mesh, std::map<int, double>& by_ref) {
+    for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+      if (!mesh.in_domain(t)) continue;
+      const auto v = mesh.tetrahedron(t);
+      const Vec3 &a = mesh.point(v[0]), &b = mesh.point(v[1]), &c = mesh.point(v[2]), &d = mesh.point(v[3]);
+      by_ref[mesh.ref(t)] += dot(b - a, cross(c - a, d - a)) / 6.0;
+    }
+  };
+  volumes(m, volume_before);
+  const Summary before = summarize(m);
+  const LocalRemesh3Stats stats = remesh_small_angles(m, {});
+  m.check();
+  volumes(m, volume_after);
+  expect_kept(before, summarize(m));
+  EXPECT_GT(stats.remeshed, 0u);
+  ASSERT_EQ(volume_after.size(), 2u);
+  for (const auto& [ref, v] : volume_before) EXPECT_NEAR(volume_after[ref], v, 1e-12) << "region " << ref;
+}
+
+TEST(LocalRemesh3, Deterministic) {
+  Surface s;
+  add_box(s, {0, 0, 0}, 1.0, {9, 2, 3}, 1);
+  Mesh3 first = empty_mesh_of(s), second = empty_mesh_of(s);
+  remesh_small_angles(first, {});
+  remesh_small_angles(second, {});
+  EXPECT_EQ(first.domain(), second.domain());
+}
+
+TEST(LocalRemesh3, NothingBelowTheBoundNothingChanges) {
+  Surface s;
+  add_box(s, {0, 0, 0}, 1.0, {12, 3, 3}, 1);
+  Mesh3 m = empty_mesh_of(s);
+  const MeshData3 before = m.domain();
+  LocalRemesh3Options o;
+  o.below_deg = 0.0;
+  const LocalRemesh3Stats stats = remesh_small_angles(m, {}, o);
+  EXPECT_EQ(stats.tried, 0u);
+  EXPECT_EQ(m.domain(), before);
+}
+
+}  // namespace
+}  // namespace dtlab
