@@ -176,6 +176,7 @@ int run_mesh3(const Mesh3CliArgs& args) {
          << ",\"optimization_rounds\":" << s.optimization_rounds
          << ",\"optimization_stopped_by\":" << json_string(s.optimization_stopped_by)
          << ",\"remeshed_regions\":" << s.remeshed_regions
+         << ",\"remesh_work_bound_reached\":" << (s.remesh_work_bound_reached ? "true" : "false")
          << ",\"target\":" << json_number(target) << ",\"seconds\":" << json_number(s.seconds)
          << ",\"seconds_empty_mesh\":" << json_number(s.seconds_empty_mesh)
          << ",\"seconds_control_space\":" << json_number(s.seconds_control_space)

@@ -152,7 +152,8 @@ int run_optimize3(const OptimizeArgs& args) {
             << stats.splits << " splits in " << stats.rounds << " rounds (" << stats.stopped_by << "), "
             << json_number(stats.seconds) << " s; " << remesh.remeshed << " of " << remesh.tried
             << " regions remeshed (" << remesh.vertices_added << " vertices added, " << remesh.vertices_removed
-            << " removed), " << json_number(remesh_seconds) << " s\n";
+            << " removed)" << (remesh.work_bound_reached ? ", stopped at its work bound" : "") << ", "
+            << json_number(remesh_seconds) << " s\n";
   if (args.stats) {
     std::ostringstream json;
     json << "{\"input\":" << json_string(args.input) << ",\"face_swaps\":" << stats.face_swaps
@@ -160,6 +161,7 @@ int run_optimize3(const OptimizeArgs& args) {
          << ",\"collapses\":" << stats.collapses << ",\"splits\":" << stats.splits << ",\"rounds\":" << stats.rounds
          << ",\"remeshed_regions\":" << remesh.remeshed << ",\"remesh_tried\":" << remesh.tried
          << ",\"remesh_seconds\":" << json_number(remesh_seconds)
+         << ",\"remesh_work_bound_reached\":" << (remesh.work_bound_reached ? "true" : "false")
          << ",\"stopped_by\":" << json_string(stats.stopped_by) << ",\"worst_before\":" << json_number(stats.worst_before)
          << ",\"mean_before\":" << json_number(stats.mean_before) << ",\"worst_after\":" << json_number(stats.worst_after)
          << ",\"mean_after\":" << json_number(stats.mean_after) << ",\"tetrahedra_before\":" << stats.tetrahedra_before

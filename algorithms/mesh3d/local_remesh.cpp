@@ -205,6 +205,7 @@ bool remesh_region(Mesh3& mesh, const Region& r, const MetricField3& field, cons
   mesher.max_vertices = 1000 + 100 * points.size();
   mesher.local_remesh = false;  // (one level: a region's own small angles stay)
   ++stats.tried;
+  stats.work += r.tetrahedra.size();
   Mesh3dResult result;
   try {
     result = mesh3d(input, mesher);
@@ -307,7 +308,10 @@ LocalRemesh3Stats remesh_small_angles(Mesh3& mesh, const MetricField3& field, co
   };
   std::vector<std::pair<double, std::uint32_t>> small;
   Region region;
-  for (std::uint32_t pass = 0; pass < options.passes; ++pass) {
+  std::uint64_t domain = 0;
+  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) domain += mesh.in_domain(t);
+  const double bound = options.work_factor * static_cast<double>(domain) + options.work_floor;
+  for (std::uint32_t pass = 0; pass < options.passes && !stats.work_bound_reached; ++pass) {
     small.clear();
     for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
       if (!mesh.in_domain(t)) continue;
@@ -317,9 +321,14 @@ LocalRemesh3Stats remesh_small_angles(Mesh3& mesh, const MetricField3& field, co
     std::sort(small.begin(), small.end());
     std::uint64_t changed = 0;
     for (const auto& [key, t] : small) {
+      if (stats.work_bound_reached) break;
       // Changed by an earlier region (its slot reused, or it is gone): judged again if still small.
       if (!mesh.in_domain(t) || !(smallest_cos(t) > cos_below)) continue;
-      for (std::uint32_t rings = 1; rings <= options.max_rings; ++rings) {
+      for (std::uint32_t rings = 1; rings <= options.max_rings && !stats.work_bound_reached; ++rings) {
+        if (static_cast<double>(stats.work) >= bound) {
+          stats.work_bound_reached = true;
+          break;
+        }
         if (!cut_region(mesh, t, rings, options.max_region_tetrahedra, region)) continue;
         if (remesh_region(mesh, region, field, options, stats)) {
           ++changed;

@@ -95,7 +95,9 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
       remesh.below_deg = optimization.goal_min_dihedral_deg;
       if (optimization.goal_max_dihedral_deg > 0.0) remesh.max_dihedral_deg = optimization.goal_max_dihedral_deg;
       if (optimization.goal_worst_quality > 0.0) remesh.quality_limit = optimization.goal_worst_quality;
-      result.stats.remeshed_regions = remesh_small_angles(result.mesh, field, remesh).remeshed;
+      const LocalRemesh3Stats r = remesh_small_angles(result.mesh, field, remesh);
+      result.stats.remeshed_regions = r.remeshed;
+      result.stats.remesh_work_bound_reached = r.work_bound_reached;
     }
   }
   result.stats.seconds_optimization = seconds_since(phase);

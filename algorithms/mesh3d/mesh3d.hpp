@@ -85,6 +85,7 @@ struct Mesh3dStats {
   std::uint32_t optimization_rounds = 0;
   std::string optimization_stopped_by;
   std::uint64_t remeshed_regions = 0;  // local_remesh.hpp
+  bool remesh_work_bound_reached = false;
 };
 
 struct Mesh3dResult {

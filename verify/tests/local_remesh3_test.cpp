@@ -2,7 +2,8 @@
 // boundary vertices only (none of them may move: the operators of optimize3d cannot cure their
 // slivers): the smallest dihedral angle grows, the mesh stays valid (Mesh3::check, exact), the
 // domain's volume, every constrained facet with its reference, every constrained edge and every
-// fixed vertex are kept, two regions keep their internal face, and the result is deterministic.
+// fixed vertex are kept, two regions keep their internal face, the result is deterministic, and
+// the work bound stops the step.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -181,6 +182,29 @@ TEST(LocalRemesh3, NothingBelowTheBoundNothingChanges) {
   const LocalRemesh3Stats stats = remesh_small_angles(m, {}, o);
   EXPECT_EQ(stats.tried, 0u);
   EXPECT_EQ(m.domain(), before);
+}
+
+// The work bound stops the step after the first region once it holds more tetrahedra than
+// allowed, and says so; the mesh stays valid.
+TEST(LocalRemesh3, StopsAtItsWorkBound) {
+  Surface s;
+  add_box(s, {0, 0, 0}, 1.0, {12, 3, 3}, 1);
+  Mesh3 m = empty_mesh_of(s);
+  LocalRemesh3Options o;
+  o.work_factor = 0.0;
+  o.work_floor = 1.0;
+  const LocalRemesh3Stats stats = remesh_small_angles(m, {}, o);
+  m.check();
+  EXPECT_EQ(stats.tried, 1u);
+  EXPECT_TRUE(stats.work_bound_reached);
+  // A floor of 300 tetrahedra: a few regions, then the bound (each region holds dozens).
+  Mesh3 n = empty_mesh_of(s);
+  o.work_floor = 300.0;
+  const LocalRemesh3Stats few = remesh_small_angles(n, {}, o);
+  n.check();
+  EXPECT_GT(few.tried, 1u);
+  EXPECT_GE(few.work, 300u);
+  EXPECT_TRUE(few.work_bound_reached);
 }
 
 }  // namespace
