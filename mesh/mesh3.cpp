@@ -9,15 +9,11 @@
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/edge_key.hpp"
 
 namespace dtlab {
 
 namespace {
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) noexcept {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(a) << 32) | b;
-}
 
 struct TripleHash {
   std::size_t operator()(const std::array<std::uint32_t, 3>& k) const noexcept {

@@ -7,14 +7,11 @@
 
 #include "algorithms/mesh3d/mesh3d.hpp"
 #include "kernel/error.hpp"
+#include "mesh/edge_key.hpp"
 
 namespace dtlab {
 
 namespace {
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-}
 
 }  // namespace
 

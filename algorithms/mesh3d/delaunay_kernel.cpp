@@ -8,6 +8,7 @@
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/edge_key.hpp"
 
 namespace dtlab {
 
@@ -16,10 +17,6 @@ namespace {
 template <class T>
 void grow_to(std::vector<T>& v, std::size_t n) {
   if (v.size() < n) v.resize(std::max(n, v.size() + v.size() / 2), 0);
-}
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
 }
 
 }  // namespace

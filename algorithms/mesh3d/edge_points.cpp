@@ -20,6 +20,7 @@
 #include "kernel/radix_sort.hpp"
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/error.hpp"
+#include "mesh/edge_key.hpp"
 
 namespace dtlab {
 
@@ -30,10 +31,6 @@ struct Candidate {
   std::uint32_t a, b;
   std::uint32_t cell = 0;  // Hilbert index of the edge's midpoint
 };
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-}
 
 // The vertices bucketed in cubic cells of side `cell`, each cell a singly linked list through
 // `next_` (vertex ids). Only insertion: the edge method never removes a vertex. The cells over

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "kernel/metric.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/quality.hpp"
+#include "mesh/edge_key.hpp"
 
 namespace dtlab {
 
@@ -24,10 +26,6 @@ using optimize3d_detail::NewTetrahedron;
 
 constexpr double kRadians = 0.017453292519943295769;  // pi / 180
 constexpr std::array<std::array<std::uint32_t, 2>, 6> kEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return a < b ? std::uint64_t{a} << 32 | b : std::uint64_t{b} << 32 | a;
-}
 
 // The smallest and largest dihedral angles (as cosines), the worst Q_K and the longest edge
 // inside the region (not on its surface), in the metric, of a set of tetrahedra.
@@ -199,7 +197,10 @@ bool remesh_region(Mesh3& mesh, const Region& r, const MetricField3& field, cons
     background.tetrahedra.push_back({background_id[w[0]], background_id[w[1]], background_id[w[2]], background_id[w[3]]});
     background.tetrahedron_refs.push_back(0);
   }
-  const ControlSpace3 inner(background, inner_metrics), outer(background, outer_metrics);
+  const ControlSpace3 inner(background, inner_metrics);
+  // The old metrics interpolated, for new vertices when there is no field.
+  std::optional<ControlSpace3> outer;
+  if (!field) outer.emplace(background, std::move(outer_metrics));
   Mesh3dOptions mesher;
   mesher.control = &inner;
   mesher.max_vertices = 1000 + 100 * points.size();
@@ -235,7 +236,7 @@ bool remesh_region(Mesh3& mesh, const Region& r, const MetricField3& field, cons
       id[k] = it->second, ++matched;
       metric[k] = mesh.metric(it->second);
     } else {
-      metric[k] = field ? field(p) : outer.metric_at(p, hint);
+      metric[k] = field ? field(p) : outer->metric_at(p, hint);
     }
   }
   if (matched != points.size()) return false;

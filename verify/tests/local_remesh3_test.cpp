@@ -18,60 +18,18 @@
 #include "algorithms/mesh3d/mesh3d.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/quality.hpp"
+#include "verify/tests/box_surface.hpp"
 
 namespace dtlab {
 namespace {
 
-struct Surface {
-  std::vector<Vec3> points;
-  std::vector<std::array<std::uint32_t, 3>> triangles;
-  std::vector<int> refs;
-};
-
-// The box [lo, lo + size] with its faces cut in nx x n, n x n ... squares along x, y, z: a fine
-// `nx` along x makes thin triangles at the four edges parallel to x. Face reference ref_base +
-// face; points shared with an earlier box; `skip_face` left out (an internal face).
-void add_box(Surface& s, const Vec3& lo, double size, std::array<int, 3> n, int ref_base, int skip_face = -1) {
-  std::map<std::array<int, 3>, std::uint32_t> index;
-  const auto vertex = [&](std::array<int, 3> g) {
-    const auto [it, fresh] = index.try_emplace(g, static_cast<std::uint32_t>(s.points.size()));
-    if (fresh) {
-      const Vec3 p{lo.x + size * g[0] / n[0], lo.y + size * g[1] / n[1], lo.z + size * g[2] / n[2]};
-      for (std::uint32_t k = 0; k < s.points.size(); ++k)
-        if (s.points[k] == p) return it->second = k;
-      s.points.push_back(p);
-    }
-    return it->second;
-  };
-  for (int axis = 0; axis < 3; ++axis)
-    for (int side = 0; side < 2; ++side) {
-      const int face = 2 * axis + side;
-      if (face == skip_face) continue;
-      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-      for (int i = 0; i < n[u]; ++i)
-        for (int j = 0; j < n[w]; ++j) {
-          std::array<std::array<int, 3>, 4> c{};
-          for (int k = 0; k < 4; ++k) {
-            std::array<int, 3> g{};
-            g[axis] = side * n[axis];
-            g[u] = i + (k == 1 || k == 2);
-            g[w] = j + (k >= 2);
-            c[k] = g;
-          }
-          const std::uint32_t a = vertex(c[0]), b = vertex(c[1]), d = vertex(c[2]), e = vertex(c[3]);
-          s.triangles.push_back({a, b, d});
-          s.triangles.push_back({a, d, e});
-          s.refs.push_back(ref_base + face);
-          s.refs.push_back(ref_base + face);
-        }
-    }
-}
+using test::add_box;
+using Surface = test::SurfaceData;
 
 Mesh3 empty_mesh_of(const Surface& s) {
   Constrained3dOptions recovery;
   recovery.method = "recover";
-  const ConstrainedInput3 input{.points = s.points, .triangles = s.triangles, .triangle_refs = s.refs, .holes = {}, .regions = {}};
-  return empty_mesh(constrained3d(input, recovery));
+  return empty_mesh(constrained3d(s.input(), recovery));
 }
 
 // What the domain is made of: its smallest dihedral angle (degrees), its volume, its constrained
@@ -125,7 +83,7 @@ void expect_kept(const Summary& before, const Summary& after) {
 
 TEST(LocalRemesh3, LiftsTheSmallestAngleOfAnEmptyMesh) {
   Surface s;
-  add_box(s, {0, 0, 0}, 1.0, {12, 3, 3}, 1);  // thin triangles along the edges parallel to x
+  add_box(s, {0, 0, 0}, {1.0, 1.0, 1.0}, {12, 3, 3}, 1);  // thin triangles along the edges parallel to x
   Mesh3 m = empty_mesh_of(s);
   const Summary before = summarize(m);
   const LocalRemesh3Stats stats = remesh_small_angles(m, {});
@@ -140,8 +98,8 @@ TEST(LocalRemesh3, LiftsTheSmallestAngleOfAnEmptyMesh) {
 
 TEST(LocalRemesh3, TwoRegionsKeepTheirInternalFace) {
   Surface s;
-  add_box(s, {0, 0, 0}, 1.0, {6, 2, 2}, 1);
-  add_box(s, {1, 0, 0}, 1.0, {6, 2, 2}, 11, /*skip_face=*/0);  // shares the face x = 1
+  add_box(s, {0, 0, 0}, {1.0, 1.0, 1.0}, {6, 2, 2}, 1);
+  add_box(s, {1, 0, 0}, {1.0, 1.0, 1.0}, {6, 2, 2}, 11, /*skip_face=*/0);  // shares the face x = 1
   Mesh3 m = empty_mesh_of(s);
   std::map<int, double> volume_before, volume_after;
   const auto volumes = [](const Mesh3& mesh, std::map<int, double>& by_ref) {
@@ -165,7 +123,7 @@ TEST(LocalRemesh3, TwoRegionsKeepTheirInternalFace) {
 
 TEST(LocalRemesh3, Deterministic) {
   Surface s;
-  add_box(s, {0, 0, 0}, 1.0, {9, 2, 3}, 1);
+  add_box(s, {0, 0, 0}, {1.0, 1.0, 1.0}, {9, 2, 3}, 1);
   Mesh3 first = empty_mesh_of(s), second = empty_mesh_of(s);
   remesh_small_angles(first, {});
   remesh_small_angles(second, {});
@@ -174,7 +132,7 @@ TEST(LocalRemesh3, Deterministic) {
 
 TEST(LocalRemesh3, NothingBelowTheBoundNothingChanges) {
   Surface s;
-  add_box(s, {0, 0, 0}, 1.0, {12, 3, 3}, 1);
+  add_box(s, {0, 0, 0}, {1.0, 1.0, 1.0}, {12, 3, 3}, 1);
   Mesh3 m = empty_mesh_of(s);
   const MeshData3 before = m.domain();
   LocalRemesh3Options o;
@@ -188,7 +146,7 @@ TEST(LocalRemesh3, NothingBelowTheBoundNothingChanges) {
 // allowed, and says so; the mesh stays valid.
 TEST(LocalRemesh3, StopsAtItsWorkBound) {
   Surface s;
-  add_box(s, {0, 0, 0}, 1.0, {12, 3, 3}, 1);
+  add_box(s, {0, 0, 0}, {1.0, 1.0, 1.0}, {12, 3, 3}, 1);
   Mesh3 m = empty_mesh_of(s);
   LocalRemesh3Options o;
   o.work_factor = 0.0;

@@ -29,6 +29,7 @@
 #include "kernel/predicates.hpp"
 #include "mesh/io/medit3.hpp"
 #include "verify/checks_mesh3d.hpp"
+#include "verify/tests/box_surface.hpp"
 
 namespace dtlab {
 namespace {
@@ -62,16 +63,8 @@ double log_in(double lo, double hi) { return std::exp(real_in(std::log(lo), std:
 
 // --- Surfaces -----------------------------------------------------------------------------------
 
-struct Surface {
-  std::vector<Vec3> points;
-  std::vector<std::array<std::uint32_t, 3>> triangles;
-  std::vector<int> refs;
-  std::vector<Vec3> holes;
+struct Surface : test::SurfaceData {
   double scale = 1.0;  // a typical length: the size of the bounding box
-
-  Mesh3dInput input() const {
-    return {.points = points, .triangles = triangles, .triangle_refs = refs, .holes = holes, .regions = {}};
-  }
 };
 
 // A random rotation (unit quaternion) and translation applied to every point and hole.
@@ -155,36 +148,7 @@ Surface random_star() {
   return s;
 }
 
-// The surface of the box [lo, lo + size]: on each face an n_axis1 x n_axis2 grid of rectangles cut
-// in two, face reference ref_base + face.
-void add_box(Surface& s, const Vec3& lo, const Vec3& size, const std::array<int, 3>& n, int ref_base) {
-  std::map<std::array<int, 3>, std::uint32_t> index;
-  const auto vertex = [&](std::array<int, 3> g) {
-    const auto [it, fresh] = index.try_emplace(g, static_cast<std::uint32_t>(s.points.size()));
-    if (fresh)
-      s.points.push_back({lo.x + size.x * g[0] / n[0], lo.y + size.y * g[1] / n[1], lo.z + size.z * g[2] / n[2]});
-    return it->second;
-  };
-  for (int axis = 0; axis < 3; ++axis)
-    for (int side = 0; side < 2; ++side) {
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      for (int i = 0; i < n[u]; ++i)
-        for (int j = 0; j < n[v]; ++j) {
-          std::array<std::uint32_t, 4> c{};
-          for (int k = 0; k < 4; ++k) {
-            std::array<int, 3> g{};
-            g[axis] = side * n[axis];
-            g[u] = i + (k == 1 || k == 2);
-            g[v] = j + (k >= 2);
-            c[k] = vertex(g);
-          }
-          s.triangles.push_back({c[0], c[1], c[2]});
-          s.triangles.push_back({c[0], c[2], c[3]});
-          s.refs.push_back(ref_base + 2 * axis + side);
-          s.refs.push_back(ref_base + 2 * axis + side);
-        }
-    }
-}
+using test::add_box;
 
 // A box with a box hole strictly inside it (a hole point marks the hole; or remove_cavities).
 Surface random_box_with_hole(bool& by_hole_point) {

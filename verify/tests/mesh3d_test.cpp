@@ -17,57 +17,14 @@
 #include "kernel/interrupt.hpp"
 #include "mesh/io/medit3.hpp"
 #include "verify/checks_mesh3d.hpp"
+#include "verify/tests/box_surface.hpp"
 #include "verify/tests/interrupt_stops.hpp"
 
 namespace dtlab {
 namespace {
 
-struct Surface {
-  std::vector<Vec3> points;
-  std::vector<std::array<std::uint32_t, 3>> triangles;
-  std::vector<int> refs;
-  std::vector<Vec3> holes;
-
-  Mesh3dInput input() const { return {.points = points, .triangles = triangles, .triangle_refs = refs, .holes = holes, .regions = {}}; }
-};
-
-// The surface of the box [lo, lo + size], each face an n x n grid of squares cut in two, face
-// reference = ref_base + face (0..5); vertices shared.
-void add_box(Surface& s, const Vec3& lo, double size, int n, int ref_base, int skip_face = -1) {
-  std::map<std::array<int, 3>, std::uint32_t> index;
-  const auto vertex = [&](std::array<int, 3> g) {
-    const auto [it, fresh] = index.try_emplace(g, static_cast<std::uint32_t>(s.points.size()));
-    if (fresh) {
-      const Vec3 p{lo.x + size * g[0] / n, lo.y + size * g[1] / n, lo.z + size * g[2] / n};
-      // Share the points of an earlier box at the same place.
-      for (std::uint32_t k = 0; k < s.points.size(); ++k)
-        if (s.points[k] == p) return it->second = k;
-      s.points.push_back(p);
-    }
-    return it->second;
-  };
-  for (int axis = 0; axis < 3; ++axis)
-    for (int side = 0; side < 2; ++side) {
-      const int face = 2 * axis + side;
-      if (face == skip_face) continue;
-      for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) {
-          std::array<std::array<int, 3>, 4> c{};
-          for (int k = 0; k < 4; ++k) {
-            std::array<int, 3> g{};
-            g[axis] = side * n;
-            g[(axis + 1) % 3] = i + (k == 1 || k == 2);
-            g[(axis + 2) % 3] = j + (k >= 2);
-            c[k] = g;
-          }
-          const std::uint32_t a = vertex(c[0]), b = vertex(c[1]), d = vertex(c[2]), e = vertex(c[3]);
-          s.triangles.push_back({a, b, d});
-          s.triangles.push_back({a, d, e});
-          s.refs.push_back(ref_base + face);
-          s.refs.push_back(ref_base + face);
-        }
-    }
-}
+using test::add_box;
+using Surface = test::SurfaceData;
 
 // An icosphere: the icosahedron's faces cut in four `levels` times, projected on the sphere.
 void add_sphere(Surface& s, const Vec3& c, double r, int levels, int ref) {
