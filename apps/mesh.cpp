@@ -38,6 +38,8 @@ struct MeshArgs {
   bool remove_cavities = false;  // surfaces only (apps/mesh3.cpp)
   std::string optimize = "standard";  // surfaces only: the effort (optimize3d_effort)
   bool triangulate_nonplanar = false;  // surfaces only
+  unsigned threads = 1;  // surfaces only: Mesh3dOptions::threads
+  std::uint32_t insertion_streams = 1;  // surfaces only: Mesh3dOptions::insertion_streams
 };
 
 // A uniform size: the box of the input, enlarged by 1 on each side.
@@ -69,8 +71,10 @@ int run_mesh(const MeshArgs& args) {
                       .method = args.method, .interpolation = args.interpolation, .no_optimize = args.no_optimize,
                       .stats = args.stats, .verify = args.verify, .resample_boundary = args.resample_boundary,
                       .remove_cavities = args.remove_cavities, .optimize = args.optimize,
-                      .triangulate_nonplanar = args.triangulate_nonplanar, .no_remesh = args.no_remesh});
+                      .triangulate_nonplanar = args.triangulate_nonplanar, .no_remesh = args.no_remesh,
+                      .threads = args.threads, .insertion_streams = args.insertion_streams});
   }
+  if (args.threads != 1) throw InputError("--threads: the 2D mesher is sequential (give --threads 1 or leave it out)");
   const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
   if (given > 1) throw InputError("give one of --size, --size-map, --metric");
   if (!args.background.empty() && args.size_map.empty() && args.metric.empty())
@@ -180,6 +184,15 @@ void add_mesh(CLI::App& app) {
   cmd->add_flag("--no-remesh", args->no_remesh,
                 "Surfaces: after the optimization, do not mesh again the regions around the tetrahedra still below "
                 "its goal's smallest dihedral angle");
+  cmd->add_option("--threads", args->threads,
+                  "Surfaces: threads for the field point insertion, sharing the streams of each batch "
+                  "(--insertion-streams); the same mesh for every count (default 1)")
+      ->check(CLI::Range(1u, 1024u));
+  cmd->add_option("--insertion-streams", args->insertion_streams,
+                  "Surfaces: the field points of a pass go in as up to this many interleaved streams, one point of "
+                  "each per batch (default 1; part of the algorithm: another count gives another mesh; --threads share "
+                  "the streams of a batch)")
+      ->check(CLI::Range(1u, 1u << 20));
   cmd->add_flag("--triangulate-nonplanar", args->triangulate_nonplanar,
                 "Closed surfaces: triangulate a polygonal face whose corners are not in one plane in its projection "
                 "(each triangle a boundary face with the face's marker) instead of refusing it; counted on stderr");

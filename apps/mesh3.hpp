@@ -2,6 +2,7 @@
 // .poly/.smesh with dimension 3, Medit .mesh with Dimension 3 and triangles only).
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 namespace dtlab::cli {
@@ -17,6 +18,8 @@ struct Mesh3CliArgs {
   std::string optimize = "standard";  // the effort: optimize3d_effort (optimize3d.hpp)
   bool triangulate_nonplanar = false;  // FacetTriangulationOptions::triangulate_nonplanar
   bool no_remesh = false;              // Mesh3dOptions::local_remesh off
+  unsigned threads = 1;                // Mesh3dOptions::threads
+  std::uint32_t insertion_streams = 1;  // Mesh3dOptions::insertion_streams
 };
 
 // Returns the exit status: 0 success, 3 --verify failed. Throws InputError for bad input.

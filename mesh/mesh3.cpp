@@ -195,21 +195,24 @@ void Mesh3::remove_vertex(std::uint32_t v) {
   free_vertices_.push_back(v);
 }
 
-std::uint32_t Mesh3::add_tetrahedron(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, int r) {
+std::uint32_t Mesh3::take_tetrahedron_slot() {
+  if (!free_tetrahedra_.empty()) {
+    const std::uint32_t t = free_tetrahedra_.back();
+    free_tetrahedra_.pop_back();
+    return t;
+  }
+  const std::uint32_t t = tetrahedron_capacity();
+  DTLAB_ASSERT(t < Tetrahedralization3::kMaxTetrahedra);
+  vertices_.resize(vertices_.size() + 4, kNone);
+  neighbours_.resize(neighbours_.size() + 4);
+  facet_refs_.resize(facet_refs_.size() + 4);
+  refs_.push_back(0);
+  return t;
+}
+
+void Mesh3::fill_tetrahedron(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, int r) {
   DTLAB_ASSERT(b != kInfinite && c != kInfinite && d != kInfinite);
   DTLAB_ASSERT(a != kNone && a != b && a != c && a != d && b != c && b != d && c != d);
-  std::uint32_t t;
-  if (!free_tetrahedra_.empty()) {
-    t = free_tetrahedra_.back();
-    free_tetrahedra_.pop_back();
-  } else {
-    t = tetrahedron_capacity();
-    DTLAB_ASSERT(t < Tetrahedralization3::kMaxTetrahedra);
-    vertices_.resize(vertices_.size() + 4);
-    neighbours_.resize(neighbours_.size() + 4);
-    facet_refs_.resize(facet_refs_.size() + 4);
-    refs_.push_back(0);
-  }
   const std::uint32_t v[4] = {a, b, c, d};
   for (std::uint32_t i = 0; i < 4; ++i) {
     vertices_[4 * t + i] = v[i];
@@ -221,14 +224,23 @@ std::uint32_t Mesh3::add_tetrahedron(std::uint32_t a, std::uint32_t b, std::uint
     }
   }
   refs_[t] = r;
+}
+
+std::uint32_t Mesh3::add_tetrahedron(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, int r) {
+  const std::uint32_t t = take_tetrahedron_slot();
+  fill_tetrahedron(t, a, b, c, d, r);
   return t;
 }
 
-void Mesh3::remove_tetrahedron(std::uint32_t t) {
+void Mesh3::kill_tetrahedron(std::uint32_t t) {
   DTLAB_ASSERT(t < tetrahedron_capacity() && is_alive(t));
   for (std::uint32_t i = 0; i < 4; ++i)
     if (vertices_[4 * t + i] != kInfinite) touch(vertices_[4 * t + i]);
   vertices_[4 * t] = kNone;
+}
+
+void Mesh3::remove_tetrahedron(std::uint32_t t) {
+  kill_tetrahedron(t);
   free_tetrahedra_.push_back(t);
 }
 

@@ -129,6 +129,17 @@ class Mesh3 {
   std::uint32_t add_tetrahedron(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, int r);
   // Marks t dead and frees its slot (its neighbours' links to it are the caller's to redo).
   void remove_tetrahedron(std::uint32_t t);
+  // The two halves of add_tetrahedron and remove_tetrahedron, for an inserter that takes and gives
+  // back slots on one thread and fills and kills them on several, each in its own part of the mesh
+  // (algorithms/mesh3d/field_point_batches.hpp). A slot taken (the free list's last, else a new
+  // one: the arrays may grow) is the caller's until filled; a slot given back must be dead, or
+  // killed before the free list is next used.
+  std::uint32_t take_tetrahedron_slot();
+  void give_back_tetrahedron_slot(std::uint32_t t) { free_tetrahedra_.push_back(t); }
+  // add_tetrahedron into slot t (taken, or dead and about to be reused by the same caller).
+  void fill_tetrahedron(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, int r);
+  // remove_tetrahedron without giving the slot back.
+  void kill_tetrahedron(std::uint32_t t);
   // Makes facets g and h twins.
   void link(std::uint32_t g, std::uint32_t h) noexcept {
     neighbours_[g] = h;

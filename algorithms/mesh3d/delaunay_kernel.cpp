@@ -138,21 +138,45 @@ double DelaunayKernel3::nearest_cavity_vertex(const Vec3& p, const Metric3& mp) 
 
 std::uint32_t DelaunayKernel3::commit(const Vec3& p, const Metric3& mp, std::uint8_t flags) {
   DTLAB_ASSERT(!cavity_.empty());
+  const std::uint32_t v = mesh_.add_vertex(p, mp, flags);
+  plan_slots(cavity_, boundary_.size(), slots_);
+  commit_into(cavity_, boundary_, v, slots_);
+  give_back_unused(slots_, boundary_.size());
+  return v;
+}
+
+// The cavity's slots last first, then taken ones: the order in which removing the cavity and
+// adding the ball one tetrahedron at a time (the free list is a stack) would reuse them.
+void DelaunayKernel3::plan_slots(std::span<const std::uint32_t> cavity, std::size_t ball_size,
+                                 std::vector<std::uint32_t>& slots) {
+  slots.assign(cavity.rbegin(), cavity.rend());
+  while (slots.size() < ball_size) slots.push_back(mesh_.take_tetrahedron_slot());
+}
+
+// The slots past the ball, in the order in which removing the cavity would have freed them.
+void DelaunayKernel3::give_back_unused(std::span<const std::uint32_t> slots, std::size_t ball_size) {
+  for (std::size_t k = slots.size(); k > ball_size; --k) mesh_.give_back_tetrahedron_slot(slots[k - 1]);
+}
+
+void DelaunayKernel3::commit_into(std::span<const std::uint32_t> cavity, std::span<const std::uint32_t> boundary,
+                                  std::uint32_t v, std::span<const std::uint32_t> slots) {
+  DTLAB_ASSERT(!cavity.empty() && slots.size() == std::max(cavity.size(), boundary.size()));
   sides_.clear();
-  for (const std::uint32_t h : boundary_) {
+  for (const std::uint32_t h : boundary) {
     const auto f = mesh_.facet_vertices(h);
     sides_.push_back({f[0], f[1], f[2], mesh_.twin(h), mesh_.is_constrained(h), mesh_.facet_ref(h)});
   }
-  const int ref = mesh_.ref(cavity_.front());
-  for (const std::uint32_t t : cavity_) mesh_.remove_tetrahedron(t);
-  const std::uint32_t v = mesh_.add_vertex(p, mp, flags);
+  const int ref = mesh_.ref(cavity.front());
+  for (const std::uint32_t t : cavity) mesh_.kill_tetrahedron(t);
   ball_.clear();
   laterals_.clear();
   // Boundary facet (a, b, c), turned counter-clockwise seen from inside: the new tetrahedron is
   // (v, a, c, b), whose facet 0 (v1 v3 v2 = a b c) is the boundary facet; its facets 2 (v b a),
   // 1 (v c b) and 3 (v a c) stand on the boundary edges ab, bc and ca.
-  for (const Side& s : sides_) {
-    const std::uint32_t t = mesh_.add_tetrahedron(v, s.a, s.c, s.b, ref);
+  for (std::size_t k = 0; k < sides_.size(); ++k) {
+    const Side& s = sides_[k];
+    const std::uint32_t t = slots[k];
+    mesh_.fill_tetrahedron(t, v, s.a, s.c, s.b, ref);
     mesh_.link(Mesh3::facet(t, 0), s.outside);
     mesh_.set_facet(Mesh3::facet(t, 0), s.constrained, s.ref);
     for (std::uint32_t i = 1; i < 4; ++i) mesh_.set_facet(Mesh3::facet(t, i), false);
@@ -182,7 +206,6 @@ std::uint32_t DelaunayKernel3::commit(const Vec3& p, const Metric3& mp, std::uin
     ++links;
   }
   DTLAB_ASSERT(2 * links == laterals_.size());
-  return v;
 }
 
 }  // namespace dtlab

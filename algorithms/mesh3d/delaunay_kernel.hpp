@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "kernel/metric.hpp"
@@ -37,7 +38,24 @@ class DelaunayKernel3 {
 
   // Replaces the cavity found last by the ball of a new vertex p (metric mp, flags); returns its id.
   std::uint32_t commit(const Vec3& p, const Metric3& mp, std::uint8_t flags = 0);
+  // The write half of commit, for a cavity found earlier by this kernel or another on the same
+  // mesh, whose tetrahedra, boundary facets' outside twins and boundary vertices have not changed
+  // since (field_point_batches.hpp), given as cavity() and boundary() gave them: the ball of v
+  // (added already, no tetrahedron yet) goes into the first boundary.size() of `slots` (the
+  // cavity's tetrahedra and taken slots: plan_slots); the cavity's tetrahedra are killed, those
+  // left in `slots` past the ball are the caller's to give back (give_back_unused). Writes only those
+  // tetrahedra, the twins of the boundary facets and the vertices of the ball: cavities that share
+  // none of them may be committed at once on several threads, each with its own kernel.
+  void commit_into(std::span<const std::uint32_t> cavity, std::span<const std::uint32_t> boundary, std::uint32_t v,
+                   std::span<const std::uint32_t> slots);
+  // commit's choice of slots for commit_into (on one thread: it may take slots), and its giving
+  // back of those past the ball once the ball is in.
+  void plan_slots(std::span<const std::uint32_t> cavity, std::size_t ball_size, std::vector<std::uint32_t>& slots);
+  void give_back_unused(std::span<const std::uint32_t> slots, std::size_t ball_size);
 
+  // The cavity found last: its tetrahedra, and the facet handles of those whose twin is outside.
+  const std::vector<std::uint32_t>& cavity() const noexcept { return cavity_; }
+  const std::vector<std::uint32_t>& boundary() const noexcept { return boundary_; }
   std::size_t cavity_size() const noexcept { return cavity_.size(); }
   // Tetrahedra of the last committed ball.
   const std::vector<std::uint32_t>& ball() const noexcept { return ball_; }
@@ -55,6 +73,7 @@ class DelaunayKernel3 {
   std::vector<std::uint32_t> cavity_;    // tetrahedra
   std::vector<std::uint32_t> boundary_;  // facet handles of cavity tetrahedra whose twin is outside
   std::vector<std::uint32_t> ball_;
+  std::vector<std::uint32_t> slots_;     // commit's: the cavity's tetrahedra, then taken slots
   std::vector<std::uint32_t> mark_;      // per tetrahedron: == stamp_ while in the cavity
   std::vector<std::uint32_t> excluded_;  // per tetrahedron: == exclusion_stamp_ once removed by a correction
   std::vector<std::uint32_t> vertex_mark_;

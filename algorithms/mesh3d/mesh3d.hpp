@@ -58,6 +58,16 @@ struct Mesh3dOptions {
   std::uint64_t filter_dense_cells = std::uint64_t{1} << 22;
   // Internal edges longer than this in the metric get field points.
   double split_length = 1.4142135623730951;
+  // Threads for the field point insertion (field_point_batches.hpp): the mesh is the same for
+  // every count. They share the work of a batch, one point a stream: with one stream (the
+  // default) there is nothing to share.
+  unsigned threads = 1;
+  // A pass's field points go in as up to this many interleaved streams, one point of each per batch (field_point_batches.hpp). Part of the algorithm, not of
+  // the parallelism: another count gives another (equally valid) mesh; 1 inserts the points one
+  // after the other in Hilbert order.
+  std::uint32_t insertion_streams = 1;
+  // A stream gets at least this many points (fewer streams for a shorter pass).
+  std::uint32_t insertion_stream_length = 1024;
   // Bounds, each with a named error when reached.
   std::uint32_t max_passes = 200;
   std::uint64_t max_vertices = 50'000'000;
@@ -70,13 +80,16 @@ struct Mesh3dOptions {
 
 struct Mesh3dStats {
   double seconds_empty_mesh = 0, seconds_control_space = 0, seconds_field_points = 0, seconds_optimization = 0;
-  double seconds_insertion = 0;  // within field points: the Delaunay kernel (cavity, correction, ball)
+  // Within field points: their insertion (field_point_batches.hpp: metric, filter, location,
+  // cavity, correction, ball), wall clock; the rest is finding the candidates.
+  double seconds_insertion = 0;
   double seconds = 0;            // the whole call
   std::uint32_t passes = 0;
   std::uint64_t field_points = 0;        // inserted
   std::uint64_t filtered = 0;            // candidates rejected as too close (grid)
   std::uint64_t not_inserted = 0;        // candidates outside the domain, on a vertex, or with an empty cavity
   std::uint64_t cavity_corrections = 0;  // tetrahedra taken out of cavities (star-shapedness)
+  std::uint64_t insertion_retries = 0;   // cavities found again because an earlier one of their batch took a part
   std::uint64_t input_points = 0, input_triangles = 0;
   std::uint64_t steiner_points = 0;  // added by the boundary recovery
   std::uint64_t empty_mesh_tetrahedra = 0;
