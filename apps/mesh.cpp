@@ -39,7 +39,7 @@ struct MeshArgs {
   std::string optimize = "standard";  // surfaces only: the effort (optimize3d_effort)
   bool triangulate_nonplanar = false;  // surfaces only
   unsigned threads = 1;  // surfaces only: Mesh3dOptions::threads
-  std::uint32_t insertion_streams = 1;  // surfaces only: Mesh3dOptions::insertion_streams
+  std::uint32_t insertion_regions = 1;  // surfaces only: Mesh3dOptions::insertion_regions
 };
 
 // A uniform size: the box of the input, enlarged by 1 on each side.
@@ -72,7 +72,7 @@ int run_mesh(const MeshArgs& args) {
                       .stats = args.stats, .verify = args.verify, .resample_boundary = args.resample_boundary,
                       .remove_cavities = args.remove_cavities, .optimize = args.optimize,
                       .triangulate_nonplanar = args.triangulate_nonplanar, .no_remesh = args.no_remesh,
-                      .threads = args.threads, .insertion_streams = args.insertion_streams});
+                      .threads = args.threads, .insertion_regions = args.insertion_regions});
   }
   if (args.threads != 1) throw InputError("--threads: the 2D mesher is sequential (give --threads 1 or leave it out)");
   const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
@@ -185,14 +185,13 @@ void add_mesh(CLI::App& app) {
                 "Surfaces: after the optimization, do not mesh again the regions around the tetrahedra still below "
                 "its goal's smallest dihedral angle");
   cmd->add_option("--threads", args->threads,
-                  "Surfaces: threads for the field point insertion, sharing the streams of each batch "
-                  "(--insertion-streams); the same mesh for every count (default 1)")
+                  "Surfaces: threads for the field point insertion, sharing its regions (--insertion-regions); "
+                  "the same mesh for every count (default 1)")
       ->check(CLI::Range(1u, 1024u));
-  cmd->add_option("--insertion-streams", args->insertion_streams,
-                  "Surfaces: the field points of a pass go in as up to this many interleaved streams, one point of "
-                  "each per batch (default 1; part of the algorithm: another count gives another mesh; --threads share "
-                  "the streams of a batch)")
-      ->check(CLI::Range(1u, 1u << 20));
+  cmd->add_option("--insertion-regions", args->insertion_regions,
+                  "Surfaces: insert each pass's field points by up to this many regions, which --threads share "
+                  "(default 1: one after the other; another count gives another mesh, the same for every --threads)")
+      ->check(CLI::Range(1u, 4096u));
   cmd->add_flag("--triangulate-nonplanar", args->triangulate_nonplanar,
                 "Closed surfaces: triangulate a polygonal face whose corners are not in one plane in its projection "
                 "(each triangle a boundary face with the face's marker) instead of refusing it; counted on stderr");

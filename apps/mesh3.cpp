@@ -109,7 +109,7 @@ int run_mesh3(const Mesh3CliArgs& args) {
   options.optimize = !args.no_optimize;
   options.local_remesh = !args.no_remesh;
   options.threads = args.threads;
-  options.insertion_streams = args.insertion_streams;
+  options.insertion_regions = args.insertion_regions;
   options.optimization = optimize3d_effort(args.optimize);
   options.remove_cavities = args.remove_cavities;
   const MetricInterpolation mode =
@@ -172,8 +172,8 @@ int run_mesh3(const Mesh3CliArgs& args) {
          << ",\"vertices\":" << result.output.vertices.size() << ",\"tetrahedra\":" << result.output.tetrahedra.size()
          << ",\"triangles\":" << result.output.triangles.size() << ",\"field_points\":" << s.field_points
          << ",\"filtered\":" << s.filtered << ",\"not_inserted\":" << s.not_inserted << ",\"passes\":" << s.passes
-         << ",\"cavity_corrections\":" << s.cavity_corrections << ",\"insertion_retries\":" << s.insertion_retries
-         << ",\"threads\":" << options.threads << ",\"optimized\":" << (options.optimize ? "true" : "false")
+         << ",\"cavity_corrections\":" << s.cavity_corrections << ",\"insertion_deferred\":" << s.insertion_deferred
+         << ",\"threads\":" << options.threads << ",\"insertion_regions\":" << options.insertion_regions << ",\"optimized\":" << (options.optimize ? "true" : "false")
          << ",\"face_swaps\":" << s.face_swaps << ",\"shell_transformations\":" << s.shell_transformations
          << ",\"relocations\":" << s.relocations << ",\"collapses\":" << s.collapses << ",\"splits\":" << s.splits
          << ",\"optimization_rounds\":" << s.optimization_rounds

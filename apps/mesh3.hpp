@@ -19,7 +19,7 @@ struct Mesh3CliArgs {
   bool triangulate_nonplanar = false;  // FacetTriangulationOptions::triangulate_nonplanar
   bool no_remesh = false;              // Mesh3dOptions::local_remesh off
   unsigned threads = 1;                // Mesh3dOptions::threads
-  std::uint32_t insertion_streams = 1;  // Mesh3dOptions::insertion_streams
+  std::uint32_t insertion_regions = 1;  // Mesh3dOptions::insertion_regions
 };
 
 // Returns the exit status: 0 success, 3 --verify failed. Throws InputError for bad input.

@@ -2,7 +2,6 @@
 #include "kernel/worker_team.hpp"
 
 #include <algorithm>
-#include <chrono>
 
 #include "kernel/error.hpp"
 
@@ -104,18 +103,11 @@ void WorkerTeam::work(unsigned worker) {
 }
 
 void WorkerTeam::run(std::size_t n, const Body& body) {
-  if (threads_ == 1 || inline_steps_ > 0) {
-    if (inline_steps_ > 0) --inline_steps_;
-    for (std::size_t i = 0; i < n; ++i) body(i, 0);  // the first exception is the lowest index's
-    return;
-  }
   body_ = &body;
   n_ = n;
-  const auto start = std::chrono::steady_clock::now();
-  start_step();
+  if (threads_ > 1) start_step();
   run_share(0);
-  const auto own = std::chrono::steady_clock::now();
-  if (wait_while([&] { return remaining_.load(std::memory_order_acquire) != 0; })) {
+  if (threads_ > 1 && wait_while([&] { return remaining_.load(std::memory_order_acquire) != 0; })) {
     caller_sleeps_.store(true, std::memory_order_seq_cst);
     for (unsigned left = remaining_.load(std::memory_order_seq_cst); left != 0;
          left = remaining_.load(std::memory_order_seq_cst))
@@ -123,17 +115,6 @@ void WorkerTeam::run(std::size_t n, const Body& body) {
     caller_sleeps_.store(false, std::memory_order_relaxed);
   }
   body_ = nullptr;
-  // Slower than one thread would have been (the wait for the others longer than the calling
-  // thread's share times the other threads: a loaded machine, where a thread woken for a step
-  // waits for a core): the next steps run on the calling thread, twice as many each time it
-  // happens again, back to the team after a step that pays.
-  const auto end = std::chrono::steady_clock::now();
-  if (end - own > (own - start) * (threads_ - 1)) {
-    inline_steps_ = backoff_;
-    backoff_ = std::min(2 * backoff_, kMaxBackoff);
-  } else {
-    backoff_ = kMinBackoff;
-  }
   // Shares are contiguous and each stops at its first error: the lowest share with one holds the
   // lowest failing index.
   for (unsigned k = 0; k < threads_; ++k) {

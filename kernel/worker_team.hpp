@@ -1,16 +1,11 @@
 // A fixed team of threads that runs one data-parallel step at a time: body(i, worker) for every
 // i in [0, n), the indices cut into one contiguous share per thread (the calling thread takes
-// share 0). The threads live as long as the team and wait for the next step by spinning, then
-// sleeping (C++20 atomic wait), so that a hand-over costs little while steps come fast: a mesher
-// that runs hundreds of thousands of short steps (algorithms/mesh3d/field_point_batches) needs
-// that; std::barrier's futex round trip (about 15 us a step on the project's machine) made two
-// threads four times slower than one there. What a step computes must not depend on
-// which worker runs an index; the worker number only picks per-thread scratch space, and a step
-// may run wholly on the calling thread (worker 0): where a step on several threads took longer
-// than one thread would have (a loaded machine: a woken thread waits milliseconds for a core),
-// the next steps do, more of them each time it happens again. An exception
-// thrown by the body ends its share; the step still ends on every thread and run() rethrows the
-// one of the lowest index, which is the one a single thread would have thrown first.
+// share 0). The threads live as long as the team (no thread start a step) and wait for the next
+// step by spinning briefly, then sleeping (C++20 atomic wait). What a step computes must not
+// depend on which worker runs an index: the worker number only picks per-thread scratch space
+// (algorithms/mesh3d/field_point_regions: regions, each on whichever thread). An exception thrown
+// by the body ends its share; the step still ends on every thread and run() rethrows the one of
+// the lowest index, which is the one a single thread would have thrown first.
 #pragma once
 
 #include <atomic>
@@ -51,10 +46,6 @@ class WorkerTeam {
   std::atomic<unsigned> sleepers_{0};         // workers in an atomic wait on generation_
   std::atomic<unsigned> remaining_{0};        // workers still in the current step
   std::atomic<bool> caller_sleeps_{false};    // run() in an atomic wait on remaining_
-  // Steps left to run on the calling thread after a step that the team made slower, and how many
-  // the next such step gives (run()).
-  static constexpr std::uint32_t kMinBackoff = 16, kMaxBackoff = 4096;
-  std::uint32_t inline_steps_ = 0, backoff_ = kMinBackoff;
   std::vector<std::exception_ptr> errors_;
   std::vector<std::jthread> workers_;
 };

@@ -195,6 +195,25 @@ void Mesh3::remove_vertex(std::uint32_t v) {
   free_vertices_.push_back(v);
 }
 
+std::uint32_t Mesh3::take_vertex_slot() {
+  std::uint32_t v;
+  if (!free_vertices_.empty()) {
+    v = free_vertices_.back();
+    free_vertices_.pop_back();
+  } else {
+    DTLAB_ASSERT(points_.size() < Tetrahedralization3::kMaxPoints);
+    v = static_cast<std::uint32_t>(points_.size());
+    points_.push_back({});
+    metrics_.push_back({});
+    vertex_flags_.push_back(kDead);
+    vertex_tetrahedron_.push_back(kNone);
+    changed_at_.push_back(epoch_);
+  }
+  replace_metric(v, Metric3{});
+  vertex_flags_[v] = kDead;
+  return v;
+}
+
 std::uint32_t Mesh3::take_tetrahedron_slot() {
   if (!free_tetrahedra_.empty()) {
     const std::uint32_t t = free_tetrahedra_.back();
@@ -433,10 +452,11 @@ void Mesh3::shell_at(std::uint32_t t0, std::uint32_t a, std::uint32_t b, std::ve
   } while (t != t0);
 }
 
-Mesh3::Location Mesh3::locate(const Vec3& p, std::uint32_t start, bool stop_at_constraints) const {
+Mesh3::Location Mesh3::locate(const Vec3& p, std::uint32_t start, bool stop_at_constraints, const Region* region) const {
   DTLAB_ASSERT(start < tetrahedron_capacity() && is_alive(start));
   std::uint32_t t = start;
   if (is_ghost(t)) t = tetrahedron_of(neighbours_[4 * t]);
+  if (region != nullptr && !in_region(t, *region)) return {Where::Inside, t, kNone, true};
   std::uint64_t rng = 0x9E3779B97F4A7C15ull ^ (static_cast<std::uint64_t>(start) * 0xBF58476D1CE4E5B9ull);
   const std::uint64_t bound = 64ull * live_tetrahedron_count() + 64;
   std::uint32_t came_from = kNone;
@@ -459,6 +479,7 @@ Mesh3::Location Mesh3::locate(const Vec3& p, std::uint32_t start, bool stop_at_c
       const Sign s = orient3d(points_[f[0]], points_[f[1]], points_[f[2]], p);
       if (s == Sign::Negative) {
         if (stop_at_constraints && is_constrained(h)) return {Where::Inside, t, kNone, true};
+        if (region != nullptr && !in_region(tetrahedron_of(neighbours_[h]), *region)) return {Where::Inside, t, kNone, true};
         came_from = neighbours_[h];
         t = tetrahedron_of(came_from);
         moved = true;

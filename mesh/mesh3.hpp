@@ -131,10 +131,24 @@ class Mesh3 {
   void remove_tetrahedron(std::uint32_t t);
   // The two halves of add_tetrahedron and remove_tetrahedron, for an inserter that takes and gives
   // back slots on one thread and fills and kills them on several, each in its own part of the mesh
-  // (algorithms/mesh3d/field_point_batches.hpp). A slot taken (the free list's last, else a new
+  // (algorithms/mesh3d/field_point_regions.hpp). A slot taken (the free list's last, else a new
   // one: the arrays may grow) is the caller's until filled; a slot given back must be dead, or
   // killed before the free list is next used.
   std::uint32_t take_tetrahedron_slot();
+  // The same for vertex slots: a dead slot (the free list's last, else a new one) whose metric is
+  // reset to the identity; fill_vertex makes it a vertex without the bookkeeping that another
+  // thread could race on, settle_vertex (on one thread) does that bookkeeping afterwards; a slot
+  // not filled is given back dead.
+  std::uint32_t take_vertex_slot();
+  void fill_vertex(std::uint32_t v, const Vec3& p, const Metric3& m, std::uint8_t flags = 0) noexcept {
+    points_[v] = p;
+    metrics_[v] = m;
+    vertex_flags_[v] = flags;
+    vertex_tetrahedron_[v] = kNone;
+    changed_at_[v] = epoch_;
+  }
+  void settle_vertex(std::uint32_t v) noexcept { anisotropic_slots_ += static_cast<std::uint64_t>(!metrics_[v].is_scalar()); }
+  void give_back_vertex_slot(std::uint32_t v) { free_vertices_.push_back(v); }
   void give_back_tetrahedron_slot(std::uint32_t t) { free_tetrahedra_.push_back(t); }
   // add_tetrahedron into slot t (taken, or dead and about to be reused by the same caller).
   void fill_tetrahedron(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, int r);
@@ -192,7 +206,21 @@ class Mesh3 {
     bool blocked = false;
     std::uint32_t edge_a = kNone, edge_b = kNone;  // Edge: the edge's two vertices
   };
-  Location locate(const Vec3& p, std::uint32_t start, bool stop_at_constraints = false) const;
+  // A part of the mesh that a walk must not leave: the tetrahedra whose four vertices all have
+  // region `id` in `vertex_region` (an entry per vertex slot). With one, locate ends `blocked` in
+  // the last tetrahedron of the part it reached when the next is outside it (or at once when
+  // `start` is).
+  struct Region {
+    const std::uint16_t* vertex_region = nullptr;
+    std::uint16_t id = 0;
+  };
+  bool in_region(std::uint32_t t, const Region& r) const noexcept {
+    const std::uint32_t* v = &vertices_[4 * t];
+    return v[0] != kInfinite && v[0] != kNone && r.vertex_region[v[0]] == r.id && r.vertex_region[v[1]] == r.id &&
+           r.vertex_region[v[2]] == r.id && r.vertex_region[v[3]] == r.id;
+  }
+  Location locate(const Vec3& p, std::uint32_t start, bool stop_at_constraints = false,
+                  const Region* region = nullptr) const;
 
   // --- Change epochs --------------------------------------------------------------------------
   // For memos of failed attempts (an operator that failed on a piece of mesh fails again while

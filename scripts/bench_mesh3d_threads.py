@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
-"""The 3D mesher's field point insertion on several threads (algorithms/mesh3d/field_point_batches.hpp):
+"""The 3D mesher's field point insertion on several threads (algorithms/mesh3d/field_point_regions.hpp):
 `dtlab mesh` on the cube minus a ball (the surface of scripts/bench_mesh3d.py, `gmsh -2 -clmax H`)
-with `--insertion-streams S --threads T` for each S and T given, and optionally a baseline dtlab
+with `--insertion-regions R --threads T` for each R and T given, and optionally a baseline dtlab
 binary (an older commit) with its defaults. Runs are interleaved (round 1 of every configuration,
 then round 2, ...); times are dtlab's own `--stats` seconds (the meshing call, no file output):
 field points (candidates and insertion) and the whole call, median [min - max], never a minimum.
 Each configuration's tetrahedron count is checked to be the same in every round, and the meshes of
-one stream count are checked to be the same bytes for every thread count.
+one region count are checked to be the same bytes for every thread count.
 
-  scripts/bench_mesh3d_threads.py --dtlab build/dtlab --size 0.02 --runs 5 --streams 1,16,64 \
+  scripts/bench_mesh3d_threads.py --dtlab build/dtlab --size 0.02 --runs 5 --regions 1,16,64 \
       --threads 1,2 [--baseline /path/to/old/dtlab] [--optimize]
 """
 import argparse
@@ -40,7 +40,7 @@ def main():
     ap.add_argument("--baseline", help="another dtlab binary, run with its defaults")
     ap.add_argument("--size", type=float, default=0.02)
     ap.add_argument("--runs", type=int, default=5)
-    ap.add_argument("--streams", default="1,16,64")
+    ap.add_argument("--regions", default="1,16,64")
     ap.add_argument("--threads", default="1,2")
     ap.add_argument("--optimize", action="store_true", help="keep the optimization (default: --no-optimize)")
     ap.add_argument("--work", default=None)
@@ -55,10 +55,10 @@ def main():
     configs = []
     if args.baseline:
         configs.append(("baseline (its defaults)", args.baseline, [], None))
-    for s in [int(x) for x in args.streams.split(",")]:
+    for s in [int(x) for x in args.regions.split(",")]:
         for t in [int(x) for x in args.threads.split(",")]:
-            configs.append((f"{s} stream(s), {t} thread(s)", args.dtlab,
-                            ["--insertion-streams", str(s), "--threads", str(t)], s))
+            configs.append((f"{s} region(s), {t} thread(s)", args.dtlab,
+                            ["--insertion-regions", str(s), "--threads", str(t)], s))
     times = {c[0]: [] for c in configs}
     tets, digest = {}, {}
     for r in range(args.runs):
@@ -72,7 +72,7 @@ def main():
                 h = hashlib.sha256(f.read()).hexdigest()
             key = streams if streams is not None else name
             if digest.setdefault(key, h) != h:
-                sys.exit(f"bench_mesh3d_threads: {name}: not the same mesh as the other runs of {key} stream(s)")
+                sys.exit(f"bench_mesh3d_threads: {name}: not the same mesh as the other runs of {key} region(s)")
         print(f"round {r + 1} of {args.runs} done", file=sys.stderr)
     print(f"h = {args.size}, {'with' if args.optimize else 'without'} the optimization, {args.runs} interleaved "
           f"rounds, dtlab's --stats seconds, median [min - max]\n")

@@ -65,6 +65,10 @@ void DelaunayKernel3::grow(std::uint32_t seed, const Vec3& p) {
         boundary_.push_back(h);
         continue;
       }
+      if (region_ != nullptr && !mesh_.in_region(u, *region_)) {
+        left_region_ = true;
+        return;
+      }
       mark_[u] = stamp_;
       cavity_.push_back(u);
     }
@@ -117,8 +121,10 @@ bool DelaunayKernel3::find_cavity(const Vec3& p, const Metric3& mp, std::uint32_
   }
   // Each correction removes one tetrahedron for good, so the loop ends within the cavity's size.
   const std::size_t bound = 4 * static_cast<std::size_t>(mesh_.live_tetrahedron_count()) + 8;
+  left_region_ = false;
   for (std::size_t round = 0; round < bound; ++round) {
     grow(seed, p);
+    if (left_region_) return false;
     const std::uint32_t offender = find_offender(seed, p);
     if (offender == Mesh3::kNone) return true;
     if (offender == seed) return false;  // p on a facet of the seed that cannot open

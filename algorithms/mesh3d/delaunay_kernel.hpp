@@ -33,6 +33,11 @@ class DelaunayKernel3 {
   // a vertex, or on a constrained facet, or the corrected cavity loses the seed.
   bool find_cavity(const Vec3& p, const Metric3& mp, std::uint32_t seed);
 
+  // Keeps the cavities in a part of the mesh (null: anywhere): find_cavity fails, with
+  // left_region() set, when a tetrahedron outside it would join. The seed must be in it.
+  void set_region(const Mesh3::Region* region) noexcept { region_ = region; }
+  bool left_region() const noexcept { return left_region_; }
+
   // The smallest metric length (in mp) from p to a vertex of the cavity found last.
   double nearest_cavity_vertex(const Vec3& p, const Metric3& mp) const;
 
@@ -68,6 +73,8 @@ class DelaunayKernel3 {
   std::uint32_t find_offender(std::uint32_t seed, const Vec3& p);
 
   Mesh3& mesh_;
+  const Mesh3::Region* region_ = nullptr;
+  bool left_region_ = false;
   Metric3 sqrt_m_;
   bool isotropic_ = true;
   std::vector<std::uint32_t> cavity_;    // tetrahedra

@@ -5,7 +5,7 @@
 // (algorithms/mesh2d/edge_cuts.hpp, shared with 2D). Each candidate is filtered "by simply using a
 // grid" (§7.5): it is dropped when a vertex lies closer than filter_distance to it in the metric
 // at the candidate; otherwise it is inserted by the Delaunay kernel (§7.9) and joins the grid,
-// in batches that may run on several threads with the same result (field_point_batches.hpp).
+// possibly by regions on several threads with the same result (field_point_regions.hpp).
 // Passes repeat over the new tetrahedra until no candidate is accepted (saturation), bounded.
 // Within a pass the edges are taken in Hilbert order of their midpoints (algorithms/spatial_sort).
 #include <algorithm>
@@ -16,7 +16,7 @@
 #include <unordered_map>
 
 #include "algorithms/mesh2d/edge_cuts.hpp"
-#include "algorithms/mesh3d/field_point_batches.hpp"
+#include "algorithms/mesh3d/field_point_regions.hpp"
 #include "algorithms/mesh3d/vertex_grid.hpp"
 #include "algorithms/mesh3d/mesh3d.hpp"
 #include "kernel/radix_sort.hpp"

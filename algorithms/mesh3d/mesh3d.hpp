@@ -58,16 +58,15 @@ struct Mesh3dOptions {
   std::uint64_t filter_dense_cells = std::uint64_t{1} << 22;
   // Internal edges longer than this in the metric get field points.
   double split_length = 1.4142135623730951;
-  // Threads for the field point insertion (field_point_batches.hpp): the mesh is the same for
-  // every count. They share the work of a batch, one point a stream: with one stream (the
-  // default) there is nothing to share.
+  // Threads for the field point insertion (field_point_regions.hpp): they share its regions; the
+  // mesh is the same for every count (capped at the cores).
   unsigned threads = 1;
-  // A pass's field points go in as up to this many interleaved streams, one point of each per batch (field_point_batches.hpp). Part of the algorithm, not of
-  // the parallelism: another count gives another (equally valid) mesh; 1 inserts the points one
-  // after the other in Hilbert order.
-  std::uint32_t insertion_streams = 1;
-  // A stream gets at least this many points (fewer streams for a shorter pass).
-  std::uint32_t insertion_stream_length = 1024;
+  // A pass's field points go in by up to this many regions (field_point_regions.hpp), each
+  // holding at least insertion_region_points of them. Part of the algorithm, not of the
+  // parallelism: another count gives another (equally valid) mesh; 1 (the default) inserts the
+  // points one after the other in Hilbert order.
+  std::uint32_t insertion_regions = 1;
+  std::uint32_t insertion_region_points = 4096;
   // Bounds, each with a named error when reached.
   std::uint32_t max_passes = 200;
   std::uint64_t max_vertices = 50'000'000;
@@ -89,7 +88,7 @@ struct Mesh3dStats {
   std::uint64_t filtered = 0;            // candidates rejected as too close (grid)
   std::uint64_t not_inserted = 0;        // candidates outside the domain, on a vertex, or with an empty cavity
   std::uint64_t cavity_corrections = 0;  // tetrahedra taken out of cavities (star-shapedness)
-  std::uint64_t insertion_retries = 0;   // cavities found again because an earlier one of their batch took a part
+  std::uint64_t insertion_deferred = 0;  // points the regions left to the sequential insertion
   std::uint64_t input_points = 0, input_triangles = 0;
   std::uint64_t steiner_points = 0;  // added by the boundary recovery
   std::uint64_t empty_mesh_tetrahedra = 0;

@@ -5,9 +5,8 @@
 // one of its edges) are a dense array when there are at most `dense_cells` of them
 // (Mesh3dOptions::filter_dense_cells); others, and all of them past that bound, in a hash table.
 // The candidate filter looks at 27 cells a point: an array read each instead of a hash lookup.
-// Each dense cell also keeps the stamp of the last batch that added a vertex to it, so that a
-// point filtered against the grid as it was when its batch began need only be looked at again
-// where that batch added vertices (field_point_batches.hpp).
+// field_point_regions.hpp shares the dense cells out between regions (dense_cell, cell_of,
+// all_cells) and reserves next_ before the regions insert at once, each in its own cells.
 #pragma once
 
 #include <algorithm>
@@ -34,22 +33,19 @@ class VertexGrid {
         nx * ny * nz <= limit) {
       n_ = {nx, ny, nz};
       dense_.assign(static_cast<std::size_t>(nx * ny * nz), kEnd);
-      stamps_.assign(dense_.size(), 0);
     }
   }
 
-  // Adds vertex v at p; its cell takes `stamp` (0: none).
-  void insert(std::uint32_t v, const Vec3& p, std::uint32_t stamp = 0) {
+  // Adds vertex v at p.
+  void insert(std::uint32_t v, const Vec3& p) {
     if (next_.size() <= v) next_.resize(std::max<std::size_t>(v + 1, next_.size() * 3 / 2), kEnd);
     const std::int64_t x = coordinate(p.x - origin_.x), y = coordinate(p.y - origin_.y),
                        z = coordinate(p.z - origin_.z);
     std::uint32_t* head = nullptr;
-    if (const std::int64_t i = dense_index(x, y, z); i >= 0) {
+    if (const std::int64_t i = dense_index(x, y, z); i >= 0)
       head = &dense_[static_cast<std::size_t>(i)];
-      stamps_[static_cast<std::size_t>(i)] = stamp;
-    } else {
+    else
       head = &head_.try_emplace(key(x, y, z), kEnd).first->second;
-    }
     next_[v] = *head;
     *head = v;
   }
@@ -67,17 +63,33 @@ class VertexGrid {
     return found;
   }
 
-  void clear_stamps() { std::fill(stamps_.begin(), stamps_.end(), 0); }
-
-  // Whether any_closer(p, _, h_max, distance) looks at a cell that took `stamp`, or at a cell of
-  // the hash table (whose stamps are not kept).
-  bool stamped_near(const Vec3& p, double h_max, double distance, std::uint32_t stamp) const {
-    bool found = false;
+  // For inserters that share the cells out between threads (field_point_regions.hpp).
+  bool dense() const noexcept { return !dense_.empty(); }
+  std::size_t dense_cell_count() const noexcept { return dense_.size(); }
+  // The integer coordinates of dense cell i.
+  std::array<std::int64_t, 3> dense_cell(std::size_t i) const noexcept {
+    const auto k = static_cast<std::int64_t>(i);
+    return {k % n_[0], (k / n_[0]) % n_[1], k / (n_[0] * n_[1])};
+  }
+  std::array<std::int64_t, 3> dense_dims() const noexcept { return n_; }
+  // The dense index of p's cell, -1 outside the dense array.
+  std::int64_t cell_of(const Vec3& p) const {
+    return dense_index(coordinate(p.x - origin_.x), coordinate(p.y - origin_.y), coordinate(p.z - origin_.z));
+  }
+  // Whether every cell that any_closer(p, _, h_max, distance) looks at is a dense one that
+  // satisfies pred(index).
+  template <class F>
+  bool all_cells(const Vec3& p, double h_max, double distance, F&& pred) const {
+    bool all = true;
     for_cells(p, distance * h_max, [&](std::int64_t x, std::int64_t y, std::int64_t z) {
       const std::int64_t i = dense_index(x, y, z);
-      return found = i < 0 || stamps_[static_cast<std::size_t>(i)] == stamp;
+      return !(all = i >= 0 && pred(static_cast<std::size_t>(i)));
     });
-    return found;
+    return all;
+  }
+  // Room for vertex ids below n, so that insert() does not reallocate.
+  void reserve_vertices(std::size_t n) {
+    if (next_.size() < n) next_.resize(n, kEnd);
   }
 
  private:
@@ -114,7 +126,6 @@ class VertexGrid {
   double cell_;
   std::array<std::int64_t, 3> n_{};
   std::vector<std::uint32_t> dense_;
-  std::vector<std::uint32_t> stamps_;  // per dense cell: the stamp of its last insertion
   std::unordered_map<std::uint64_t, std::uint32_t> head_;
   std::vector<std::uint32_t> next_;
 };

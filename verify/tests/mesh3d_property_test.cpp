@@ -6,7 +6,7 @@
 //    graded isotropic field given on a background tetrahedron (a size per corner, interpolated);
 // each run: check_mesh3d passes exactly (validity, conformity, the boundary as recovered, region
 // volumes), Mesh3::check passes, and a second run on 2 to 4 threads gives the same output bit for
-// bit (with 1 to 8 insertion streams). The vertex cap
+// bit (with 1 to 8 insertion regions). The vertex cap
 // (Mesh3dOptions::max_vertices) raises its named InputError. DTLAB_LONG=1 runs more cases with
 // finer sizes.
 #include <gtest/gtest.h>
@@ -242,9 +242,9 @@ void mesh_and_check(const Surface& s, const SizeField& f, bool remove_cavities) 
   options.remove_cavities = remove_cavities;
   options.optimize = int_in(0, 3) != 0;
   options.max_vertices = 200'000;
-  // Field points in 1 to 8 interleaved streams of at least 16 points (field_point_batches.hpp).
-  options.insertion_streams = static_cast<std::uint32_t>(int_in(1, 8));
-  options.insertion_stream_length = 16;
+  // Field points by 1 to 8 regions of at least 32 points (field_point_regions.hpp).
+  options.insertion_regions = static_cast<std::uint32_t>(int_in(1, 8));
+  options.insertion_region_points = 32;
   RC_TAG(f.name.substr(0, f.name.find(' ')));
   const Mesh3dResult a = mesh3d(s.input(), options);
   const MeshCheckReport3 report = check_mesh3d(s.input(), a.output, a.output_metrics, {.remove_cavities = remove_cavities});
@@ -252,7 +252,7 @@ void mesh_and_check(const Surface& s, const SizeField& f, bool remove_cavities) 
            << " tetrahedra\n";
   if (!report.ok) RC_FAIL(to_text(report));
   a.mesh.check();
-  // Again on several threads (field_point_batches.hpp): the same bytes.
+  // Again on several threads (field_point_regions.hpp): the same bytes.
   options.threads = static_cast<unsigned>(int_in(2, 4));
   const Mesh3dResult b = mesh3d(s.input(), options);
   RC_ASSERT(medit_bytes(a.output) == medit_bytes(b.output));

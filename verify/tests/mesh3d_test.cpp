@@ -245,35 +245,36 @@ TEST(Mesh3d, Deterministic) {
   EXPECT_EQ(medit_bytes(mesh3d(s.input(), options).output), first);
 }
 
-// The field points go in by batches of interleaved streams (field_point_batches.hpp): the same
-// bytes on 1, 2, 3 and 4 threads, with enough points for many streams, some of whose cavities meet
-// in a batch (retried); one stream (the default) never meets another, and gives another mesh, as
-// valid.
+// The field points by regions (field_point_regions.hpp): the same bytes on 1, 2, 3 and 4 threads
+// (capped at the cores), with enough points for many regions, some points left to the later
+// rounds and to the sequential insertion; every run valid. One region (the default) leaves none,
+// and gives another mesh, as valid.
 TEST(Mesh3d, SameMeshForEveryThreadCount) {
   const Surface s = cube_minus_ball(6, 2, true);
   const ControlSpace3 control = ControlSpace3::uniform(Metric3::isotropic(0.05), {-1, -1, -1}, {2, 2, 2});
   Mesh3dOptions options;
   options.control = &control;
   options.optimize = false;
-  options.insertion_streams = 64;
-  options.insertion_stream_length = 64;
+  options.insertion_regions = 16;
+  options.insertion_region_points = 256;
   const Mesh3dResult one = mesh3d(s.input(), options);
   expect_valid(s.input(), one);
+  one.mesh.check();
   const std::string bytes = medit_bytes(one.output);
-  EXPECT_GT(one.stats.field_points, 64u * 64u);
-  EXPECT_GT(one.stats.insertion_retries, 0u);
+  EXPECT_GT(one.stats.field_points, 16u * 256u / 4u);
+  EXPECT_GT(one.stats.insertion_deferred, 0u);
   for (const unsigned threads : {2u, 3u, 4u}) {
     options.threads = threads;
     const Mesh3dResult r = mesh3d(s.input(), options);
     EXPECT_EQ(medit_bytes(r.output), bytes) << threads << " threads";
-    EXPECT_EQ(r.stats.insertion_retries, one.stats.insertion_retries) << threads << " threads";
+    EXPECT_EQ(r.stats.insertion_deferred, one.stats.insertion_deferred) << threads << " threads";
     EXPECT_EQ(r.stats.filtered, one.stats.filtered) << threads << " threads";
   }
   options.threads = 2;
-  options.insertion_streams = 1;
+  options.insertion_regions = 1;
   const Mesh3dResult single = mesh3d(s.input(), options);
   expect_valid(s.input(), single);
-  EXPECT_EQ(single.stats.insertion_retries, 0u);
+  EXPECT_EQ(single.stats.insertion_deferred, 0u);
   EXPECT_NE(medit_bytes(single.output), bytes);
   options.threads = 0;
   EXPECT_THROW((void)mesh3d(s.input(), options), InputError);

@@ -52,11 +52,10 @@ elseif(CASE STREQUAL "deterministic")
   if(NOT ha STREQUAL hb)
     fail("two runs wrote different files")
   endif()
-  # The field points in 8 interleaved streams (field_point_batches.hpp), on 1 and 3 threads: the
-  # same mesh.
-  run(mesh ${DATA}/quad_cube.off --size 0.1 --insertion-streams 8 -o c.mesh)
+  # The field points by 8 regions (field_point_regions.hpp), on 1 and 3 threads: the same mesh.
+  run(mesh ${DATA}/quad_cube.off --size 0.1 --insertion-regions 8 -o c.mesh)
   expect_success()
-  run(mesh ${DATA}/quad_cube.off --size 0.1 --insertion-streams 8 --threads 3 -o d.mesh)
+  run(mesh ${DATA}/quad_cube.off --size 0.1 --insertion-regions 8 --threads 3 -o d.mesh)
   expect_success()
   file(SHA256 ${WORK}/c.mesh hc)
   file(SHA256 ${WORK}/d.mesh hd)
