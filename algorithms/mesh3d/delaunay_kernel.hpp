@@ -43,14 +43,14 @@ class DelaunayKernel3 {
 
   // Replaces the cavity found last by the ball of a new vertex p (metric mp, flags); returns its id.
   std::uint32_t commit(const Vec3& p, const Metric3& mp, std::uint8_t flags = 0);
-  // The write half of commit, for a cavity found earlier by this kernel or another on the same
-  // mesh, whose tetrahedra, boundary facets' outside twins and boundary vertices have not changed
-  // since (field_point_batches.hpp), given as cavity() and boundary() gave them: the ball of v
-  // (added already, no tetrahedron yet) goes into the first boundary.size() of `slots` (the
-  // cavity's tetrahedra and taken slots: plan_slots); the cavity's tetrahedra are killed, those
-  // left in `slots` past the ball are the caller's to give back (give_back_unused). Writes only those
-  // tetrahedra, the twins of the boundary facets and the vertices of the ball: cavities that share
-  // none of them may be committed at once on several threads, each with its own kernel.
+  // The write half of commit, for the cavity found last, given as cavity() and boundary() gave
+  // them: the ball of v (added already, no tetrahedron yet) goes into the first boundary.size()
+  // of `slots` (the cavity's tetrahedra and taken slots: plan_slots); the cavity's tetrahedra
+  // are killed, those left in `slots` past the ball are the caller's to give back
+  // (give_back_unused). Writes only those tetrahedra, the twins of the boundary facets and the
+  // vertices of the ball, and takes nothing from the mesh's free lists: kernels on several
+  // threads may commit at once in parts of the mesh that share none of these
+  // (field_point_regions.hpp).
   void commit_into(std::span<const std::uint32_t> cavity, std::span<const std::uint32_t> boundary, std::uint32_t v,
                    std::span<const std::uint32_t> slots);
   // commit's choice of slots for commit_into (on one thread: it may take slots), and its giving

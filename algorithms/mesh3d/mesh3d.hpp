@@ -79,7 +79,7 @@ struct Mesh3dOptions {
 
 struct Mesh3dStats {
   double seconds_empty_mesh = 0, seconds_control_space = 0, seconds_field_points = 0, seconds_optimization = 0;
-  // Within field points: their insertion (field_point_batches.hpp: metric, filter, location,
+  // Within field points: their insertion (field_point_regions.hpp: metric, filter, location,
   // cavity, correction, ball), wall clock; the rest is finding the candidates.
   double seconds_insertion = 0;
   double seconds = 0;            // the whole call
