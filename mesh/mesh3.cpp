@@ -214,6 +214,21 @@ std::uint32_t Mesh3::take_vertex_slot() {
   return v;
 }
 
+void Mesh3::take_tetrahedron_slots(std::size_t k, std::vector<std::uint32_t>& out) {
+  while (k > 0 && !free_tetrahedra_.empty()) {
+    out.push_back(free_tetrahedra_.back());
+    free_tetrahedra_.pop_back();
+    --k;
+  }
+  const std::size_t first = tetrahedron_capacity();
+  DTLAB_ASSERT(first + k <= Tetrahedralization3::kMaxTetrahedra);
+  vertices_.resize(vertices_.size() + 4 * k, kNone);
+  neighbours_.resize(neighbours_.size() + 4 * k);
+  facet_refs_.resize(facet_refs_.size() + 4 * k);
+  refs_.resize(refs_.size() + k, 0);
+  for (std::size_t t = first; t < first + k; ++t) out.push_back(static_cast<std::uint32_t>(t));
+}
+
 std::uint32_t Mesh3::take_tetrahedron_slot() {
   if (!free_tetrahedra_.empty()) {
     const std::uint32_t t = free_tetrahedra_.back();

@@ -135,6 +135,8 @@ class Mesh3 {
   // one: the arrays may grow) is the caller's until filled; a slot given back must be dead, or
   // killed before the free list is next used.
   std::uint32_t take_tetrahedron_slot();
+  // k slots at once (the free list's last first, then new ones, the arrays grown once), appended to out.
+  void take_tetrahedron_slots(std::size_t k, std::vector<std::uint32_t>& out);
   // The same for vertex slots: a dead slot (the free list's last, else a new one) whose metric is
   // reset to the identity; fill_vertex makes it a vertex without the bookkeeping that another
   // thread could race on, settle_vertex (on one thread) does that bookkeeping afterwards; a slot

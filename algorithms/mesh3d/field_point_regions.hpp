@@ -17,7 +17,7 @@
 // words, and what each does depends only on the mesh as the round found it. A second round cuts
 // halfway between the first's cuts for the points left; what is still left goes in one after the
 // other. The first pass works on the empty mesh, whose tetrahedra span the domain and cross every
-// cut: every eighth of its points goes in first, one after the other, to break them up. In the
+// cut: every sixteenth of its points goes in first, one after the other, to break them up. In the
 // spirit of Marot, Pellerin, Remacle (2019) (algorithms/delaunay3d/parallel.cpp: points owned by
 // slabs of space, the rest deferred to rounds with other cuts), with regions that do not depend on
 // the thread count.
