@@ -28,6 +28,15 @@ function(fail what)
   message(FATAL_ERROR "${what}\n  command: ${last_command}\n  exit: ${rc}\n  stdout: ${out}\n  stderr: ${err}")
 endfunction()
 
+# Fails unless files a and b of WORK hold the same bytes; the optional third argument says why
+# they should.
+function(expect_same_file a b)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK}/${a}" "${WORK}/${b}" RESULT_VARIABLE differ)
+  if(differ)
+    fail("${a} and ${b} differ ${ARGN}")
+  endif()
+endfunction()
+
 macro(expect_success)
   if(NOT rc EQUAL 0)
     fail("expected exit code 0")

@@ -10,13 +10,6 @@ macro(convert in out)
   expect_success()
 endmacro()
 
-function(expect_same_file a b)
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK}/${a}" "${WORK}/${b}" RESULT_VARIABLE differ)
-  if(differ)
-    fail("${a} and ${b} differ")
-  endif()
-endfunction()
-
 function(expect_in file regex)
   file(READ "${WORK}/${file}" text)
   if(NOT text MATCHES "${regex}")
