@@ -75,6 +75,8 @@ int run_mesh(const MeshArgs& args) {
                       .threads = args.threads, .insertion_regions = args.insertion_regions});
   }
   if (args.threads != 1) throw InputError("--threads: the 2D mesher is sequential (give --threads 1 or leave it out)");
+  if (args.insertion_regions != 1)
+    throw InputError("--insertion-regions: the 2D mesher inserts one point after the other (give 1 or leave it out)");
   const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
   if (given > 1) throw InputError("give one of --size, --size-map, --metric");
   if (!args.background.empty() && args.size_map.empty() && args.metric.empty())

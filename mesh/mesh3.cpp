@@ -220,28 +220,25 @@ void Mesh3::take_tetrahedron_slots(std::size_t k, std::vector<std::uint32_t>& ou
     free_tetrahedra_.pop_back();
     --k;
   }
+  const std::uint32_t first = grow_tetrahedra(k);
+  for (std::size_t t = first; t < first + k; ++t) out.push_back(static_cast<std::uint32_t>(t));
+}
+
+std::uint32_t Mesh3::take_tetrahedron_slot() {
+  if (free_tetrahedra_.empty()) return grow_tetrahedra(1);
+  const std::uint32_t t = free_tetrahedra_.back();
+  free_tetrahedra_.pop_back();
+  return t;
+}
+
+std::uint32_t Mesh3::grow_tetrahedra(std::size_t k) {
   const std::size_t first = tetrahedron_capacity();
   DTLAB_ASSERT(first + k <= Tetrahedralization3::kMaxTetrahedra);
   vertices_.resize(vertices_.size() + 4 * k, kNone);
   neighbours_.resize(neighbours_.size() + 4 * k);
   facet_refs_.resize(facet_refs_.size() + 4 * k);
   refs_.resize(refs_.size() + k, 0);
-  for (std::size_t t = first; t < first + k; ++t) out.push_back(static_cast<std::uint32_t>(t));
-}
-
-std::uint32_t Mesh3::take_tetrahedron_slot() {
-  if (!free_tetrahedra_.empty()) {
-    const std::uint32_t t = free_tetrahedra_.back();
-    free_tetrahedra_.pop_back();
-    return t;
-  }
-  const std::uint32_t t = tetrahedron_capacity();
-  DTLAB_ASSERT(t < Tetrahedralization3::kMaxTetrahedra);
-  vertices_.resize(vertices_.size() + 4, kNone);
-  neighbours_.resize(neighbours_.size() + 4);
-  facet_refs_.resize(facet_refs_.size() + 4);
-  refs_.push_back(0);
-  return t;
+  return static_cast<std::uint32_t>(first);
 }
 
 void Mesh3::fill_tetrahedron(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d, int r) {

@@ -269,6 +269,8 @@ class Mesh3 {
   std::vector<std::uint32_t> free_vertices_;
   std::vector<std::uint64_t> changed_at_;  // per vertex: the epoch of its last change
   std::uint64_t epoch_ = 0;
+  // k new dead slots at the end of the tetrahedron arrays; the first one's id.
+  std::uint32_t grow_tetrahedra(std::size_t k);
   void replace_metric(std::uint32_t v, const Metric3& m) noexcept {
     anisotropic_slots_ += static_cast<std::uint64_t>(!m.is_scalar()) - static_cast<std::uint64_t>(!metrics_[v].is_scalar());
     metrics_[v] = m;

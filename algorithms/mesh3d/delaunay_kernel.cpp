@@ -154,14 +154,28 @@ std::uint32_t DelaunayKernel3::commit(const Vec3& p, const Metric3& mp, std::uin
 // The cavity's slots last first, then taken ones: the order in which removing the cavity and
 // adding the ball one tetrahedron at a time (the free list is a stack) would reuse them.
 void DelaunayKernel3::plan_slots(std::span<const std::uint32_t> cavity, std::size_t ball_size,
-                                 std::vector<std::uint32_t>& slots) {
+                                 std::vector<std::uint32_t>& slots, std::vector<std::uint32_t>* pool) {
   slots.assign(cavity.rbegin(), cavity.rend());
-  while (slots.size() < ball_size) slots.push_back(mesh_.take_tetrahedron_slot());
+  while (slots.size() < ball_size) {
+    if (pool == nullptr) {
+      slots.push_back(mesh_.take_tetrahedron_slot());
+    } else {
+      DTLAB_ASSERT(!pool->empty());
+      slots.push_back(pool->back());
+      pool->pop_back();
+    }
+  }
 }
 
 // The slots past the ball, in the order in which removing the cavity would have freed them.
-void DelaunayKernel3::give_back_unused(std::span<const std::uint32_t> slots, std::size_t ball_size) {
-  for (std::size_t k = slots.size(); k > ball_size; --k) mesh_.give_back_tetrahedron_slot(slots[k - 1]);
+void DelaunayKernel3::give_back_unused(std::span<const std::uint32_t> slots, std::size_t ball_size,
+                                       std::vector<std::uint32_t>* pool) {
+  for (std::size_t k = slots.size(); k > ball_size; --k) {
+    if (pool == nullptr)
+      mesh_.give_back_tetrahedron_slot(slots[k - 1]);
+    else
+      pool->push_back(slots[k - 1]);
+  }
 }
 
 void DelaunayKernel3::commit_into(std::span<const std::uint32_t> cavity, std::span<const std::uint32_t> boundary,

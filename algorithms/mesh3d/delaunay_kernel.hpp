@@ -53,10 +53,13 @@ class DelaunayKernel3 {
   // (field_point_regions.hpp).
   void commit_into(std::span<const std::uint32_t> cavity, std::span<const std::uint32_t> boundary, std::uint32_t v,
                    std::span<const std::uint32_t> slots);
-  // commit's choice of slots for commit_into (on one thread: it may take slots), and its giving
-  // back of those past the ball once the ball is in.
-  void plan_slots(std::span<const std::uint32_t> cavity, std::size_t ball_size, std::vector<std::uint32_t>& slots);
-  void give_back_unused(std::span<const std::uint32_t> slots, std::size_t ball_size);
+  // commit's choice of slots for commit_into, and its giving back of those past the ball once the
+  // ball is in: from and to the mesh's free list (one thread), or a caller's stack of slots taken
+  // beforehand (`pool`: a region of field_point_regions.hpp, on any thread).
+  void plan_slots(std::span<const std::uint32_t> cavity, std::size_t ball_size, std::vector<std::uint32_t>& slots,
+                  std::vector<std::uint32_t>* pool = nullptr);
+  void give_back_unused(std::span<const std::uint32_t> slots, std::size_t ball_size,
+                        std::vector<std::uint32_t>* pool = nullptr);
 
   // The cavity found last: its tetrahedra, and the facet handles of those whose twin is outside.
   const std::vector<std::uint32_t>& cavity() const noexcept { return cavity_; }

@@ -9,11 +9,9 @@
 // Passes repeat over the new tetrahedra until no candidate is accepted (saturation), bounded.
 // Within a pass the edges are taken in Hilbert order of their midpoints (algorithms/spatial_sort).
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
-#include <unordered_map>
 
 #include "algorithms/mesh2d/edge_cuts.hpp"
 #include "algorithms/mesh3d/field_point_regions.hpp"

@@ -23,10 +23,7 @@ constexpr std::size_t kSeedStride = 16;
 // cavity by that much); a region that runs out leaves its points to the next round.
 constexpr double kVertexShare = 0.4, kTetrahedraPerPoint = 2.5;
 
-double largest_size(const Metric3& m) {
-  const bool iso = m.m[1] == 0.0 && m.m[3] == 0.0 && m.m[4] == 0.0 && m.m[0] == m.m[2] && m.m[2] == m.m[5];
-  return iso ? 1.0 / std::sqrt(m.m[0]) : sizes(m)[0];
-}
+double largest_size(const Metric3& m) { return m.is_scalar() ? 1.0 / std::sqrt(m.m[0]) : sizes(m)[0]; }
 
 }  // namespace
 
@@ -104,14 +101,9 @@ FieldPointInserter::Outcome FieldPointInserter::insert_point_in(std::uint16_t r,
   const std::uint32_t v = w.vertices[w.used_vertices++];
   mesh_.fill_vertex(v, f.p, mp);
   vertex_region_[v] = r;
-  // The slots as DelaunayKernel3::plan_slots orders them, the region's stack for the free list.
-  w.slots.assign(kernel.cavity().rbegin(), kernel.cavity().rend());
-  while (w.slots.size() < nb) {
-    w.slots.push_back(w.tetrahedra.back());
-    w.tetrahedra.pop_back();
-  }
+  kernel.plan_slots(kernel.cavity(), nb, w.slots, &w.tetrahedra);
   kernel.commit_into(kernel.cavity(), kernel.boundary(), v, w.slots);
-  for (std::size_t k = w.slots.size(); k > nb; --k) w.tetrahedra.push_back(w.slots[k - 1]);
+  kernel.give_back_unused(w.slots, nb, &w.tetrahedra);
   grid_.insert(v, f.p);
   for (const std::uint32_t t : kernel.ball()) ball_marks[t] = mark;
   w.last = kernel.ball().front();
@@ -254,10 +246,7 @@ std::uint64_t FieldPointInserter::region_round(std::span<const FieldPoint> point
   }
   regions_.clear();
   std::sort(todo.begin(), todo.end());
-  if (mesh_.live_vertex_count() > options_.max_vertices) {
-    throw InputError("mesh3d: the mesh reached the vertex bound of " + std::to_string(options_.max_vertices) +
-                     " (max_vertices; is the size far smaller than the domain?)");
-  }
+  DTLAB_ASSERT(mesh_.live_vertex_count() <= options_.max_vertices);  // insert() checked live + points
   return inserted;
 }
 

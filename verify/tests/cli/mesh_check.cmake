@@ -53,6 +53,8 @@ elseif(CASE STREQUAL "deterministic")
   # --threads is for surfaces (the 3D field point insertion): refused by name in 2D.
   run(mesh ${DATA}/square_disc.poly --size 0.015 --threads 2 -o c.mesh)
   expect_failure("--threads")
+  run(mesh ${DATA}/square_disc.poly --size 0.015 --insertion-regions 2 -o c.mesh)
+  expect_failure("--insertion-regions")
 elseif(CASE STREQUAL "output_metric")
   run(mesh ${DATA}/unit_square.poly --metric ${DATA}/linear_layer.sol --background ${DATA}/unit_square_bg.mesh
       --resample-boundary -o out.mesh --output-metric out.sol --stats)
