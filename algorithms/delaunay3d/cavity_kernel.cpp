@@ -8,6 +8,7 @@
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "kernel/predicates/insphere_batch.hpp"
 
 namespace dtlab {
 
@@ -210,7 +211,7 @@ std::uint32_t CavityKernel::walk(std::uint32_t pid, std::uint32_t* stopped) cons
 
 // Neighbours are cache misses more often than not: ask for them when t enters the queue, so
 // that they have arrived when t is processed.
-void CavityKernel::enter_cavity(std::uint32_t t) noexcept {
+inline void CavityKernel::enter_cavity(std::uint32_t t) noexcept {
   r_[t].vertex[3] |= kInCavity;
   cavity_.push_back(t);
   for (std::uint32_t i = 0; i < 4; ++i) __builtin_prefetch(r_ + (r_[t].neighbour[i] >> 2));
@@ -224,29 +225,49 @@ void CavityKernel::enter_cavity(std::uint32_t t) noexcept {
 template <bool Restricted>
 bool CavityKernel::grow_cavity(std::uint32_t base, std::uint32_t pid) {
   const Vec3& p = p_[pid];
+  Record* const r = r_;
   cavity_.clear();
   boundary_.clear();
   enter_cavity(base);
   for (std::size_t k = 0; k < cavity_.size(); ++k) {
     const std::uint32_t t = cavity_[k];
+    const std::array<std::uint32_t, 4> outer = r[t].neighbour;
+    const std::array<std::uint32_t, 4> v = {r[t].vertex[0], r[t].vertex[1], r[t].vertex[2],
+                                            r[t].vertex[3] & ~kMarks};
+    // The unmarked finite neighbours' in-sphere tests go together (insphere_batch.hpp): no two
+    // facets of t share a neighbour, so marking one of them cannot change another's answer.
+    std::array<const std::uint32_t*, 4> tests;
+    std::array<std::uint32_t, 4> mark;
+    unsigned lanes = 0, batched = 0;  // bit i of batched: neighbour i is tested in the batch
     for (std::uint32_t i = 0; i < 4; ++i) {
-      const std::uint32_t outer = r_[t].neighbour[i];
-      const std::uint32_t u = outer >> 2;
-      const std::uint32_t mark = r_[u].vertex[3] & kMarks;
-      if (mark == 0) {
-        if (conflicts(u, p)) {
-          if (!owns_apex<Restricted>(outer)) return false;
+      const std::uint32_t* w = r[outer[i] >> 2].vertex.data();
+      mark[i] = w[3] & kMarks;
+      if (mark[i] == 0 && w[0] != kInf) tests[lanes++] = w, batched |= 1u << i;
+    }
+    const InsphereBatch batch =
+        lanes == 0 ? InsphereBatch{} : insphere_static_batch(p_, tests.data(), lanes, p, bounds_.insphere);
+    unsigned lane_bit = 1;
+#pragma GCC unroll 4
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (mark[i] == kInCavity) continue;
+      const std::uint32_t u = outer[i] >> 2;
+      if (mark[i] == 0) {
+        bool conflict;
+        if (batched & (1u << i)) {
+          conflict = (batch.undecided & lane_bit) ? conflicts(u, p) : (batch.positive & lane_bit) != 0;
+          lane_bit <<= 1;
+        } else {
+          conflict = conflicts(u, p);
+        }
+        if (conflict) {
+          if (!owns_apex<Restricted>(outer[i])) return false;
           enter_cavity(u);
           continue;
         }
-        if (owns_apex<Restricted>(outer)) r_[u].vertex[3] |= kOutside;  // cleared when B_P links to it
-      } else if (mark == kInCavity) {
-        continue;
+        if (owns_apex<Restricted>(outer[i])) r[u].vertex[3] |= kOutside;  // cleared when B_P links to it
       }
-      const std::uint32_t* w = r_[t].vertex.data();
-      const std::uint32_t v[4] = {w[0], w[1], w[2], w[3] & ~kMarks};
       const auto& f = kFacet[i];
-      boundary_.push_back({{v[f[0]], v[f[1]], v[f[2]]}, outer});
+      boundary_.push_back({{v[f[0]], v[f[1]], v[f[2]]}, outer[i]});
     }
   }
   return true;

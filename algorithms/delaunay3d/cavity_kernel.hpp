@@ -143,7 +143,7 @@ class CavityKernel {
   void link(std::uint32_t g, std::uint32_t h) noexcept { twin(g) = h, twin(h) = g; }
   bool same_vertices(std::uint32_t g, std::uint32_t h) const noexcept;
   bool conflicts(std::uint32_t t, const Vec3& p) const noexcept;
-  void enter_cavity(std::uint32_t t) noexcept;
+  [[gnu::always_inline]] void enter_cavity(std::uint32_t t) noexcept;
   template <bool Restricted>
   bool grow_cavity(std::uint32_t base, std::uint32_t p);
   void clear_marks() noexcept;

@@ -87,6 +87,25 @@ inline FilteredSign incircle_semistatic(const Vec2& a, const Vec2& b, const Vec2
   return certify(det, semistatic_bound::kIncircle * m2 * m2);
 }
 
+// The in-sphere determinant on the differences to e (rows (p - e, |p - e|^2)), for doubles or
+// for vectors of doubles (insphere_batch.hpp): the same operations in the same order, so each
+// lane of a vector is bitwise the scalar value, and one error bound serves both.
+template <class T>
+inline T insphere_det_translated(T ax, T ay, T az, T bx, T by, T bz, T cx, T cy, T cz, T dx, T dy, T dz) noexcept {
+  // 2x2 minors of the (y, z) columns, shared by the four 3x3 minors.
+  const T ab = ay * bz - az * by, ac = ay * cz - az * cy, ad = ay * dz - az * dy;
+  const T bc = by * cz - bz * cy, bd = by * dz - bz * dy, cd = cy * dz - cz * dy;
+  const T mbcd = (bx * cd - cx * bd) + dx * bc;
+  const T macd = (ax * cd - cx * ad) + dx * ac;
+  const T mabd = (ax * bd - bx * ad) + dx * ab;
+  const T mabc = (ax * bc - bx * ac) + cx * ab;
+  const T la = (ax * ax + ay * ay) + az * az;
+  const T lb = (bx * bx + by * by) + bz * bz;
+  const T lc = (cx * cx + cy * cy) + cz * cz;
+  const T ld = (dx * dx + dy * dy) + dz * dz;
+  return ((la * mbcd - lb * macd) + lc * mabd) - ld * mabc;
+}
+
 // insphere(a, b, c, d, e): positive iff e lies inside the sphere through a, b, c, d when
 // orient3d(a, b, c, d) > 0 (the sign flips with their orientation).
 inline FilteredSign insphere_semistatic_bounded(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
@@ -95,18 +114,7 @@ inline FilteredSign insphere_semistatic_bounded(const Vec3& a, const Vec3& b, co
   const double bx = b.x - e.x, by = b.y - e.y, bz = b.z - e.z;
   const double cx = c.x - e.x, cy = c.y - e.y, cz = c.z - e.z;
   const double dx = d.x - e.x, dy = d.y - e.y, dz = d.z - e.z;
-  // 2x2 minors of the (y, z) columns, shared by the four 3x3 minors.
-  const double ab = ay * bz - az * by, ac = ay * cz - az * cy, ad = ay * dz - az * dy;
-  const double bc = by * cz - bz * cy, bd = by * dz - bz * dy, cd = cy * dz - cz * dy;
-  const double mbcd = (bx * cd - cx * bd) + dx * bc;
-  const double macd = (ax * cd - cx * ad) + dx * ac;
-  const double mabd = (ax * bd - bx * ad) + dx * ab;
-  const double mabc = (ax * bc - bx * ac) + cx * ab;
-  const double la = (ax * ax + ay * ay) + az * az;
-  const double lb = (bx * bx + by * by) + bz * bz;
-  const double lc = (cx * cx + cy * cy) + cz * cz;
-  const double ld = (dx * dx + dy * dy) + dz * dz;
-  const double det = ((la * mbcd - lb * macd) + lc * mabd) - ld * mabc;
+  const double det = insphere_det_translated(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz);
   if (std::fabs(det) > static_bound) return sign_of(det);
   // The maximum as a tree (depth 4, not a chain of 11).
   const double mx = std::max(std::max(std::fabs(ax), std::fabs(bx)), std::max(std::fabs(cx), std::fabs(dx)));
