@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "kernel/error.hpp"
-#include "mesh/triangulation2.hpp"  // advise_huge_pages
+#include "mesh/memory_hints.hpp"
 
 namespace dtlab {
 

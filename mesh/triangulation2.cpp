@@ -2,10 +2,6 @@
 
 #include <string>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 #include "kernel/error.hpp"
 
 namespace dtlab {
@@ -18,19 +14,6 @@ namespace {
 }
 
 }  // namespace
-
-void advise_huge_pages(const void* data, std::size_t bytes) noexcept {
-#if defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
-  const auto begin = reinterpret_cast<std::uintptr_t>(data);
-  const std::uintptr_t first = (begin + kHuge - 1) & ~(kHuge - 1);
-  const std::uintptr_t last = (begin + bytes) & ~(kHuge - 1);
-  // Only whole huge pages inside the array; a refusal only costs speed.
-  if (last > first) static_cast<void>(madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE));
-#else
-  static_cast<void>(data), static_cast<void>(bytes);
-#endif
-}
 
 void Triangulation2::reserve_triangles(std::size_t triangles) {
   const bool fresh = vertices_.capacity() < 3 * triangles;

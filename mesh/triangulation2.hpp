@@ -49,14 +49,9 @@
 #include <vector>
 
 #include "kernel/vec.hpp"
+#include "mesh/memory_hints.hpp"  // advise_huge_pages, for the 2D algorithms
 
 namespace dtlab {
-
-// Memory hint for a large array about to be filled: back it with transparent huge pages where
-// the system offers them (Linux, madvise), which cuts the TLB misses of the random accesses of
-// point location and cavity search. Call it before first writing the memory; no effect on
-// small arrays or elsewhere.
-void advise_huge_pages(const void* data, std::size_t bytes) noexcept;
 
 class Triangulation2 {
  public:

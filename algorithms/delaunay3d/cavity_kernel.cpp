@@ -9,6 +9,7 @@
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/insphere_batch.hpp"
+#include "mesh/memory_hints.hpp"
 
 namespace dtlab {
 
@@ -110,6 +111,14 @@ void CavityKernel::grow_chunk(std::size_t k) {
   const std::size_t chunk = std::clamp(begin / 8, kMinChunk, kChunk);
   const std::size_t size = std::min<std::size_t>(begin + std::max(k, chunk), T3::kMaxTetrahedra);
   if (size > records_.capacity()) records_.reserve(std::max(size, records_.capacity() + records_.capacity() / 4));
+  // The fresh slots are written right away: fault their pages in ahead, kPopulateAhead at a
+  // time, in one call each instead of one page fault a page (memory_hints.hpp).
+  if (records_.data() != populated_base_) populated_base_ = records_.data(), populated_ = begin;
+  if (size > populated_) {
+    const std::size_t until = std::min(records_.capacity(), std::max(size, populated_ + kPopulateAhead));
+    populate_for_writing(records_.data() + populated_, records_.data() + until);
+    populated_ = until;
+  }
   records_.resize(size);
   refresh_views();
   give_slots(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(size));
@@ -285,25 +294,46 @@ void CavityKernel::clear_marks() noexcept {
 // B_P: one tetrahedron (f0, f1, f2, P) per boundary facet, in the cavity's slots first. A
 // facet through kInfinite lists it first (ghosts keep it at index 0 and every facet of a
 // ghost that holds it starts with it), so the new tetrahedron is a ghost in normal form.
+//
+// Facets 0, 1, 2 of the new tetrahedra link among themselves: facet k holds P and the boundary
+// edge x(k+1) -> x(k+2); the neighbour across it is the new tetrahedron whose boundary facet
+// holds the same edge reversed. The boundary vertices get small local numbers, and a table
+// indexed by (from, to) finds the reversed edge; the numbering and the table are filled in the
+// same pass that writes the tetrahedra.
 void CavityKernel::fill_ball(std::uint32_t p) {
   const std::size_t faces = boundary_.size();
   const std::size_t cavity_size = cavity_.size();
-  new_tetrahedra_.clear();
+  // The boundary is a triangulated sphere: F = 2V - 4 (Euler), so a small F fits the table.
+  const bool small = faces / 2 + 2 <= kTableSide;
+  new_tetrahedra_.resize(faces);
   for (std::size_t j = 0; j < faces; ++j) {
     const std::uint32_t t = j < cavity_size ? cavity_[j] : new_slot();
     const BoundaryFacet& b = boundary_[j];
-    set_tetrahedron(t, b.v[0], b.v[1], b.v[2], p);
-    link(4 * t + 3, b.outer);
+    Record& rt = r_[t];
+    rt.vertex = {b.v[0], b.v[1], b.v[2], p};
+    rt.neighbour[3] = b.outer;
     // Only marked tetrahedra are written: one not owned is left untouched.
-    std::uint32_t& outer_mark = r_[b.outer >> 2].vertex[3];
-    if (outer_mark & kMarks) outer_mark &= ~kMarks;
-    new_tetrahedra_.push_back(t);
+    Record& outer = r_[b.outer >> 2];
+    outer.neighbour[b.outer & 3u] = 4 * t + 3;
+    if (outer.vertex[3] & kMarks) outer.vertex[3] &= ~kMarks;
+    new_tetrahedra_[j] = t;
+    if (small) {
+      const std::array<std::uint8_t, 3> l = {local_number(b.v[0]), local_number(b.v[1]), local_number(b.v[2])};
+      locals_[j] = l;
+      edge_table_[l[1] * kTableSide + l[2]] = 4 * t + 0;
+      edge_table_[l[2] * kTableSide + l[0]] = 4 * t + 1;
+      edge_table_[l[0] * kTableSide + l[1]] = 4 * t + 2;
+    }
   }
   for (std::size_t j = faces; j < cavity_size; ++j) {
     r_[cavity_[j]].vertex[0] = kNone;
     free_.push_back(cavity_[j]);
   }
-  link_ball_by_edges();
+  if (small) {
+    link_ball_by_edges();
+  } else {
+    link_large_ball();
+  }
   last_ = new_tetrahedra_[0];
   for (const std::uint32_t t : new_tetrahedra_)
     if (r_[t].vertex[0] != kInf) {
@@ -319,30 +349,10 @@ std::uint8_t* CavityKernel::far_local_slot(std::uint32_t v) {
   return &local_of_[v];
 }
 
-// Links facets 0, 1, 2 of the new tetrahedra (x0, x1, x2, P) among themselves. Facet k holds
-// P and the boundary edge x(k+1) -> x(k+2); the neighbour across it is the new tetrahedron
-// whose boundary facet holds the same edge reversed. Boundary vertices get small local
-// numbers, and a table indexed by (from, to) finds the reversed edge.
+// The second half of fill_ball's linking: each new tetrahedron's facets 0, 1, 2 from the table.
 void CavityKernel::link_ball_by_edges() {
-  // The boundary is a triangulated sphere: F = 2V - 4 (Euler).
   const std::size_t faces = new_tetrahedra_.size();
-  if (faces / 2 + 2 > kTableSide) {
-    link_large_ball();
-    return;
-  }
-  // (boundary_[j] holds the vertices of new tetrahedron j's boundary facet, in its order)
-  for (std::size_t j = 0; j < faces; ++j) {
-    const std::array<std::uint32_t, 3>& v = boundary_[j].v;
-    locals_[j] = {local_number(v[0]), local_number(v[1]), local_number(v[2])};
-  }
   DTLAB_ASSERT(faces == 2 * numbered_count_ - 4);  // so every local number is below kTableSide
-  for (std::size_t j = 0; j < faces; ++j) {
-    const std::uint32_t t = new_tetrahedra_[j];
-    const auto& l = locals_[j];
-    edge_table_[l[1] * kTableSide + l[2]] = 4 * t + 0;
-    edge_table_[l[2] * kTableSide + l[0]] = 4 * t + 1;
-    edge_table_[l[0] * kTableSide + l[1]] = 4 * t + 2;
-  }
   for (std::size_t j = 0; j < faces; ++j) {
     const std::uint32_t t = new_tetrahedra_[j];
     const auto& l = locals_[j];

@@ -120,6 +120,8 @@ class CavityKernel {
   // Records added to the array at a time: an eighth of it, from 64 to 4096, so that a small
   // mesh does not touch (and page in) a large chunk it never uses.
   static constexpr std::size_t kMinChunk = 64, kChunk = 4096;
+  // Records whose pages are faulted in at a time ahead of use: 2 MB (grow_chunk).
+  static constexpr std::size_t kPopulateAhead = (std::size_t{2} << 20) / sizeof(Record);
   static constexpr std::size_t kTableSide = 64;  // balls with at most 64 boundary vertices
 
   std::uint32_t& twin(std::uint32_t h) noexcept { return r_[h >> 2].neighbour[h & 3u]; }
@@ -170,6 +172,8 @@ class CavityKernel {
   bool restricted_ = false;
   SlabOwnership owned_;
   std::size_t chunk_next_ = 0, chunk_end_ = 0;  // fresh slots of this kernel
+  const Record* populated_base_ = nullptr;       // records_.data() when populated_ was set
+  std::size_t populated_ = 0;                    // records below this index are faulted in
   std::vector<std::uint32_t> cavity_, new_tetrahedra_, free_;
   std::vector<BoundaryFacet> boundary_;
   // Local number + 1 of each boundary vertex of the ball being linked, by vertex id (0: none),

@@ -22,6 +22,7 @@
 #include "algorithms/delaunay3d/registry.hpp"
 #include "kernel/error.hpp"
 #include "kernel/stats.hpp"
+#include "mesh/memory_hints.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
 namespace dtlab {
@@ -192,6 +193,7 @@ class ParallelInsertion {
                        std::to_string(T3::kMaxTetrahedra) + " tetrahedra (32-bit facet handles)");
     if (begin + total > records_.capacity())
       records_.reserve(std::max(begin + total, records_.capacity() + records_.capacity() / 4));
+    populate_for_writing(records_.data() + begin, records_.data() + begin + total);  // one call, not a fault a page
     records_.resize(begin + total);
     for (unsigned k = 0; k < threads_; ++k) {
       if (give[k] == 0) continue;
