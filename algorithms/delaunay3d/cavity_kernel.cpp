@@ -243,31 +243,27 @@ bool CavityKernel::grow_cavity(std::uint32_t base, std::uint32_t pid) {
     const std::array<std::uint32_t, 4> outer = r[t].neighbour;
     const std::array<std::uint32_t, 4> v = {r[t].vertex[0], r[t].vertex[1], r[t].vertex[2],
                                             r[t].vertex[3] & ~kMarks};
-    // The unmarked finite neighbours' in-sphere tests go together (insphere_batch.hpp): no two
-    // facets of t share a neighbour, so marking one of them cannot change another's answer.
-    std::array<const std::uint32_t*, 4> tests;
-    std::array<std::uint32_t, 4> mark;
-    unsigned lanes = 0, batched = 0;  // bit i of batched: neighbour i is tested in the batch
+    // The unmarked finite neighbours of a finite t are tested together (insphere_batch.hpp): no
+    // two facets of t share a neighbour, so marking one cannot change another's answer.
+    std::array<std::uint32_t, 4> mark, apex;
+    unsigned batched = 0;  // bit i: neighbour i is tested in the batch
     for (std::uint32_t i = 0; i < 4; ++i) {
       const std::uint32_t* w = r[outer[i] >> 2].vertex.data();
       mark[i] = w[3] & kMarks;
-      if (mark[i] == 0 && w[0] != kInf) tests[lanes++] = w, batched |= 1u << i;
+      apex[i] = w[outer[i] & 3u];  // unmarked, so vertex 3 carries no mark
+      if (mark[i] == 0 && w[0] != kInf) batched |= 1u << i;
     }
-    const InsphereBatch batch =
-        lanes == 0 ? InsphereBatch{} : insphere_static_batch(p_, tests.data(), lanes, p, bounds_.insphere);
-    unsigned lane_bit = 1;
+    if (v[0] == kInf) batched = 0;
+    const InsphereBatch batch = batched == 0 ? InsphereBatch{}
+                                             : insphere_static_across_facets(p_, v, apex, batched, p, bounds_.insphere);
 #pragma GCC unroll 4
     for (std::uint32_t i = 0; i < 4; ++i) {
       if (mark[i] == kInCavity) continue;
       const std::uint32_t u = outer[i] >> 2;
       if (mark[i] == 0) {
-        bool conflict;
-        if (batched & (1u << i)) {
-          conflict = (batch.undecided & lane_bit) ? conflicts(u, p) : (batch.positive & lane_bit) != 0;
-          lane_bit <<= 1;
-        } else {
-          conflict = conflicts(u, p);
-        }
+        const unsigned bit = 1u << i;
+        const bool conflict =
+            (batched & bit) && !(batch.undecided & bit) ? (batch.positive & bit) != 0 : conflicts(u, p);
         if (conflict) {
           if (!owns_apex<Restricted>(outer[i])) return false;
           enter_cavity(u);

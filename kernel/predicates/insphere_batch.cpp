@@ -14,40 +14,51 @@ namespace dtlab {
 namespace {
 
 typedef double Lanes __attribute__((vector_size(4 * sizeof(double))));
+typedef long long LaneIndex __attribute__((vector_size(4 * sizeof(long long))));
+
+// Row r of the four tests (kAcrossFacetRows), lane i = vertex kAcrossFacetRows[i][r].
+constexpr LaneIndex kRow0 = {1, 0, 0, 0}, kRow1 = {2, 3, 1, 2}, kRow2 = {3, 2, 3, 1};
+static_assert(kAcrossFacetRows[0][0] == 1 && kAcrossFacetRows[1][1] == 3 && kAcrossFacetRows[2][2] == 3 &&
+              kAcrossFacetRows[3][2] == 1);
 
 }  // namespace
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-InsphereBatch insphere_static_batch(const Vec3* points, const std::uint32_t* const* tests, unsigned count,
-                                    const Vec3& e, double static_bound) noexcept {
-  // Missing tests repeat test 0. The lanes are assembled in registers: filling them through
-  // memory one double at a time and reading them back whole stalls on store forwarding.
-  const std::uint32_t* t0 = tests[0];
-  const std::uint32_t* t1 = tests[count > 1 ? 1 : 0];
-  const std::uint32_t* t2 = tests[count > 2 ? 2 : 0];
-  const std::uint32_t* t3 = tests[count > 3 ? 3 : 0];
+InsphereBatch insphere_static_across_facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                            const std::array<std::uint32_t, 4>& apex, unsigned tests,
+                                            const Vec3& e, double static_bound) noexcept {
+  // The lanes are assembled in registers: filling them through memory one double at a time and
+  // reading them back whole stalls on store forwarding. An untested lane's apex is replaced by a
+  // vertex, so that nothing unread is loaded.
   const Lanes ex = {e.x, e.x, e.x, e.x}, ey = {e.y, e.y, e.y, e.y}, ez = {e.z, e.z, e.z, e.z};
-  Lanes c[12];
-  for (unsigned j = 0; j < 4; ++j) {
-    const Vec3 &q0 = points[t0[j]], &q1 = points[t1[j]], &q2 = points[t2[j]], &q3 = points[t3[j]];
-    c[3 * j] = Lanes{q0.x, q1.x, q2.x, q3.x} - ex;
-    c[3 * j + 1] = Lanes{q0.y, q1.y, q2.y, q3.y} - ey;
-    c[3 * j + 2] = Lanes{q0.z, q1.z, q2.z, q3.z} - ez;
-  }
-  const Lanes det = stage::insphere_det_translated(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9],
-                                                   c[10], c[11]);
+  const Vec3 &v0 = points[v[0]], &v1 = points[v[1]], &v2 = points[v[2]], &v3 = points[v[3]];
+  const Lanes tx = Lanes{v0.x, v1.x, v2.x, v3.x} - ex;
+  const Lanes ty = Lanes{v0.y, v1.y, v2.y, v3.y} - ey;
+  const Lanes tz = Lanes{v0.z, v1.z, v2.z, v3.z} - ez;
+  const Vec3& a0 = points[(tests & 1u) ? apex[0] : v[0]];
+  const Vec3& a1 = points[(tests & 2u) ? apex[1] : v[0]];
+  const Vec3& a2 = points[(tests & 4u) ? apex[2] : v[0]];
+  const Vec3& a3 = points[(tests & 8u) ? apex[3] : v[0]];
+  const Lanes dx = Lanes{a0.x, a1.x, a2.x, a3.x} - ex;
+  const Lanes dy = Lanes{a0.y, a1.y, a2.y, a3.y} - ey;
+  const Lanes dz = Lanes{a0.z, a1.z, a2.z, a3.z} - ez;
+  const Lanes det = stage::insphere_det_translated(
+      __builtin_shuffle(tx, kRow0), __builtin_shuffle(ty, kRow0), __builtin_shuffle(tz, kRow0),
+      __builtin_shuffle(tx, kRow1), __builtin_shuffle(ty, kRow1), __builtin_shuffle(tz, kRow1),
+      __builtin_shuffle(tx, kRow2), __builtin_shuffle(ty, kRow2), __builtin_shuffle(tz, kRow2), dx, dy, dz);
   InsphereBatch out;
-  for (unsigned k = 0; k < count; ++k) {
+  for (unsigned i = 0; i < 4; ++i) {
+    if (!(tests & (1u << i))) continue;
     // As insphere_semistatic_bounded: decided when |det| > bound.
-    if (det[k] > static_bound) {
-      out.positive |= 1u << k;
-    } else if (!(det[k] < -static_bound)) {
-      out.undecided |= 1u << k;
+    if (det[i] > static_bound) {
+      out.positive |= 1u << i;
+    } else if (!(det[i] < -static_bound)) {
+      out.undecided |= 1u << i;
     }
   }
-  detail::tls_predicate_stats[Predicate::Insphere].semistatic += count - std::popcount(out.undecided);
+  detail::tls_predicate_stats[Predicate::Insphere].semistatic += std::popcount(tests) - std::popcount(out.undecided);
   return out;
 }
 

@@ -1,12 +1,16 @@
-// Up to four in-sphere tests that share the query point e, decided by the static filter
-// (static_filter.hpp) in one pass of vector arithmetic: the cavity search asks about the
-// neighbours of a cavity tetrahedron together. Each lane computes the scalar determinant bit for
-// bit (semistatic.hpp's insphere_det_translated, no contraction), so a lane decides exactly when
-// insphere_semistatic_bounded's static test would; the caller sends the undecided ones through
-// insphere_perturbed_bounded. On x86-64 the vectors are AVX2 where the processor has it (chosen
-// at run time) and SSE2 pairs otherwise: only speed depends on it.
+// The in-sphere tests of the four tetrahedra across the facets of one tetrahedron, against one
+// query point, decided by the static filter (static_filter.hpp) in one pass of vector
+// arithmetic: the cavity search asks about the neighbours of a cavity tetrahedron together.
+// Each neighbour shares a facet with the tetrahedron, so the lanes are its four vertices
+// permuted plus one apex each: 8 points loaded instead of 16. Each lane computes the scalar
+// determinant of its rows bit for bit (semistatic.hpp's insphere_det_translated, no
+// contraction), so a lane decides exactly when insphere_semistatic_bounded on those rows would;
+// the caller sends the undecided ones through the full predicate. On x86-64 the vectors are
+// AVX2 where the processor has it (chosen at run time), SSE2 pairs otherwise: only speed
+// depends on it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "kernel/vec.hpp"
@@ -14,14 +18,23 @@
 namespace dtlab {
 
 struct InsphereBatch {
-  unsigned positive = 0;   // bit k: test k certified positive
-  unsigned undecided = 0;  // bit k: the static bound did not decide test k
+  unsigned positive = 0;   // bit i: test i certified positive
+  unsigned undecided = 0;  // bit i: the static bound did not decide test i
 };
 
-// Test k is insphere(a, b, c, d, e) with a, b, c, d = points[tests[k][0..3]], for k < count
-// (1 to 4) (tests[k]: four vertex ids, as a tetrahedron lists them). The decided tests count as
-// semi-static calls in the predicate statistics (kernel/stats.hpp), as one by one would.
-InsphereBatch insphere_static_batch(const Vec3* points, const std::uint32_t* const* tests, unsigned count,
-                                    const Vec3& e, double static_bound) noexcept;
+// The rows of test i, for a positive tetrahedron (v0, v1, v2, v3) and the apex a_i of the
+// tetrahedron across the facet opposite v_i: that neighbour listed positive,
+//   test 0: (v1, v2, v3, a0)   test 1: (v0, v3, v2, a1)   test 2: (v0, v1, v3, a2)   test 3: (v0, v2, v1, a3)
+// and e last: insphere(rows, e) > 0 iff e lies inside the neighbour's circumsphere.
+inline constexpr std::array<std::array<unsigned, 3>, 4> kAcrossFacetRows = {
+    {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}}};
+
+// Tests i with bit i of `tests` set (at least one); v = the four vertex ids of the tetrahedron,
+// apex[i] the apex id of test i (ignored, not read, for the others); ids index `points`. The
+// decided tests count as semi-static in-sphere calls in the predicate statistics
+// (kernel/stats.hpp), as one by one would.
+InsphereBatch insphere_static_across_facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                            const std::array<std::uint32_t, 4>& apex, unsigned tests,
+                                            const Vec3& e, double static_bound) noexcept;
 
 }  // namespace dtlab

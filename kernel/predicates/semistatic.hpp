@@ -89,9 +89,11 @@ inline FilteredSign incircle_semistatic(const Vec2& a, const Vec2& b, const Vec2
 
 // The in-sphere determinant on the differences to e (rows (p - e, |p - e|^2)), for doubles or
 // for vectors of doubles (insphere_batch.hpp): the same operations in the same order, so each
-// lane of a vector is bitwise the scalar value, and one error bound serves both.
+// lane of a vector is bitwise the scalar value, and one error bound serves both. Always inlined:
+// an out-of-line copy shared by callers compiled for different vector units (insphere_batch's
+// AVX2 and default clones) would pass vectors in the registers of only one of them.
 template <class T>
-inline T insphere_det_translated(T ax, T ay, T az, T bx, T by, T bz, T cx, T cy, T cz, T dx, T dy, T dz) noexcept {
+[[gnu::always_inline]] inline T insphere_det_translated(T ax, T ay, T az, T bx, T by, T bz, T cx, T cy, T cz, T dx, T dy, T dz) noexcept {
   // 2x2 minors of the (y, z) columns, shared by the four 3x3 minors.
   const T ab = ay * bz - az * by, ac = ay * cz - az * cy, ad = ay * dz - az * dy;
   const T bc = by * cz - bz * cy, bd = by * dz - bz * dy, cd = cy * dz - cz * dy;

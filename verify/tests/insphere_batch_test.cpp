@@ -1,12 +1,14 @@
 // The batched static in-sphere filter (kernel/predicates/insphere_batch.hpp) against the scalar
-// filter it must equal lane for lane: a lane decides exactly when insphere_semistatic_bounded's
-// static test does, with the same sign, and the exact predicate agrees with every decided lane.
+// filter it must equal test for test: a test decides exactly when insphere_semistatic_bounded's
+// static test on the same rows does, with the same sign, the exact predicate agrees with every
+// decided test, and the rows list each neighbour positive.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "kernel/predicates.hpp"
@@ -26,42 +28,50 @@ int scalar_static(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, co
   return det > bound ? 1 : (det < -bound ? -1 : 0);
 }
 
-// Returns how many tests the batches left undecided.
-int check_batches(const std::vector<Vec3>& points, double bound, std::mt19937_64& rng, int rounds) {
+// Random positive tetrahedra of `points` and random apexes and query points, every subset of the
+// four tests; how many tests there were and how many the batches left undecided.
+struct Counts {
+  int tests = 0, undecided = 0;
+};
+Counts check_batches(const std::vector<Vec3>& points, double bound, std::mt19937_64& rng, int rounds) {
   std::uniform_int_distribution<std::uint32_t> pick(0, static_cast<std::uint32_t>(points.size() - 1));
-  int undecided_count = 0;
+  Counts counts;
   for (int round = 0; round < rounds; ++round) {
-    const unsigned count = 1 + round % 4;
-    std::array<std::array<std::uint32_t, 4>, 4> ids;
-    std::array<const std::uint32_t*, 4> tests;
-    for (unsigned k = 0; k < count; ++k) {
-      for (std::uint32_t& v : ids[k]) v = pick(rng);
-      tests[k] = ids[k].data();
-    }
+    std::array<std::uint32_t, 4> v, apex;
+    for (std::uint32_t& x : v) x = pick(rng);
+    if (orient3d(points[v[0]], points[v[1]], points[v[2]], points[v[3]]) != Sign::Positive) std::swap(v[2], v[3]);
+    for (std::uint32_t& x : apex) x = pick(rng);
+    const unsigned tests = 1 + round % 15;
     const Vec3& e = points[pick(rng)];
     const std::uint64_t before = predicate_stats()[Predicate::Insphere].semistatic;
-    const InsphereBatch batch = insphere_static_batch(points.data(), tests.data(), count, e, bound);
+    const InsphereBatch batch = insphere_static_across_facets(points.data(), v, apex, tests, e, bound);
     const std::uint64_t counted = predicate_stats()[Predicate::Insphere].semistatic - before;
     unsigned decided = 0;
-    for (unsigned k = 0; k < count; ++k) {
-      const auto& q = ids[k];
-      const int expected = scalar_static(points[q[0]], points[q[1]], points[q[2]], points[q[3]], e, bound);
-      const bool undecided = (batch.undecided >> k) & 1u, positive = (batch.positive >> k) & 1u;
-      EXPECT_EQ(undecided, expected == 0) << "round " << round << " lane " << k;
+    for (unsigned i = 0; i < 4; ++i) {
+      if (!(tests & (1u << i))) continue;
+      ++counts.tests;
+      const auto& rows = kAcrossFacetRows[i];
+      const Vec3 &a = points[v[rows[0]]], &b = points[v[rows[1]]], &c = points[v[rows[2]]], &d = points[apex[i]];
+      const int expected = scalar_static(a, b, c, d, e, bound);
+      const bool undecided = (batch.undecided >> i) & 1u, positive = (batch.positive >> i) & 1u;
+      EXPECT_EQ(undecided, expected == 0) << "round " << round << " test " << i;
       if (expected == 0) {
-        ++undecided_count;
+        ++counts.undecided;
         continue;
       }
       ++decided;
-      EXPECT_EQ(positive, expected > 0) << "round " << round << " lane " << k;
-      EXPECT_EQ(insphere(points[q[0]], points[q[1]], points[q[2]], points[q[3]], e),
-                positive ? Sign::Positive : Sign::Negative)
-          << "round " << round << " lane " << k;
+      EXPECT_EQ(positive, expected > 0) << "round " << round << " test " << i;
+      EXPECT_EQ(insphere(a, b, c, d, e), positive ? Sign::Positive : Sign::Negative)
+          << "round " << round << " test " << i;
+      // The rows list the neighbour positive when its apex is across the facet from v_i.
+      if (orient3d(a, b, c, points[v[i]]) != Sign::Zero) {
+        EXPECT_EQ(orient3d(a, b, c, points[v[i]]), Sign::Negative) << "round " << round << " test " << i;
+      }
     }
-    EXPECT_EQ((batch.positive | batch.undecided) >> count, 0u) << "bits beyond the tests";
+    EXPECT_EQ((batch.positive | batch.undecided) & ~tests, 0u) << "bits of tests not asked for";
     EXPECT_EQ(counted, decided);
   }
-  return undecided_count;
+  return counts;
 }
 
 TEST(InsphereBatch, EqualsTheScalarStaticFilterOnRandomPoints) {
@@ -71,7 +81,8 @@ TEST(InsphereBatch, EqualsTheScalarStaticFilterOnRandomPoints) {
   for (Vec3& p : points) p = {u(rng), u(rng), u(rng)};
   const StaticBounds3 bounds = static_bounds3(points);
   // (random picks repeat points or take e among them now and then: those tests are zero)
-  EXPECT_LT(check_batches(points, bounds.insphere, rng, 4000), 3000);
+  const Counts counts = check_batches(points, bounds.insphere, rng, 4000);
+  EXPECT_LT(counts.undecided, counts.tests / 4);
 }
 
 // Points on a sphere and on a small grid: many tests the static bound cannot decide, and exact
@@ -89,9 +100,10 @@ TEST(InsphereBatch, LeavesNearDegenerateTestsUndecided) {
     points.push_back({1 + v.x / n, 1 + v.y / n, 1 + v.z / n});
   }
   const StaticBounds3 bounds = static_bounds3(points);
-  EXPECT_GT(check_batches(points, bounds.insphere, rng, 4000), 500);
+  EXPECT_GT(check_batches(points, bounds.insphere, rng, 4000).undecided, 500);
   // Without a static bound nothing is decided.
-  EXPECT_EQ(check_batches(points, stage::kNoStaticBound, rng, 100), 250);
+  const Counts unbounded = check_batches(points, stage::kNoStaticBound, rng, 100);
+  EXPECT_EQ(unbounded.undecided, unbounded.tests);
 }
 
 }  // namespace
