@@ -14,21 +14,16 @@ namespace dtlab {
 namespace {
 
 typedef double Lanes __attribute__((vector_size(4 * sizeof(double))));
-typedef long long LaneIndex __attribute__((vector_size(4 * sizeof(long long))));
 
-// Row r of the four tests (kAcrossFacetRows), lane i = vertex kAcrossFacetRows[i][r].
-constexpr LaneIndex kRow0 = {1, 0, 0, 0}, kRow1 = {2, 3, 1, 2}, kRow2 = {3, 2, 3, 1};
-static_assert(kAcrossFacetRows[0][0] == 1 && kAcrossFacetRows[1][1] == 3 && kAcrossFacetRows[2][2] == 3 &&
-              kAcrossFacetRows[3][2] == 1);
+// Row r of the four tests, lane i = vertex kAcrossFacetRows[i][r]: the shuffles below,
+//   row 0: (1, 0, 0, 0)   row 1: (2, 3, 1, 2)   row 2: (3, 2, 3, 1).
+static_assert(kAcrossFacetRows[0] == std::array<unsigned, 3>{1, 2, 3} && kAcrossFacetRows[1] == std::array<unsigned, 3>{0, 3, 2} &&
+              kAcrossFacetRows[2] == std::array<unsigned, 3>{0, 1, 3} && kAcrossFacetRows[3] == std::array<unsigned, 3>{0, 2, 1});
 
-}  // namespace
-
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-InsphereBatch insphere_static_across_facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
-                                            const std::array<std::uint32_t, 4>& apex, unsigned tests,
-                                            const Vec3& e, double static_bound) noexcept {
+// The body, compiled once per vector unit below.
+[[gnu::always_inline]] inline InsphereBatch across_facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                                         const std::array<std::uint32_t, 4>& apex, unsigned tests,
+                                                         const Vec3& e, double static_bound) noexcept {
   // The lanes are assembled in registers: filling them through memory one double at a time and
   // reading them back whole stalls on store forwarding. An untested lane's apex is replaced by a
   // vertex, so that nothing unread is loaded.
@@ -45,9 +40,11 @@ InsphereBatch insphere_static_across_facets(const Vec3* points, const std::array
   const Lanes dy = Lanes{a0.y, a1.y, a2.y, a3.y} - ey;
   const Lanes dz = Lanes{a0.z, a1.z, a2.z, a3.z} - ez;
   const Lanes det = stage::insphere_det_translated(
-      __builtin_shuffle(tx, kRow0), __builtin_shuffle(ty, kRow0), __builtin_shuffle(tz, kRow0),
-      __builtin_shuffle(tx, kRow1), __builtin_shuffle(ty, kRow1), __builtin_shuffle(tz, kRow1),
-      __builtin_shuffle(tx, kRow2), __builtin_shuffle(ty, kRow2), __builtin_shuffle(tz, kRow2), dx, dy, dz);
+      __builtin_shufflevector(tx, tx, 1, 0, 0, 0), __builtin_shufflevector(ty, ty, 1, 0, 0, 0),
+      __builtin_shufflevector(tz, tz, 1, 0, 0, 0), __builtin_shufflevector(tx, tx, 2, 3, 1, 2),
+      __builtin_shufflevector(ty, ty, 2, 3, 1, 2), __builtin_shufflevector(tz, tz, 2, 3, 1, 2),
+      __builtin_shufflevector(tx, tx, 3, 2, 3, 1), __builtin_shufflevector(ty, ty, 3, 2, 3, 1),
+      __builtin_shufflevector(tz, tz, 3, 2, 3, 1), dx, dy, dz);
   InsphereBatch out;
   for (unsigned i = 0; i < 4; ++i) {
     if (!(tests & (1u << i))) continue;
@@ -60,6 +57,35 @@ InsphereBatch insphere_static_across_facets(const Vec3* points, const std::array
   }
   detail::tls_predicate_stats[Predicate::Insphere].semistatic += std::popcount(tests) - std::popcount(out.undecided);
   return out;
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define DTLAB_AVX2_CLONE 1
+[[gnu::target("avx2")]] InsphereBatch across_facets_avx2(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                                        const std::array<std::uint32_t, 4>& apex, unsigned tests,
+                                                        const Vec3& e, double static_bound) noexcept {
+  return across_facets(points, v, apex, tests, e, static_bound);
+}
+#endif
+
+}  // namespace
+
+namespace detail {
+InsphereBatch insphere_static_across_facets_portable(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                                     const std::array<std::uint32_t, 4>& apex, unsigned tests,
+                                                     const Vec3& e, double static_bound) noexcept {
+  return across_facets(points, v, apex, tests, e, static_bound);
+}
+}  // namespace detail
+
+InsphereBatch insphere_static_across_facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                            const std::array<std::uint32_t, 4>& apex, unsigned tests,
+                                            const Vec3& e, double static_bound) noexcept {
+#if defined(DTLAB_AVX2_CLONE)
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) return across_facets_avx2(points, v, apex, tests, e, static_bound);
+#endif
+  return detail::insphere_static_across_facets_portable(points, v, apex, tests, e, static_bound);
 }
 
 }  // namespace dtlab

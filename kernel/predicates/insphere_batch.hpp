@@ -37,4 +37,11 @@ InsphereBatch insphere_static_across_facets(const Vec3* points, const std::array
                                             const std::array<std::uint32_t, 4>& apex, unsigned tests,
                                             const Vec3& e, double static_bound) noexcept;
 
+namespace detail {
+// The same without the AVX2 version, whatever the processor: for the tests.
+InsphereBatch insphere_static_across_facets_portable(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                                     const std::array<std::uint32_t, 4>& apex, unsigned tests,
+                                                     const Vec3& e, double static_bound) noexcept;
+}  // namespace detail
+
 }  // namespace dtlab

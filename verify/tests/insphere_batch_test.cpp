@@ -46,6 +46,11 @@ Counts check_batches(const std::vector<Vec3>& points, double bound, std::mt19937
     const std::uint64_t before = predicate_stats()[Predicate::Insphere].semistatic;
     const InsphereBatch batch = insphere_static_across_facets(points.data(), v, apex, tests, e, bound);
     const std::uint64_t counted = predicate_stats()[Predicate::Insphere].semistatic - before;
+    // The version for processors without AVX2 says the same.
+    const InsphereBatch portable =
+        detail::insphere_static_across_facets_portable(points.data(), v, apex, tests, e, bound);
+    EXPECT_EQ(portable.positive, batch.positive) << "round " << round;
+    EXPECT_EQ(portable.undecided, batch.undecided) << "round " << round;
     unsigned decided = 0;
     for (unsigned i = 0; i < 4; ++i) {
       if (!(tests & (1u << i))) continue;
