@@ -8,7 +8,7 @@
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
-#include "kernel/predicates/insphere_batch.hpp"
+#include "kernel/predicates/facet_batch.hpp"
 #include "mesh/memory_hints.hpp"
 
 namespace dtlab {
@@ -27,6 +27,15 @@ constexpr std::uint32_t kInCavity = 0x80000000u;
 constexpr std::uint32_t kOutside = 0x40000000u;
 constexpr std::uint32_t kMarks = kInCavity | kOutside;
 static_assert(T3::kMaxPoints < kOutside);
+
+// The facet batches (facet_batch.hpp) list the facets as the tetrahedralization does.
+constexpr bool same_facet_rows() {
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 3; ++j)
+      if (kFacet[i][j] != kFacetRows[i][j]) return false;
+  return true;
+}
+static_assert(same_facet_rows());
 
 }  // namespace
 
@@ -190,15 +199,21 @@ std::uint32_t CavityKernel::walk(std::uint32_t pid, std::uint32_t* stopped) cons
   }
   std::uint32_t entered = 4;  // the facet of t the walk came in through (4: none)
   for (std::size_t steps = 0; steps <= slot_count_; ++steps) {
-    const std::uint32_t* v = r_[t].vertex.data();
+    const std::array<std::uint32_t, 4> v = r_[t].vertex;
     if (v[0] == kInf) return t;  // entered across its hull facet: p is strictly beyond it
+    // The facets not entered through, tested together (facet_batch.hpp); the first one p is
+    // beyond, in the order below, is crossed.
+    const OrientBatch batch = orient3d_static_facets(p_, v, 0xFu & ~(1u << entered), p, bounds_.orient3d);
     std::uint32_t next = kNone;
     bool blocked = false;
     for (std::uint32_t k = 1; k <= 4; ++k) {
       const std::uint32_t i = (entered + k) & 3u;
       if (i == entered) continue;
       const auto& f = kFacet[i];
-      if (orient3d_bounded(p_[v[f[0]]], p_[v[f[1]]], p_[v[f[2]]], p, bounds_.orient3d) == Sign::Negative) {
+      const unsigned bit = 1u << i;
+      if ((batch.undecided & bit) ? orient3d_bounded(p_[v[f[0]]], p_[v[f[1]]], p_[v[f[2]]], p, bounds_.orient3d) ==
+                                        Sign::Negative
+                                  : (batch.negative & bit) != 0) {
         if (!owns_apex<Restricted>(r_[t].neighbour[i])) {
           blocked = true;
           continue;
@@ -243,7 +258,7 @@ bool CavityKernel::grow_cavity(std::uint32_t base, std::uint32_t pid) {
     const std::array<std::uint32_t, 4> outer = r[t].neighbour;
     const std::array<std::uint32_t, 4> v = {r[t].vertex[0], r[t].vertex[1], r[t].vertex[2],
                                             r[t].vertex[3] & ~kMarks};
-    // The unmarked finite neighbours of a finite t are tested together (insphere_batch.hpp): no
+    // The unmarked finite neighbours of a finite t are tested together (facet_batch.hpp): no
     // two facets of t share a neighbour, so marking one cannot change another's answer.
     std::array<std::uint32_t, 4> mark, apex;
     unsigned batched = 0;  // bit i: neighbour i is tested in the batch

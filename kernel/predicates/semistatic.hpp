@@ -49,6 +49,14 @@ inline FilteredSign orient2d_semistatic(const Vec2& a, const Vec2& b, const Vec2
   return certify(det, semistatic_bound::kOrient2d * mx * my);
 }
 
+// The orientation determinant det(r0, r1, r2) of the rows b - a, c - a, d - a, for doubles or
+// vectors of doubles, as insphere_det_translated below (facet_batch.hpp).
+template <class T>
+[[gnu::always_inline]] inline T orient3d_det_translated(T r0x, T r0y, T r0z, T r1x, T r1y, T r1z, T r2x, T r2y,
+                                                        T r2z) noexcept {
+  return (r0x * (r1y * r2z - r1z * r2y) - r1x * (r0y * r2z - r0z * r2y)) + r2x * (r0y * r1z - r0z * r1y);
+}
+
 // orient3d(a, b, c, d) = det(b - a, c - a, d - a): positive iff d lies on the side of plane
 // abc from which a, b, c turn counter-clockwise (Medit's positive tetrahedron).
 inline FilteredSign orient3d_semistatic_bounded(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
@@ -56,8 +64,7 @@ inline FilteredSign orient3d_semistatic_bounded(const Vec3& a, const Vec3& b, co
   const double r0x = b.x - a.x, r0y = b.y - a.y, r0z = b.z - a.z;
   const double r1x = c.x - a.x, r1y = c.y - a.y, r1z = c.z - a.z;
   const double r2x = d.x - a.x, r2y = d.y - a.y, r2z = d.z - a.z;
-  const double det = (r0x * (r1y * r2z - r1z * r2y) - r1x * (r0y * r2z - r0z * r2y)) +
-                     r2x * (r0y * r1z - r0z * r1y);
+  const double det = orient3d_det_translated(r0x, r0y, r0z, r1x, r1y, r1z, r2x, r2y, r2z);
   if (std::fabs(det) > static_bound) return sign_of(det);
   const double mx = std::max({std::fabs(r0x), std::fabs(r1x), std::fabs(r2x)});
   const double my = std::max({std::fabs(r0y), std::fabs(r1y), std::fabs(r2y)});
@@ -88,9 +95,9 @@ inline FilteredSign incircle_semistatic(const Vec2& a, const Vec2& b, const Vec2
 }
 
 // The in-sphere determinant on the differences to e (rows (p - e, |p - e|^2)), for doubles or
-// for vectors of doubles (insphere_batch.hpp): the same operations in the same order, so each
+// for vectors of doubles (facet_batch.hpp): the same operations in the same order, so each
 // lane of a vector is bitwise the scalar value, and one error bound serves both. Always inlined:
-// an out-of-line copy shared by callers compiled for different vector units (insphere_batch's
+// an out-of-line copy shared by callers compiled for different vector units (facet_batch.cpp.s
 // AVX2 and default clones) would pass vectors in the registers of only one of them.
 template <class T>
 [[gnu::always_inline]] inline T insphere_det_translated(T ax, T ay, T az, T bx, T by, T bz, T cx, T cy, T cz, T dx, T dy, T dz) noexcept {

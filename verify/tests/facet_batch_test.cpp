@@ -1,7 +1,8 @@
-// The batched static in-sphere filter (kernel/predicates/insphere_batch.hpp) against the scalar
-// filter it must equal test for test: a test decides exactly when insphere_semistatic_bounded's
-// static test on the same rows does, with the same sign, the exact predicate agrees with every
-// decided test, and the rows list each neighbour positive.
+// The batched static filters of one tetrahedron's facets (kernel/predicates/facet_batch.hpp)
+// against the scalar filters they must equal test for test: a test decides exactly when the
+// scalar static test on the same rows does, with the same sign, the exact predicate agrees with
+// every decided test, the rows list each facet and each neighbour as documented, and the
+// portable version (no AVX2) says the same as the one the processor runs.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -12,7 +13,7 @@
 #include <vector>
 
 #include "kernel/predicates.hpp"
-#include "kernel/predicates/insphere_batch.hpp"
+#include "kernel/predicates/facet_batch.hpp"
 #include "kernel/predicates/semistatic.hpp"
 #include "kernel/predicates/static_filter.hpp"
 #include "kernel/stats.hpp"
@@ -77,6 +78,74 @@ Counts check_batches(const std::vector<Vec3>& points, double bound, std::mt19937
     EXPECT_EQ(counted, decided);
   }
   return counts;
+}
+
+// What the scalar static orientation test says: +1 / -1 decided, 0 undecided.
+int scalar_static_orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double bound) {
+  const double det = stage::orient3d_det_translated(b.x - a.x, b.y - a.y, b.z - a.z, c.x - a.x, c.y - a.y,
+                                                    c.z - a.z, d.x - a.x, d.y - a.y, d.z - a.z);
+  return det > bound ? 1 : (det < -bound ? -1 : 0);
+}
+
+// Random positive tetrahedra and query points, every subset of the four facets; how many tests
+// there were and how many the batches left undecided.
+Counts check_orient_batches(const std::vector<Vec3>& points, double bound, std::mt19937_64& rng, int rounds) {
+  std::uniform_int_distribution<std::uint32_t> pick(0, static_cast<std::uint32_t>(points.size() - 1));
+  Counts counts;
+  for (int round = 0; round < rounds; ++round) {
+    std::array<std::uint32_t, 4> v;
+    for (std::uint32_t& x : v) x = pick(rng);
+    if (orient3d(points[v[0]], points[v[1]], points[v[2]], points[v[3]]) != Sign::Positive) std::swap(v[2], v[3]);
+    const unsigned tests = 1 + round % 15;
+    const Vec3& e = points[pick(rng)];
+    const std::uint64_t before = predicate_stats()[Predicate::Orient3d].semistatic;
+    const OrientBatch batch = orient3d_static_facets(points.data(), v, tests, e, bound);
+    const std::uint64_t counted = predicate_stats()[Predicate::Orient3d].semistatic - before;
+    const OrientBatch portable = detail::orient3d_static_facets_portable(points.data(), v, tests, e, bound);
+    EXPECT_EQ(portable.negative, batch.negative) << "round " << round;
+    EXPECT_EQ(portable.undecided, batch.undecided) << "round " << round;
+    unsigned decided = 0;
+    for (unsigned i = 0; i < 4; ++i) {
+      if (!(tests & (1u << i))) continue;
+      ++counts.tests;
+      const auto& rows = kFacetRows[i];
+      const Vec3 &a = points[v[rows[0]]], &b = points[v[rows[1]]], &c = points[v[rows[2]]];
+      const int expected = scalar_static_orient(a, b, c, e, bound);
+      EXPECT_EQ(((batch.undecided >> i) & 1u) != 0, expected == 0) << "round " << round << " facet " << i;
+      if (expected == 0) {
+        ++counts.undecided;
+        continue;
+      }
+      ++decided;
+      const bool negative = (batch.negative >> i) & 1u;
+      EXPECT_EQ(negative, expected < 0) << "round " << round << " facet " << i;
+      EXPECT_EQ(orient3d(a, b, c, e), negative ? Sign::Negative : Sign::Positive) << "round " << round;
+      // The facet listed so that it and its opposite vertex make a positive tetrahedron.
+      if (orient3d(a, b, c, points[v[i]]) != Sign::Zero) {
+        EXPECT_EQ(orient3d(a, b, c, points[v[i]]), Sign::Positive) << "round " << round << " facet " << i;
+      }
+    }
+    EXPECT_EQ((batch.negative | batch.undecided) & ~tests, 0u) << "bits of tests not asked for";
+    EXPECT_EQ(counted, decided);
+  }
+  return counts;
+}
+
+TEST(OrientBatch, EqualsTheScalarStaticFilter) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> points(64);
+  for (Vec3& p : points) p = {u(rng), u(rng), u(rng)};
+  const Counts random = check_orient_batches(points, static_bounds3(points).orient3d, rng, 4000);
+  EXPECT_LT(random.undecided, random.tests / 4);
+  // A 3 x 3 x 3 grid: many coplanar quadruples, which must come out undecided.
+  std::vector<Vec3> grid;
+  for (int x = 0; x < 3; ++x)
+    for (int y = 0; y < 3; ++y)
+      for (int z = 0; z < 3; ++z) grid.push_back({double(x), double(y), double(z)});
+  EXPECT_GT(check_orient_batches(grid, static_bounds3(grid).orient3d, rng, 4000).undecided, 500);
+  const Counts unbounded = check_orient_batches(points, stage::kNoStaticBound, rng, 100);
+  EXPECT_EQ(unbounded.undecided, unbounded.tests);
 }
 
 TEST(InsphereBatch, EqualsTheScalarStaticFilterOnRandomPoints) {

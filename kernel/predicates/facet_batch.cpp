@@ -2,7 +2,7 @@
 // ABI is crossed, so the warning that the AVX2 clone's vectors are passed differently is moot.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
-#include "kernel/predicates/insphere_batch.hpp"
+#include "kernel/predicates/facet_batch.hpp"
 
 #include <bit>
 
@@ -20,7 +20,35 @@ typedef double Lanes __attribute__((vector_size(4 * sizeof(double))));
 static_assert(kAcrossFacetRows[0] == std::array<unsigned, 3>{1, 2, 3} && kAcrossFacetRows[1] == std::array<unsigned, 3>{0, 3, 2} &&
               kAcrossFacetRows[2] == std::array<unsigned, 3>{0, 1, 3} && kAcrossFacetRows[3] == std::array<unsigned, 3>{0, 2, 1});
 
-// The body, compiled once per vector unit below.
+// The bodies, compiled once per vector unit below.
+[[gnu::always_inline]] inline OrientBatch facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                                 unsigned tests, const Vec3& e, double static_bound) noexcept {
+  // As orient3d_semistatic_bounded(a, b, c, e): rows b - a, c - a, e - a, a, b, c = facet rows
+  //   a: (1, 0, 0, 0)   b: (3, 2, 3, 1)   c: (2, 3, 1, 2)   (kFacetRows by lane).
+  const Vec3 &v0 = points[v[0]], &v1 = points[v[1]], &v2 = points[v[2]], &v3 = points[v[3]];
+  const Lanes x = {v0.x, v1.x, v2.x, v3.x}, y = {v0.y, v1.y, v2.y, v3.y}, z = {v0.z, v1.z, v2.z, v3.z};
+  const Lanes ax = __builtin_shufflevector(x, x, 1, 0, 0, 0), ay = __builtin_shufflevector(y, y, 1, 0, 0, 0),
+              az = __builtin_shufflevector(z, z, 1, 0, 0, 0);
+  const Lanes bx = __builtin_shufflevector(x, x, 3, 2, 3, 1), by = __builtin_shufflevector(y, y, 3, 2, 3, 1),
+              bz = __builtin_shufflevector(z, z, 3, 2, 3, 1);
+  const Lanes cx = __builtin_shufflevector(x, x, 2, 3, 1, 2), cy = __builtin_shufflevector(y, y, 2, 3, 1, 2),
+              cz = __builtin_shufflevector(z, z, 2, 3, 1, 2);
+  const Lanes ex = {e.x, e.x, e.x, e.x}, ey = {e.y, e.y, e.y, e.y}, ez = {e.z, e.z, e.z, e.z};
+  const Lanes det = stage::orient3d_det_translated(bx - ax, by - ay, bz - az, cx - ax, cy - ay, cz - az, ex - ax,
+                                                   ey - ay, ez - az);
+  OrientBatch out;
+  for (unsigned i = 0; i < 4; ++i) {
+    if (!(tests & (1u << i))) continue;
+    if (det[i] < -static_bound) {
+      out.negative |= 1u << i;
+    } else if (!(det[i] > static_bound)) {
+      out.undecided |= 1u << i;
+    }
+  }
+  detail::tls_predicate_stats[Predicate::Orient3d].semistatic += std::popcount(tests) - std::popcount(out.undecided);
+  return out;
+}
+
 [[gnu::always_inline]] inline InsphereBatch across_facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
                                                          const std::array<std::uint32_t, 4>& apex, unsigned tests,
                                                          const Vec3& e, double static_bound) noexcept {
@@ -59,33 +87,39 @@ static_assert(kAcrossFacetRows[0] == std::array<unsigned, 3>{1, 2, 3} && kAcross
   return out;
 }
 
-#if defined(__x86_64__) && defined(__GNUC__)
-#define DTLAB_AVX2_CLONE 1
-[[gnu::target("avx2")]] InsphereBatch across_facets_avx2(const Vec3* points, const std::array<std::uint32_t, 4>& v,
-                                                        const std::array<std::uint32_t, 4>& apex, unsigned tests,
-                                                        const Vec3& e, double static_bound) noexcept {
-  return across_facets(points, v, apex, tests, e, static_bound);
-}
-#endif
-
 }  // namespace
 
+// The public entry points come in an AVX2 and a default version, chosen once when the program
+// is loaded (GNU ifunc); the portable ones below are the default bodies, for the tests.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__linux__)
+#define DTLAB_FACET_BATCH_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define DTLAB_FACET_BATCH_CLONES
+#endif
+
+DTLAB_FACET_BATCH_CLONES
+OrientBatch orient3d_static_facets(const Vec3* points, const std::array<std::uint32_t, 4>& v, unsigned tests,
+                                   const Vec3& e, double static_bound) noexcept {
+  return facets(points, v, tests, e, static_bound);
+}
+
+DTLAB_FACET_BATCH_CLONES
+InsphereBatch insphere_static_across_facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                            const std::array<std::uint32_t, 4>& apex, unsigned tests,
+                                            const Vec3& e, double static_bound) noexcept {
+  return across_facets(points, v, apex, tests, e, static_bound);
+}
+
 namespace detail {
+OrientBatch orient3d_static_facets_portable(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                            unsigned tests, const Vec3& e, double static_bound) noexcept {
+  return facets(points, v, tests, e, static_bound);
+}
 InsphereBatch insphere_static_across_facets_portable(const Vec3* points, const std::array<std::uint32_t, 4>& v,
                                                      const std::array<std::uint32_t, 4>& apex, unsigned tests,
                                                      const Vec3& e, double static_bound) noexcept {
   return across_facets(points, v, apex, tests, e, static_bound);
 }
 }  // namespace detail
-
-InsphereBatch insphere_static_across_facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
-                                            const std::array<std::uint32_t, 4>& apex, unsigned tests,
-                                            const Vec3& e, double static_bound) noexcept {
-#if defined(DTLAB_AVX2_CLONE)
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2) return across_facets_avx2(points, v, apex, tests, e, static_bound);
-#endif
-  return detail::insphere_static_across_facets_portable(points, v, apex, tests, e, static_bound);
-}
 
 }  // namespace dtlab
