@@ -5,6 +5,7 @@
 // charge the baseline a misprediction that the predicate's own cost does not include.
 #pragma once
 
+#include "kernel/predicates/semistatic.hpp"  // the shared evaluation trees
 #include "kernel/sign.hpp"
 #include "kernel/vec.hpp"
 
@@ -22,8 +23,7 @@ inline Sign orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
   const double r0x = b.x - a.x, r0y = b.y - a.y, r0z = b.z - a.z;
   const double r1x = c.x - a.x, r1y = c.y - a.y, r1z = c.z - a.z;
   const double r2x = d.x - a.x, r2y = d.y - a.y, r2z = d.z - a.z;
-  return sign_without_branch((r0x * (r1y * r2z - r1z * r2y) - r1x * (r0y * r2z - r0z * r2y)) +
-                 r2x * (r0y * r1z - r0z * r1y));
+  return sign_without_branch(stage::orient3d_det_translated(r0x, r0y, r0z, r1x, r1y, r1z, r2x, r2y, r2z));
 }
 
 inline Sign incircle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) noexcept {
@@ -41,17 +41,7 @@ inline Sign insphere(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
   const double bx = b.x - e.x, by = b.y - e.y, bz = b.z - e.z;
   const double cx = c.x - e.x, cy = c.y - e.y, cz = c.z - e.z;
   const double dx = d.x - e.x, dy = d.y - e.y, dz = d.z - e.z;
-  const double ab = ay * bz - az * by, ac = ay * cz - az * cy, ad = ay * dz - az * dy;
-  const double bc = by * cz - bz * cy, bd = by * dz - bz * dy, cd = cy * dz - cz * dy;
-  const double mbcd = (bx * cd - cx * bd) + dx * bc;
-  const double macd = (ax * cd - cx * ad) + dx * ac;
-  const double mabd = (ax * bd - bx * ad) + dx * ab;
-  const double mabc = (ax * bc - bx * ac) + cx * ab;
-  const double la = (ax * ax + ay * ay) + az * az;
-  const double lb = (bx * bx + by * by) + bz * bz;
-  const double lc = (cx * cx + cy * cy) + cz * cz;
-  const double ld = (dx * dx + dy * dy) + dz * dz;
-  return sign_without_branch(((la * mbcd - lb * macd) + lc * mabd) - ld * mabc);
+  return sign_without_branch(stage::insphere_det_translated(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz));
 }
 
 }  // namespace dtlab::plain

@@ -97,7 +97,7 @@ inline FilteredSign incircle_semistatic(const Vec2& a, const Vec2& b, const Vec2
 // The in-sphere determinant on the differences to e (rows (p - e, |p - e|^2)), for doubles or
 // for vectors of doubles (facet_batch.hpp): the same operations in the same order, so each
 // lane of a vector is bitwise the scalar value, and one error bound serves both. Always inlined:
-// an out-of-line copy shared by callers compiled for different vector units (facet_batch.cpp.s
+// an out-of-line copy shared by callers compiled for different vector units (facet_batch.cpp's
 // AVX2 and default clones) would pass vectors in the registers of only one of them.
 template <class T>
 [[gnu::always_inline]] inline T insphere_det_translated(T ax, T ay, T az, T bx, T by, T bz, T cx, T cy, T cz, T dx, T dy, T dz) noexcept {
