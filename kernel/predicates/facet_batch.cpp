@@ -20,13 +20,44 @@ typedef double Lanes __attribute__((vector_size(4 * sizeof(double))));
 static_assert(kAcrossFacetRows[0] == std::array<unsigned, 3>{1, 2, 3} && kAcrossFacetRows[1] == std::array<unsigned, 3>{0, 3, 2} &&
               kAcrossFacetRows[2] == std::array<unsigned, 3>{0, 1, 3} && kAcrossFacetRows[3] == std::array<unsigned, 3>{0, 2, 1});
 
+// The facet rows of the orientation lanes, encoded in facets()'s shuffles below.
+static_assert(kFacetRows[0] == std::array<unsigned, 3>{1, 3, 2} && kFacetRows[1] == std::array<unsigned, 3>{0, 2, 3} &&
+              kFacetRows[2] == std::array<unsigned, 3>{0, 3, 1} && kFacetRows[3] == std::array<unsigned, 3>{0, 1, 2});
+
+// Coordinate `axis` of the tetrahedron's four vertices, one lane each.
+[[gnu::always_inline]] inline Lanes vertex_lanes(const Vec3* points, const std::array<std::uint32_t, 4>& v,
+                                                 double Vec3::*axis) noexcept {
+  return Lanes{points[v[0]].*axis, points[v[1]].*axis, points[v[2]].*axis, points[v[3]].*axis};
+}
+
+// The tests asked for in `tests` as the scalar static filter decides them: bit i of `sign` set
+// when lane i is certified of the sign asked for (`negative`: below -bound, else above bound),
+// of `undecided` when |det| <= bound; the decided ones counted as semi-static calls of `p`.
+struct Decided {
+  unsigned sign = 0, undecided = 0;
+};
+[[gnu::always_inline]] inline Decided decide(Lanes det, unsigned tests, double static_bound, bool negative,
+                                             Predicate p) noexcept {
+  Decided out;
+  for (unsigned i = 0; i < 4; ++i) {
+    if (!(tests & (1u << i))) continue;
+    if (negative ? det[i] < -static_bound : det[i] > static_bound) {
+      out.sign |= 1u << i;
+    } else if (!(negative ? det[i] > static_bound : det[i] < -static_bound)) {
+      out.undecided |= 1u << i;
+    }
+  }
+  detail::tls_predicate_stats[p].semistatic += std::popcount(tests) - std::popcount(out.undecided);
+  return out;
+}
+
 // The bodies, compiled once per vector unit below.
 [[gnu::always_inline]] inline OrientBatch facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
                                                  unsigned tests, const Vec3& e, double static_bound) noexcept {
   // As orient3d_semistatic_bounded(a, b, c, e): rows b - a, c - a, e - a, a, b, c = facet rows
   //   a: (1, 0, 0, 0)   b: (3, 2, 3, 1)   c: (2, 3, 1, 2)   (kFacetRows by lane).
-  const Vec3 &v0 = points[v[0]], &v1 = points[v[1]], &v2 = points[v[2]], &v3 = points[v[3]];
-  const Lanes x = {v0.x, v1.x, v2.x, v3.x}, y = {v0.y, v1.y, v2.y, v3.y}, z = {v0.z, v1.z, v2.z, v3.z};
+  const Lanes x = vertex_lanes(points, v, &Vec3::x), y = vertex_lanes(points, v, &Vec3::y),
+              z = vertex_lanes(points, v, &Vec3::z);
   const Lanes ax = __builtin_shufflevector(x, x, 1, 0, 0, 0), ay = __builtin_shufflevector(y, y, 1, 0, 0, 0),
               az = __builtin_shufflevector(z, z, 1, 0, 0, 0);
   const Lanes bx = __builtin_shufflevector(x, x, 3, 2, 3, 1), by = __builtin_shufflevector(y, y, 3, 2, 3, 1),
@@ -36,17 +67,8 @@ static_assert(kAcrossFacetRows[0] == std::array<unsigned, 3>{1, 2, 3} && kAcross
   const Lanes ex = {e.x, e.x, e.x, e.x}, ey = {e.y, e.y, e.y, e.y}, ez = {e.z, e.z, e.z, e.z};
   const Lanes det = stage::orient3d_det_translated(bx - ax, by - ay, bz - az, cx - ax, cy - ay, cz - az, ex - ax,
                                                    ey - ay, ez - az);
-  OrientBatch out;
-  for (unsigned i = 0; i < 4; ++i) {
-    if (!(tests & (1u << i))) continue;
-    if (det[i] < -static_bound) {
-      out.negative |= 1u << i;
-    } else if (!(det[i] > static_bound)) {
-      out.undecided |= 1u << i;
-    }
-  }
-  detail::tls_predicate_stats[Predicate::Orient3d].semistatic += std::popcount(tests) - std::popcount(out.undecided);
-  return out;
+  const Decided d = decide(det, tests, static_bound, true, Predicate::Orient3d);
+  return {d.sign, d.undecided};
 }
 
 [[gnu::always_inline]] inline InsphereBatch across_facets(const Vec3* points, const std::array<std::uint32_t, 4>& v,
@@ -56,10 +78,9 @@ static_assert(kAcrossFacetRows[0] == std::array<unsigned, 3>{1, 2, 3} && kAcross
   // reading them back whole stalls on store forwarding. An untested lane's apex is replaced by a
   // vertex, so that nothing unread is loaded.
   const Lanes ex = {e.x, e.x, e.x, e.x}, ey = {e.y, e.y, e.y, e.y}, ez = {e.z, e.z, e.z, e.z};
-  const Vec3 &v0 = points[v[0]], &v1 = points[v[1]], &v2 = points[v[2]], &v3 = points[v[3]];
-  const Lanes tx = Lanes{v0.x, v1.x, v2.x, v3.x} - ex;
-  const Lanes ty = Lanes{v0.y, v1.y, v2.y, v3.y} - ey;
-  const Lanes tz = Lanes{v0.z, v1.z, v2.z, v3.z} - ez;
+  const Lanes tx = vertex_lanes(points, v, &Vec3::x) - ex;
+  const Lanes ty = vertex_lanes(points, v, &Vec3::y) - ey;
+  const Lanes tz = vertex_lanes(points, v, &Vec3::z) - ez;
   const Vec3& a0 = points[(tests & 1u) ? apex[0] : v[0]];
   const Vec3& a1 = points[(tests & 2u) ? apex[1] : v[0]];
   const Vec3& a2 = points[(tests & 4u) ? apex[2] : v[0]];
@@ -73,18 +94,8 @@ static_assert(kAcrossFacetRows[0] == std::array<unsigned, 3>{1, 2, 3} && kAcross
       __builtin_shufflevector(ty, ty, 2, 3, 1, 2), __builtin_shufflevector(tz, tz, 2, 3, 1, 2),
       __builtin_shufflevector(tx, tx, 3, 2, 3, 1), __builtin_shufflevector(ty, ty, 3, 2, 3, 1),
       __builtin_shufflevector(tz, tz, 3, 2, 3, 1), dx, dy, dz);
-  InsphereBatch out;
-  for (unsigned i = 0; i < 4; ++i) {
-    if (!(tests & (1u << i))) continue;
-    // As insphere_semistatic_bounded: decided when |det| > bound.
-    if (det[i] > static_bound) {
-      out.positive |= 1u << i;
-    } else if (!(det[i] < -static_bound)) {
-      out.undecided |= 1u << i;
-    }
-  }
-  detail::tls_predicate_stats[Predicate::Insphere].semistatic += std::popcount(tests) - std::popcount(out.undecided);
-  return out;
+  const Decided d = decide(det, tests, static_bound, false, Predicate::Insphere);
+  return {d.sign, d.undecided};
 }
 
 }  // namespace
