@@ -439,11 +439,14 @@ void InsertionOrder::reorder(std::vector<Vec3>& points) {
   positive_ = orientation == Sign::Positive;
 }
 
-void InsertionOrder::restore(std::vector<Vec3>& points, std::vector<T3::Record>& records) const {
+void InsertionOrder::restore(std::vector<Vec3>& points, std::vector<T3::Record>& records) && {
   for (T3::Record& r : records)
     for (std::uint32_t& v : r.vertex)
       if (v != kInf) v = order_[v];
-  unpermute_in_place(std::span<Vec3>(points), order_);
+  // The point of rank r goes back to position order_[r]; order_ is spent doing it (no scratch
+  // while the mesh is at its largest).
+  move_to_destinations(std::span<Vec3>(points), std::span<std::uint32_t>(order_));
+  order_.clear();
 }
 
 }  // namespace dtlab

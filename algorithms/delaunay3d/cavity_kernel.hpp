@@ -206,7 +206,8 @@ class InsertionOrder {
   bool first_simplex_positive() const noexcept { return positive_; }
   // The input id of each insertion rank.
   std::span<const std::uint32_t> input_ids() const noexcept { return order_; }
-  void restore(std::vector<Vec3>& points, std::vector<Tetrahedralization3::Record>& records) const;
+  // Spends the order: std::move(order).restore(...), once, last.
+  void restore(std::vector<Vec3>& points, std::vector<Tetrahedralization3::Record>& records) &&;
 
  private:
   std::vector<std::uint32_t> order_;

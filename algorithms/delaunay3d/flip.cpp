@@ -60,7 +60,7 @@ void delaunay3d_flip(PreparedPoints3& input, const Delaunay3dOptions& /*options*
   for (T3::Record& rec : records)
     for (std::uint32_t& v : rec.vertex)
       if (v != T3::kInfinite) v = order[v];
-  unpermute_in_place(std::span<Vec3>(points), order);
+  move_to_destinations(std::span<Vec3>(points), std::span<std::uint32_t>(order));  // order is spent
 }
 
 }  // namespace dtlab

@@ -3,6 +3,7 @@
 // one after the other in BRIO order, each round in Hilbert order (Amenta, Choi, Rote 2003), the
 // walk starting from the last insertion.
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "algorithms/delaunay3d/cavity_kernel.hpp"
@@ -39,7 +40,7 @@ void delaunay3d_incremental(PreparedPoints3& input, const Delaunay3dOptions& /*o
   std::vector<std::uint32_t> dead;
   kernel.release_slots(dead);
   compact_tetrahedra(records, dead);
-  order.restore(points, records);
+  std::move(order).restore(points, records);
 }
 
 }  // namespace dtlab

@@ -16,6 +16,7 @@
 #include <span>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "algorithms/delaunay3d/cavity_kernel.hpp"
@@ -273,7 +274,7 @@ void delaunay3d_parallel(PreparedPoints3& input, const Delaunay3dOptions& option
     first = end;
   }
   insertion.finish();
-  order.restore(points, records);
+  std::move(order).restore(points, records);
 }
 
 }  // namespace dtlab

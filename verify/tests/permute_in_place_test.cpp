@@ -1,0 +1,94 @@
+// Reordering in place (algorithms/permute_in_place.hpp) against the obvious out-of-place
+// permutation, on sizes that finish by cycles alone, deal once, and deal twice, on random and on
+// structured permutations (identity, reversal, one long cycle); and a list that is not a
+// permutation raises the named internal error instead of looping or writing out of bounds.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <random>
+#include <span>
+#include <vector>
+
+#include "algorithms/permute_in_place.hpp"
+#include "kernel/error.hpp"
+
+namespace dtlab {
+namespace {
+
+struct Value {
+  std::uint64_t id;
+  double payload;  // a second word, so that a half-moved element shows
+};
+
+std::vector<Value> values_of(std::size_t n) {
+  std::vector<Value> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = {i, 0.5 * static_cast<double>(i)};
+  return v;
+}
+
+std::vector<std::vector<std::uint32_t>> permutations_of(std::size_t n, std::mt19937_64& rng) {
+  std::vector<std::uint32_t> identity(n);
+  std::iota(identity.begin(), identity.end(), 0u);
+  std::vector<std::uint32_t> reversal(identity.rbegin(), identity.rend());
+  std::vector<std::uint32_t> shuffled = identity;
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  std::vector<std::uint32_t> one_cycle(n);  // i -> i + 1 -> ... -> 0: every element moves
+  for (std::size_t i = 0; i < n; ++i) one_cycle[i] = static_cast<std::uint32_t>((i + 1) % n);
+  // Local: each element moves less than 100 places, as a spatial order moves most points.
+  std::vector<std::uint32_t> local = identity;
+  for (std::size_t i = 0; i + 100 < n; i += 100) std::shuffle(local.begin() + i, local.begin() + i + 100, rng);
+  return {identity, reversal, shuffled, one_cycle, local};
+}
+
+TEST(PermuteInPlace, EqualsTheOutOfPlacePermutation) {
+  std::mt19937_64 rng(20261206);
+  for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{1000}, std::size_t{8192},
+                              std::size_t{8193}, std::size_t{100003}, std::size_t{3000017}}) {
+    for (const std::vector<std::uint32_t>& order : permutations_of(n, rng)) {
+      std::vector<Value> values = values_of(n);
+      permute_in_place(std::span<Value>(values), std::span<const std::uint32_t>(order));
+      for (std::size_t r = 0; r < n; ++r) {
+        ASSERT_EQ(values[r].id, order[r]) << "n " << n << ", rank " << r;
+        ASSERT_EQ(values[r].payload, 0.5 * static_cast<double>(order[r]));
+      }
+    }
+  }
+}
+
+TEST(PermuteInPlace, MoveToDestinationsUndoesThePermutationAndSpendsIt) {
+  std::mt19937_64 rng(7);
+  for (const std::size_t n : {std::size_t{5}, std::size_t{8193}, std::size_t{600001}}) {
+    for (std::vector<std::uint32_t> order : permutations_of(n, rng)) {
+      std::vector<Value> values = values_of(n);
+      permute_in_place(std::span<Value>(values), std::span<const std::uint32_t>(order));
+      move_to_destinations(std::span<Value>(values), std::span<std::uint32_t>(order));
+      for (std::size_t i = 0; i < n; ++i) {
+        ASSERT_EQ(values[i].id, i) << "n " << n;
+        ASSERT_EQ(order[i], i) << "the destinations end as the identity";
+      }
+    }
+  }
+}
+
+TEST(PermuteInPlace, NotAPermutationIsAnInternalErrorNotAHang) {
+  for (const std::size_t n : {std::size_t{10}, std::size_t{50000}}) {
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::reverse(order.begin(), order.end());
+    order[n / 2] = order[n / 3];  // one destination twice, one never
+    std::vector<Value> values = values_of(n);
+    EXPECT_THROW(move_to_destinations(std::span<Value>(values), std::span<std::uint32_t>(order)), InternalError);
+    std::vector<std::uint32_t> beyond(n);
+    std::iota(beyond.begin(), beyond.end(), 0u);
+    beyond[n - 1] = static_cast<std::uint32_t>(n);  // past the end
+    values = values_of(n);
+    EXPECT_THROW(permute_in_place(std::span<Value>(values), std::span<const std::uint32_t>(beyond)), InternalError);
+    values = values_of(n);
+    EXPECT_THROW(move_to_destinations(std::span<Value>(values), std::span<std::uint32_t>(beyond)), InternalError);
+  }
+}
+
+}  // namespace
+}  // namespace dtlab
