@@ -120,17 +120,14 @@ void CavityKernel::grow_chunk(std::size_t k) {
   const std::size_t chunk = std::clamp(begin / 8, kMinChunk, kChunk);
   const std::size_t size = std::min<std::size_t>(begin + std::max(k, chunk), T3::kMaxTetrahedra);
   if (size > records_.capacity()) records_.reserve(std::max(size, records_.capacity() + records_.capacity() / 4));
-  // The fresh slots are written right away: fault their pages in ahead, kPopulateAhead at a
-  // time, in one call each instead of one page fault a page (memory_hints.hpp).
-  if (records_.data() != populated_base_) populated_base_ = records_.data(), populated_ = begin;
-  if (size > populated_) {
-    const std::size_t until = std::min(records_.capacity(), std::max(size, populated_ + kPopulateAhead));
-    populate_for_writing(records_.data() + populated_, records_.data() + until);
-    populated_ = until;
-  }
-  records_.resize(size);
+  records_.resize(size);  // writes nothing (Tetrahedralization3::Record)
   refresh_views();
   give_slots(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(size));
+}
+
+void CavityKernel::refresh_views() noexcept {
+  if (records_.data() != r_) populated_ = 0;  // a new array: its fresh end is not faulted in
+  r_ = records_.data(), slot_count_ = records_.size();
 }
 
 // A slot for a new tetrahedron: a recycled one, else a fresh one.
@@ -141,7 +138,20 @@ std::uint32_t CavityKernel::new_slot() {
     return t;
   }
   if (chunk_next_ == chunk_end_) grow_chunk(1);
+  if (chunk_next_ >= populated_) populate_ahead();
   return static_cast<std::uint32_t>(chunk_next_++);
+}
+
+// Fresh slots are about to be written: fault their pages in, kPopulateAhead records at a time, in
+// one call each instead of one page fault a page (memory_hints.hpp). Unrestricted, up to the
+// array's capacity, which it grows into; restricted, within its own chunk, on its own thread: the
+// first touch of a parallel round's fresh memory is shared out as the insertions are. Only speed
+// depends on it.
+void CavityKernel::populate_ahead() noexcept {
+  const std::size_t limit = restricted_ ? chunk_end_ : records_.capacity();
+  const std::size_t until = std::min(limit, chunk_next_ + kPopulateAhead);
+  populate_for_writing(r_ + chunk_next_, r_ + until);
+  populated_ = until;
 }
 
 std::uint32_t CavityKernel::apex(std::uint32_t h) const noexcept {

@@ -99,7 +99,7 @@ class CavityKernel {
 
   // Slots. Unrestricted, a kernel takes fresh slots by growing the records itself; restricted,
   // only from its free list and from the chunk given to it.
-  void refresh_views() noexcept { r_ = records_.data(), slot_count_ = records_.size(); }
+  void refresh_views() noexcept;
   std::size_t spare_slots() const noexcept { return free_.size() + (chunk_end_ - chunk_next_); }
   // [begin, end): fresh records, for this kernel only; an unused rest of the previous chunk
   // joins the free list.
@@ -120,7 +120,7 @@ class CavityKernel {
   // Records added to the array at a time: an eighth of it, from 64 to 4096, so that a small
   // mesh does not touch (and page in) a large chunk it never uses.
   static constexpr std::size_t kMinChunk = 64, kChunk = 4096;
-  // Records whose pages are faulted in at a time ahead of use: 2 MB (grow_chunk).
+  // Records whose pages are faulted in at a time ahead of use: 2 MB (populate_ahead).
   static constexpr std::size_t kPopulateAhead = (std::size_t{2} << 20) / sizeof(Record);
   static constexpr std::size_t kTableSide = 64;  // balls with at most 64 boundary vertices
 
@@ -139,6 +139,7 @@ class CavityKernel {
 
   void grow_chunk(std::size_t k);
   std::uint32_t new_slot();
+  void populate_ahead() noexcept;
   void set_tetrahedron(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) noexcept {
     r_[t].vertex = {a, b, c, d};
   }
@@ -172,8 +173,7 @@ class CavityKernel {
   bool restricted_ = false;
   SlabOwnership owned_;
   std::size_t chunk_next_ = 0, chunk_end_ = 0;  // fresh slots of this kernel
-  const Record* populated_base_ = nullptr;       // records_.data() when populated_ was set
-  std::size_t populated_ = 0;                    // records below this index are faulted in
+  std::size_t populated_ = 0;                    // fresh slots below this one are faulted in
   std::vector<std::uint32_t> cavity_, new_tetrahedra_, free_;
   std::vector<BoundaryFacet> boundary_;
   // Local number + 1 of each boundary vertex of the ball being linked, by vertex id (0: none),

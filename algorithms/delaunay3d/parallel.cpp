@@ -23,7 +23,6 @@
 #include "algorithms/delaunay3d/registry.hpp"
 #include "kernel/error.hpp"
 #include "kernel/stats.hpp"
-#include "mesh/memory_hints.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
 namespace dtlab {
@@ -194,8 +193,7 @@ class ParallelInsertion {
                        std::to_string(T3::kMaxTetrahedra) + " tetrahedra (32-bit facet handles)");
     if (begin + total > records_.capacity())
       records_.reserve(std::max(begin + total, records_.capacity() + records_.capacity() / 4));
-    populate_for_writing(records_.data() + begin, records_.data() + begin + total);  // one call, not a fault a page
-    records_.resize(begin + total);
+    records_.resize(begin + total);  // writes nothing: each kernel faults its own slots in
     for (unsigned k = 0; k < threads_; ++k) {
       if (give[k] == 0) continue;
       kernels_[k].give_slots(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(begin + give[k]));
