@@ -17,9 +17,9 @@
 #include <cstdint>
 #include <span>
 #include <utility>
-#include <vector>
 
 #include "kernel/error.hpp"
+#include "mesh/scratch_array.hpp"
 
 namespace dtlab {
 
@@ -88,12 +88,12 @@ template <class T>
 void permute_in_place(std::span<T> values, std::span<const std::uint32_t> order) {
   const std::size_t n = values.size();
   DTLAB_ASSERT(order.size() == n);
-  std::vector<std::uint32_t> destination(n, 0);
+  ScratchArray<std::uint32_t> destination(n);  // zeros: an order that is no permutation fails below
   for (std::size_t r = 0; r < n; ++r) {
     DTLAB_ASSERT(order[r] < n);
     destination[order[r]] = static_cast<std::uint32_t>(r);
   }
-  move_to_destinations(values, std::span<std::uint32_t>(destination));
+  move_to_destinations(values, destination.span());
 }
 
 }  // namespace dtlab
