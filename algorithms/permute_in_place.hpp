@@ -9,7 +9,8 @@
 // place, as American flag sort deals keys into buckets (McIlroy, Bostic, McIlroy, "Engineering
 // radix sort", Computing Systems 1993): 256 write positions that each advance through memory,
 // which the caches and prefetchers follow; then again inside each block, until a block fits the
-// caches and its cycles are cheap to follow.
+// caches and its cycles are cheap to follow. The blocks of the first deal are independent: with a
+// WorkerTeam they are finished on its threads (the result is the same for every thread count).
 #pragma once
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 #include <utility>
 
 #include "kernel/error.hpp"
+#include "kernel/worker_team.hpp"
 #include "mesh/scratch_array.hpp"
 
 namespace dtlab {
@@ -29,23 +31,13 @@ namespace detail {
 constexpr std::size_t kCycleBlock = 8192;
 constexpr std::size_t kDealBlocks = 256;
 
-// Positions [lo, hi) hold the elements whose destinations are in [lo, hi).
+// Positions [lo, hi), more than kCycleBlock of them, hold the elements whose destinations are in
+// [lo, hi). Deals them into blocks of `width` consecutive destinations (the last one shorter):
+// block b is [lo + b * width, lo + (b + 1) * width) ∩ [lo, hi), and since the destinations are a
+// permutation of [lo, hi), exactly its own elements fill it. Returns width.
 template <class T>
-void move_block_to_destinations(T* values, std::uint32_t* destination, std::size_t lo, std::size_t hi) {
+std::size_t deal_into_blocks(T* values, std::uint32_t* destination, std::size_t lo, std::size_t hi) {
   const std::size_t n = hi - lo;
-  if (n <= kCycleBlock) {
-    // Each swap puts one element where it goes, so at most n swaps in all.
-    for (std::size_t i = lo; i < hi; ++i)
-      while (destination[i] != i) {
-        const std::size_t to = destination[i];
-        DTLAB_ASSERT(lo <= to && to < hi && destination[to] != to);  // a permutation of [lo, hi)
-        std::swap(values[i], values[to]);
-        std::swap(destination[i], destination[to]);
-      }
-    return;
-  }
-  // Block b is [lo + b * width, lo + (b + 1) * width) ∩ [lo, hi): since the destinations are a
-  // permutation of [lo, hi), exactly its own elements fill it.
   const std::size_t width = (n + kDealBlocks - 1) / kDealBlocks;
   const std::size_t blocks = (n + width - 1) / width;
   std::array<std::size_t, kDealBlocks> next{};  // block b's first position not yet dealt
@@ -67,33 +59,62 @@ void move_block_to_destinations(T* values, std::uint32_t* destination, std::size
       std::swap(destination[i], destination[j]);
     }
   }
-  for (std::size_t b = 0; b < blocks; ++b)
-    move_block_to_destinations(values, destination, lo + b * width, std::min(hi, lo + (b + 1) * width));
+  return width;
+}
+
+// Positions [lo, hi) hold the elements whose destinations are in [lo, hi).
+template <class T>
+void move_block_to_destinations(T* values, std::uint32_t* destination, std::size_t lo, std::size_t hi) {
+  if (hi - lo <= kCycleBlock) {
+    // Each swap puts one element where it goes, so at most hi - lo swaps in all.
+    for (std::size_t i = lo; i < hi; ++i)
+      while (destination[i] != i) {
+        const std::size_t to = destination[i];
+        DTLAB_ASSERT(lo <= to && to < hi && destination[to] != to);  // a permutation of [lo, hi)
+        std::swap(values[i], values[to]);
+        std::swap(destination[i], destination[to]);
+      }
+    return;
+  }
+  const std::size_t width = deal_into_blocks(values, destination, lo, hi);
+  for (std::size_t b = lo; b < hi; b += width) move_block_to_destinations(values, destination, b, std::min(hi, b + width));
 }
 
 }  // namespace detail
 
 // Moves each values[i] to position destination[i], in place. destination must be a permutation
 // of 0..values.size()-1 (an assertion fails otherwise) and is consumed: afterwards it is the
-// identity. O(n log_256 n) moves, no scratch.
+// identity. O(n log_256 n) moves, no scratch. With `team`, the blocks of the first deal are
+// finished on its threads.
 template <class T>
-void move_to_destinations(std::span<T> values, std::span<std::uint32_t> destination) {
-  DTLAB_ASSERT(destination.size() == values.size());
-  detail::move_block_to_destinations(values.data(), destination.data(), 0, values.size());
+void move_to_destinations(std::span<T> values, std::span<std::uint32_t> destination, WorkerTeam* team = nullptr) {
+  const std::size_t n = values.size();
+  DTLAB_ASSERT(destination.size() == n);
+  if (team == nullptr || team->threads() == 1 || n <= detail::kCycleBlock) {
+    detail::move_block_to_destinations(values.data(), destination.data(), 0, n);
+    return;
+  }
+  const std::size_t width = detail::deal_into_blocks(values.data(), destination.data(), 0, n);
+  team->run((n + width - 1) / width, [&](std::size_t b, unsigned) {
+    detail::move_block_to_destinations(values.data(), destination.data(), b * width, std::min(n, (b + 1) * width));
+  });
 }
 
 // order must be a permutation of 0..values.size()-1. Afterwards values[r] is what
-// values[order[r]] was. n 32-bit words of scratch (the inverse of order).
+// values[order[r]] was. n 32-bit words of scratch (the inverse of order). With `team`, the
+// inverse is made and the blocks finished on its threads.
 template <class T>
-void permute_in_place(std::span<T> values, std::span<const std::uint32_t> order) {
+void permute_in_place(std::span<T> values, std::span<const std::uint32_t> order, WorkerTeam* team = nullptr) {
   const std::size_t n = values.size();
   DTLAB_ASSERT(order.size() == n);
   ScratchArray<std::uint32_t> destination(n);  // zeros: an order that is no permutation fails below
-  for (std::size_t r = 0; r < n; ++r) {
-    DTLAB_ASSERT(order[r] < n);
-    destination[order[r]] = static_cast<std::uint32_t>(r);
-  }
-  move_to_destinations(values, destination.span());
+  for_each_share(team, n, [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r < end; ++r) {
+      DTLAB_ASSERT(order[r] < n);
+      destination[order[r]] = static_cast<std::uint32_t>(r);
+    }
+  });
+  move_to_destinations(values, destination.span(), team);
 }
 
 }  // namespace dtlab

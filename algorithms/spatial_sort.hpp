@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "kernel/vec.hpp"
+#include "kernel/worker_team.hpp"
 
 namespace dtlab {
 
@@ -36,18 +37,24 @@ void hilbert_sort(std::span<const Vec2> points, std::span<std::uint32_t> ids);
 
 // hilbert_sort that also drops duplicates from `ids` on the way (no extra pass over the points):
 // of each group of equal points only the smallest id stays. Returns the dropped ids, ascending,
-// each with the id it duplicates: (dropped, kept). Ids must be below 2^31.
+// each with the id it duplicates: (dropped, kept). Ids must be below 2^31. With `team`, a large
+// sort shares its passes out among the team's threads; the result is the same.
 std::vector<std::pair<std::uint32_t, std::uint32_t>> hilbert_sort_unique(std::span<const Vec2> points,
-                                                                        std::vector<std::uint32_t>& ids);
+                                                                        std::vector<std::uint32_t>& ids,
+                                                                        WorkerTeam* team = nullptr);
 
 // Index of cell (x, y, z) of the 2^bits grid per axis (bits <= 10) along the 3D Hilbert curve
 // that starts at cell (0, 0, 0).
 std::uint32_t hilbert_index3(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits = 10) noexcept;
+// The same index computed bit by bit by Skilling's transposition, which defines the curve (the
+// one above reads tables derived from it): for tests.
+std::uint32_t hilbert_index3_skilling(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits = 10) noexcept;
 
 // The same for 3D points.
 void hilbert_sort(std::span<const Vec3> points, std::span<std::uint32_t> ids);
 std::vector<std::pair<std::uint32_t, std::uint32_t>> hilbert_sort_unique(std::span<const Vec3> points,
-                                                                        std::vector<std::uint32_t>& ids);
+                                                                        std::vector<std::uint32_t>& ids,
+                                                                        WorkerTeam* team = nullptr);
 
 // Every input index once: the distinct points (the smallest index of each coordinate tuple) in
 // Hilbert order, and the dropped duplicates (ascending) with the kept index each repeats. The
@@ -57,8 +64,8 @@ struct DistinctPoints {
   std::vector<std::uint32_t> duplicates;
   std::vector<std::uint32_t> duplicate_of;
 };
-DistinctPoints distinct_in_hilbert_order(std::span<const Vec2> points);
-DistinctPoints distinct_in_hilbert_order(std::span<const Vec3> points);
+DistinctPoints distinct_in_hilbert_order(std::span<const Vec2> points, WorkerTeam* team = nullptr);
+DistinctPoints distinct_in_hilbert_order(std::span<const Vec3> points, WorkerTeam* team = nullptr);
 
 // BRIO order of ids that are already in Hilbert order (hilbert_sort): a stable partition into
 // rounds keeps each round in Hilbert order. Rounds smaller than `first_round` are merged into

@@ -50,4 +50,19 @@ class WorkerTeam {
   std::vector<std::jthread> workers_;
 };
 
+// Runs fn(share, begin, end) for every share of [0, n) cut into `shares(team)` contiguous ranges,
+// in order (share k holds [n k / shares, n (k + 1) / shares)): one per thread of `team`, or a
+// single one on the calling thread when team is null. For loops whose result does not depend on
+// how they are cut (per-share partial results are combined by the caller, in share order).
+inline std::size_t shares(const WorkerTeam* team) noexcept { return team == nullptr ? 1 : team->threads(); }
+template <class F>
+void for_each_share(WorkerTeam* team, std::size_t n, F&& fn) {
+  const std::size_t count = shares(team);
+  if (count == 1) {
+    fn(std::size_t{0}, std::size_t{0}, n);
+    return;
+  }
+  team->run(count, [&](std::size_t k, unsigned) { fn(k, n * k / count, n * (k + 1) / count); });
+}
+
 }  // namespace dtlab

@@ -441,21 +441,23 @@ InsertionOrder::InsertionOrder(const PreparedPoints3& input)
   order_.insert(order_.end(), input.duplicates.begin(), input.duplicates.end());
 }
 
-void InsertionOrder::reorder(std::vector<Vec3>& points) {
+void InsertionOrder::reorder(std::vector<Vec3>& points, WorkerTeam* team) {
   DTLAB_ASSERT(points.size() == order_.size());
-  permute_in_place(std::span<Vec3>(points), order_);
+  permute_in_place(std::span<Vec3>(points), order_, team);
   const Sign orientation = orient3d(points[0], points[1], points[2], points[3]);
   DTLAB_ASSERT(orientation != Sign::Zero);
   positive_ = orientation == Sign::Positive;
 }
 
-void InsertionOrder::restore(std::vector<Vec3>& points, std::vector<T3::Record>& records) && {
-  for (T3::Record& r : records)
-    for (std::uint32_t& v : r.vertex)
-      if (v != kInf) v = order_[v];
+void InsertionOrder::restore(std::vector<Vec3>& points, std::vector<T3::Record>& records, WorkerTeam* team) && {
+  for_each_share(team, records.size(), [&](std::size_t, std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      for (std::uint32_t& v : records[t].vertex)
+        if (v != kInf) v = order_[v];
+  });
   // The point of rank r goes back to position order_[r]; order_ is spent doing it (no scratch
   // while the mesh is at its largest).
-  move_to_destinations(std::span<Vec3>(points), std::span<std::uint32_t>(order_));
+  move_to_destinations(std::span<Vec3>(points), std::span<std::uint32_t>(order_), team);
   order_.clear();
 }
 

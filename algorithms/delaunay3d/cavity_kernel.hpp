@@ -40,6 +40,7 @@
 #include "algorithms/delaunay3d/prepare.hpp"
 #include "kernel/predicates/static_filter.hpp"
 #include "kernel/vec.hpp"
+#include "kernel/worker_team.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
 namespace dtlab {
@@ -197,17 +198,19 @@ void compact_tetrahedra(std::vector<Tetrahedralization3::Record>& records, std::
 // 2003; each round in Hilbert order), the first simplex moved to ranks 0-3, are reordered in
 // place by reorder() (input.points may be that very array, registry.hpp), duplicates after the
 // distinct ones; restore() puts the points back and renames the vertices of `records` to input ids.
+// Given a WorkerTeam, both share their passes out among its threads (same result).
 class InsertionOrder {
  public:
   explicit InsertionOrder(const PreparedPoints3& input);
-  void reorder(std::vector<Vec3>& points);
+  void reorder(std::vector<Vec3>& points, WorkerTeam* team = nullptr);
   std::size_t distinct_count() const noexcept { return distinct_; }
   // After reorder(): whether (0, 1, 2, 3) is positive, else start with (0, 1, 3, 2).
   bool first_simplex_positive() const noexcept { return positive_; }
   // The input id of each insertion rank.
   std::span<const std::uint32_t> input_ids() const noexcept { return order_; }
   // Spends the order: std::move(order).restore(...), once, last.
-  void restore(std::vector<Vec3>& points, std::vector<Tetrahedralization3::Record>& records) &&;
+  void restore(std::vector<Vec3>& points, std::vector<Tetrahedralization3::Record>& records,
+               WorkerTeam* team = nullptr) &&;
 
  private:
   std::vector<std::uint32_t> order_;

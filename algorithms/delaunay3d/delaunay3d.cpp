@@ -5,6 +5,7 @@
 #include "algorithms/delaunay3d/prepare.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
 #include "kernel/error.hpp"
+#include "kernel/worker_team.hpp"
 
 namespace dtlab {
 
@@ -28,7 +29,11 @@ Delaunay3dResult delaunay3d(std::vector<Vec3>&& points, const Delaunay3dOptions&
 
   Delaunay3dResult result;
   result.tetrahedralization = Tetrahedralization3(std::move(points));
-  PreparedPoints3 prepared = prepare_points3(result.tetrahedralization.points(), options.seed);
+  PreparedPoints3 prepared = [&] {
+    if (!variant->threaded || options.threads == 1) return prepare_points3(result.tetrahedralization.points(), options.seed);
+    WorkerTeam team(options.threads);
+    return prepare_points3(result.tetrahedralization.points(), options.seed, &team);
+  }();
   if (prepared.degenerate_message.empty()) variant->run(prepared, options, result.tetrahedralization);
   result.duplicates = std::move(prepared.duplicates);
   result.duplicate_of = std::move(prepared.duplicate_of);

@@ -11,11 +11,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <exception>
 #include <limits>
 #include <span>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -23,6 +21,7 @@
 #include "algorithms/delaunay3d/registry.hpp"
 #include "kernel/error.hpp"
 #include "kernel/stats.hpp"
+#include "kernel/worker_team.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
 namespace dtlab {
@@ -47,8 +46,10 @@ constexpr std::size_t kQuantileSample = 16384;
 class ParallelInsertion {
  public:
   // Vertex ids below `vertices`, all among points [0, vertices).
-  ParallelInsertion(const Vec3* points, std::size_t vertices, std::vector<T3::Record>& records, unsigned threads)
-      : p_(points), records_(records), threads_(threads), shares_(threads), seeds_(threads) {
+  // One slab, kernel and seed per thread (`threads`), run on `team` (which may have fewer).
+  ParallelInsertion(const Vec3* points, std::size_t vertices, std::vector<T3::Record>& records, unsigned threads,
+                    WorkerTeam& team)
+      : p_(points), records_(records), threads_(threads), team_(team), shares_(threads), seeds_(threads) {
     kernels_.reserve(threads);
     const StaticBounds3 bounds = static_bounds3(std::span<const Vec3>(points, vertices));
     for (unsigned k = 0; k < threads; ++k) {
@@ -108,33 +109,20 @@ class ParallelInsertion {
       kernels_[k].restrict_to(slabs[k]);
     }
 
+    // Slab k's insertions on whichever thread of the team runs index k: the outcome depends only
+    // on k (its kernel, slots and seed), never on the thread.
     std::vector<PredicateStats> stats(threads_);
-    std::vector<std::exception_ptr> errors(threads_);
-    auto work = [&](unsigned k) {
-      try {
-        if (seeds_[k] == kNone) return;
-        CavityKernel& kernel = kernels_[k];
-        kernel.set_last(seeds_[k]);
-        // Each thread writes only its own entries of pending_.
-        for (const std::uint32_t i : shares_[k])
-          if (kernel.insert(pending_[i])) pending_[i] = kDone;
-      } catch (...) {
-        errors[k] = std::current_exception();
-      }
-    };
-    {
-      std::vector<std::jthread> workers;
-      workers.reserve(threads_ - 1);
-      for (unsigned k = 1; k < threads_; ++k)
-        workers.emplace_back([&work, &stats, k] {
-          work(k);
-          stats[k] = predicate_stats();  // a fresh thread's counts: all of them are this sub-round's
-        });
-      work(0);
-    }
-    for (unsigned k = 1; k < threads_; ++k) add_predicate_stats(stats[k]);
-    for (const std::exception_ptr& e : errors)
-      if (e) std::rethrow_exception(e);
+    team_.run(threads_, [&](std::size_t k, unsigned worker) {
+      if (seeds_[k] == kNone) return;
+      const PredicateStats before = predicate_stats();
+      CavityKernel& kernel = kernels_[k];
+      kernel.set_last(seeds_[k]);
+      // Each slab writes only its own entries of pending_.
+      for (const std::uint32_t i : shares_[k])
+        if (kernel.insert(pending_[i])) pending_[i] = kDone;
+      if (worker != 0) stats[k] = predicate_stats() - before;  // the caller's thread counts its own
+    });
+    for (const PredicateStats& s : stats) add_predicate_stats(s);
     restart_dead_walks();
   }
 
@@ -223,6 +211,7 @@ class ParallelInsertion {
   const Vec3* p_;
   std::vector<T3::Record>& records_;
   unsigned threads_;
+  WorkerTeam& team_;
   std::vector<CavityKernel> kernels_;
   std::vector<std::uint32_t> pending_;                // insertion ranks, Hilbert order; kDone once in
   std::vector<std::vector<std::uint32_t>> shares_;    // by thread: positions in pending_
@@ -240,6 +229,7 @@ void delaunay3d_parallel(PreparedPoints3& input, const Delaunay3dOptions& option
     return;
   }
   std::vector<Vec3>& points = tetrahedralization.mutable_points();
+  WorkerTeam team(options.threads);
   InsertionOrder order(input);
   // The BRIO rounds, as runs of increasing Hilbert rank (the first simplex's swaps split some).
   std::vector<std::uint32_t> run_ends;
@@ -252,7 +242,7 @@ void delaunay3d_parallel(PreparedPoints3& input, const Delaunay3dOptions& option
     run_ends.push_back(static_cast<std::uint32_t>(order.distinct_count()));
   }
   input.release_distinct();  // 4 bytes a point off the peak
-  order.reorder(points);
+  order.reorder(points, &team);
   const std::size_t m = order.distinct_count();
 
   std::vector<T3::Record>& records = tetrahedralization.mutable_records();
@@ -260,7 +250,7 @@ void delaunay3d_parallel(PreparedPoints3& input, const Delaunay3dOptions& option
   tetrahedralization.reserve_tetrahedra(std::min<std::size_t>(7 * m + m / 2 + 64, T3::kMaxTetrahedra));
 
   const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(options.threads, m));
-  ParallelInsertion insertion(points.data(), m, records, threads);
+  ParallelInsertion insertion(points.data(), m, records, threads, team);
   if (order.first_simplex_positive()) {
     insertion.start(0, 1, 2, 3);
   } else {
@@ -272,7 +262,7 @@ void delaunay3d_parallel(PreparedPoints3& input, const Delaunay3dOptions& option
     first = end;
   }
   insertion.finish();
-  std::move(order).restore(points, records);
+  std::move(order).restore(points, records, &team);
 }
 
 }  // namespace dtlab

@@ -31,7 +31,7 @@ std::array<std::size_t, 4> first_simplex(std::span<const Vec3> points, std::span
   return out;
 }
 
-PreparedPoints3 prepare_points3(std::span<const Vec3> points, std::uint64_t seed) {
+PreparedPoints3 prepare_points3(std::span<const Vec3> points, std::uint64_t seed, WorkerTeam* team) {
   if (points.size() > Tetrahedralization3::kMaxPoints)
     throw InputError(std::to_string(points.size()) + " points: more than the " +
                      std::to_string(Tetrahedralization3::kMaxPoints) + " a 3D tetrahedralization can index");
@@ -40,7 +40,7 @@ PreparedPoints3 prepare_points3(std::span<const Vec3> points, std::uint64_t seed
   PreparedPoints3 out;
   out.points = points;
   out.seed = seed;
-  DistinctPoints split = distinct_in_hilbert_order(points);
+  DistinctPoints split = distinct_in_hilbert_order(points, team);
   out.distinct = std::move(split.distinct);
   out.duplicates = std::move(split.duplicates);
   out.duplicate_of = std::move(split.duplicate_of);

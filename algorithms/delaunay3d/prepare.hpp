@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "kernel/vec.hpp"
+#include "kernel/worker_team.hpp"
 
 namespace dtlab {
 
@@ -35,8 +36,9 @@ struct PreparedPoints3 {
 
 // Throws InputError naming the first point with a coordinate that is NaN, infinite or outside
 // the supported range (coordinate_range.hpp), or when there are more than
-// Tetrahedralization3::kMaxPoints points.
-PreparedPoints3 prepare_points3(std::span<const Vec3> points, std::uint64_t seed);
+// Tetrahedralization3::kMaxPoints points. With `team`, the Hilbert sort runs on its threads (same
+// result).
+PreparedPoints3 prepare_points3(std::span<const Vec3> points, std::uint64_t seed, WorkerTeam* team = nullptr);
 
 // Positions in `ids` of four points spanning space: the first two, the first point off their
 // line, the first point off the plane of those three. Positions equal ids.size() where no such

@@ -31,7 +31,7 @@ constexpr std::array kVariants = {
     Delaunay3dVariant{"parallel",
                       "Delaunay kernel on several threads (--threads): each owns a slab of space (x, then y, then z "
                       "cuts), insertions whose walk or cavity leaves it deferred (after Marot-Pellerin-Remacle 2019)",
-                      &delaunay3d_parallel},
+                      &delaunay3d_parallel, true},
 };
 
 }  // namespace

@@ -36,6 +36,9 @@ struct Delaunay3dVariant {
   std::string_view name;
   std::string_view description;
   void (*run)(PreparedPoints3& input, const Delaunay3dOptions& options, Tetrahedralization3& tetrahedralization);
+  // Whether it runs on options.threads threads; the shared preparation (prepare_points3) then
+  // does too.
+  bool threaded = false;
 };
 
 // Every registered variant, in table order.

@@ -23,6 +23,7 @@
 #include "kernel/exact_rational.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/rounding.hpp"
+#include "kernel/worker_team.hpp"
 #include "mesh/element_sets3.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
@@ -260,6 +261,52 @@ TEST(SpatialSort3, HilbertIndexIsABijectionThroughAdjacentCells) {
       distance += std::abs(static_cast<int>(by_index[i][k]) - static_cast<int>(by_index[i - 1][k]));
     EXPECT_EQ(distance, 1) << "cells " << i - 1 << " and " << i << " not adjacent";
   }
+}
+
+// The table-driven index (hilbert_index3) against the bit-by-bit definition (Skilling's
+// transposition): every cell of the grids up to 2^5 a side, and random cells of the 2^10 grid.
+TEST(SpatialSort3, HilbertTablesAgreeWithSkillingsTransposition) {
+  for (int bits = 1; bits <= 5; ++bits) {
+    const std::uint32_t side = 1u << bits;
+    for (std::uint32_t x = 0; x < side; ++x)
+      for (std::uint32_t y = 0; y < side; ++y)
+        for (std::uint32_t z = 0; z < side; ++z)
+          ASSERT_EQ(hilbert_index3(x, y, z, bits), hilbert_index3_skilling(x, y, z, bits))
+              << "cell (" << x << ", " << y << ", " << z << ") of the 2^" << bits << " grid";
+  }
+  std::mt19937_64 rng(23);
+  for (int k = 0; k < 200000; ++k) {
+    const auto x = static_cast<std::uint32_t>(rng() & 1023u), y = static_cast<std::uint32_t>(rng() & 1023u),
+               z = static_cast<std::uint32_t>(rng() & 1023u);
+    ASSERT_EQ(hilbert_index3(x, y, z), hilbert_index3_skilling(x, y, z)) << "cell (" << x << ", " << y << ", " << z << ")";
+  }
+}
+
+// On a team of threads the sort (its passes over the whole set, and the shared cells sorted
+// again on several threads) gives the same order and the same duplicates as on one, on sets large
+// enough to take the threaded path: uniform, and clustered with repeated points (many cells
+// shared, sorted again).
+TEST(SpatialSort3, SortOnATeamEqualsTheSortOnOneThread) {
+  WorkerTeam team(2);
+  std::vector<Vec3> uniform_points = uniform(200000, 11);
+  std::vector<Vec3> clustered;
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> spread(0.0, 1e-7);
+  for (int c = 0; c < 40; ++c) {
+    const Vec3 centre{static_cast<double>(c % 7), static_cast<double>(c % 5), static_cast<double>(c % 3)};
+    for (int k = 0; k < 4000; ++k) clustered.push_back({centre.x + spread(rng), centre.y + spread(rng), centre.z + spread(rng)});
+  }
+  for (int k = 0; k < 5000; ++k) clustered.push_back(clustered[static_cast<std::size_t>(k * 31)]);
+  for (const std::vector<Vec3>* points : {&uniform_points, &clustered}) {
+    std::vector<std::uint32_t> alone(points->size()), shared;
+    std::iota(alone.begin(), alone.end(), 0u);
+    shared = alone;
+    const auto dropped_alone = hilbert_sort_unique(*points, alone);
+    const auto dropped_shared = hilbert_sort_unique(*points, shared, &team);
+    EXPECT_EQ(alone, shared);
+    EXPECT_EQ(dropped_alone, dropped_shared);
+  }
+  EXPECT_EQ(distinct_in_hilbert_order(std::span<const Vec3>(clustered), &team).duplicates.size(), 5000u);
 }
 
 TEST(SpatialSort3, SortUniqueDropsDuplicatesKeepingTheSmallestId) {

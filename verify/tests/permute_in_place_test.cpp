@@ -1,7 +1,8 @@
 // Reordering in place (algorithms/permute_in_place.hpp) against the obvious out-of-place
 // permutation, on sizes that finish by cycles alone, deal once, and deal twice, on random and on
 // structured permutations (identity, reversal, one long cycle); and a list that is not a
-// permutation raises the named internal error instead of looping or writing out of bounds.
+// permutation raises the named internal error instead of looping or writing out of bounds. With a
+// WorkerTeam (the blocks of the first deal finished on its threads) the results are the same.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 
 #include "algorithms/permute_in_place.hpp"
 #include "kernel/error.hpp"
+#include "kernel/worker_team.hpp"
 
 namespace dtlab {
 namespace {
@@ -44,14 +46,17 @@ std::vector<std::vector<std::uint32_t>> permutations_of(std::size_t n, std::mt19
 
 TEST(PermuteInPlace, EqualsTheOutOfPlacePermutation) {
   std::mt19937_64 rng(20261206);
+  WorkerTeam team(2);
   for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{1000}, std::size_t{8192},
                               std::size_t{8193}, std::size_t{100003}, std::size_t{3000017}}) {
     for (const std::vector<std::uint32_t>& order : permutations_of(n, rng)) {
-      std::vector<Value> values = values_of(n);
-      permute_in_place(std::span<Value>(values), std::span<const std::uint32_t>(order));
-      for (std::size_t r = 0; r < n; ++r) {
-        ASSERT_EQ(values[r].id, order[r]) << "n " << n << ", rank " << r;
-        ASSERT_EQ(values[r].payload, 0.5 * static_cast<double>(order[r]));
+      for (WorkerTeam* on : {static_cast<WorkerTeam*>(nullptr), &team}) {
+        std::vector<Value> values = values_of(n);
+        permute_in_place(std::span<Value>(values), std::span<const std::uint32_t>(order), on);
+        for (std::size_t r = 0; r < n; ++r) {
+          ASSERT_EQ(values[r].id, order[r]) << "n " << n << ", rank " << r << (on ? ", on a team" : "");
+          ASSERT_EQ(values[r].payload, 0.5 * static_cast<double>(order[r]));
+        }
       }
     }
   }
@@ -59,14 +64,18 @@ TEST(PermuteInPlace, EqualsTheOutOfPlacePermutation) {
 
 TEST(PermuteInPlace, MoveToDestinationsUndoesThePermutationAndSpendsIt) {
   std::mt19937_64 rng(7);
+  WorkerTeam team(2);
   for (const std::size_t n : {std::size_t{5}, std::size_t{8193}, std::size_t{600001}}) {
-    for (std::vector<std::uint32_t> order : permutations_of(n, rng)) {
-      std::vector<Value> values = values_of(n);
-      permute_in_place(std::span<Value>(values), std::span<const std::uint32_t>(order));
-      move_to_destinations(std::span<Value>(values), std::span<std::uint32_t>(order));
-      for (std::size_t i = 0; i < n; ++i) {
-        ASSERT_EQ(values[i].id, i) << "n " << n;
-        ASSERT_EQ(order[i], i) << "the destinations end as the identity";
+    for (const std::vector<std::uint32_t>& permutation : permutations_of(n, rng)) {
+      for (WorkerTeam* on : {static_cast<WorkerTeam*>(nullptr), &team}) {
+        std::vector<std::uint32_t> order = permutation;
+        std::vector<Value> values = values_of(n);
+        permute_in_place(std::span<Value>(values), std::span<const std::uint32_t>(order), on);
+        move_to_destinations(std::span<Value>(values), std::span<std::uint32_t>(order), on);
+        for (std::size_t i = 0; i < n; ++i) {
+          ASSERT_EQ(values[i].id, i) << "n " << n << (on ? ", on a team" : "");
+          ASSERT_EQ(order[i], i) << "the destinations end as the identity";
+        }
       }
     }
   }
@@ -87,6 +96,14 @@ TEST(PermuteInPlace, NotAPermutationIsAnInternalErrorNotAHang) {
     EXPECT_THROW(permute_in_place(std::span<Value>(values), std::span<const std::uint32_t>(beyond)), InternalError);
     values = values_of(n);
     EXPECT_THROW(move_to_destinations(std::span<Value>(values), std::span<std::uint32_t>(beyond)), InternalError);
+    // On a team, a destination twice inside the last block (finished on the last thread) reaches
+    // the caller as the same error.
+    WorkerTeam team(2);
+    std::vector<std::uint32_t> twice(n);
+    std::iota(twice.begin(), twice.end(), 0u);
+    twice[n - 3] = static_cast<std::uint32_t>(n - 2);
+    values = values_of(n);
+    EXPECT_THROW(move_to_destinations(std::span<Value>(values), std::span<std::uint32_t>(twice), &team), InternalError);
   }
 }
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "kernel/error.hpp"
@@ -58,6 +59,29 @@ TEST(WorkerTeam, ZeroThreadsIsRefused) {
     FAIL() << "a team of zero threads was made";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("threads"), std::string::npos) << e.what();
+  }
+}
+
+// for_each_share: contiguous shares in order covering [0, n) once, one per thread (one alone
+// without a team), share k = [n k / shares, n (k + 1) / shares).
+TEST(WorkerTeam, ForEachShareCoversTheRangeOnceInOrder) {
+  WorkerTeam team(2);
+  for (WorkerTeam* on : {static_cast<WorkerTeam*>(nullptr), &team}) {
+    for (const std::size_t n : {0u, 1u, 5u, 1001u}) {
+      const std::size_t count = shares(on);
+      EXPECT_EQ(count, on == nullptr ? 1u : team.threads());
+      std::vector<int> covered(n, 0);
+      std::vector<std::pair<std::size_t, std::size_t>> range(count, {n + 1, n + 1});
+      for_each_share(on, n, [&](std::size_t k, std::size_t begin, std::size_t end) {
+        range[k] = {begin, end};
+        for (std::size_t i = begin; i < end; ++i) ++covered[i];
+      });
+      for (std::size_t k = 0; k < count; ++k) {
+        EXPECT_EQ(range[k].first, n * k / count) << "share " << k << " of " << count << ", n " << n;
+        EXPECT_EQ(range[k].second, n * (k + 1) / count);
+      }
+      EXPECT_TRUE(std::all_of(covered.begin(), covered.end(), [](int c) { return c == 1; }));
+    }
   }
 }
 
