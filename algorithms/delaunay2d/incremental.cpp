@@ -12,6 +12,7 @@
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/memory_hints.hpp"
 #include "mesh/triangulation2.hpp"
 
 namespace dtlab {
@@ -199,8 +200,12 @@ class Inserter {
     count_ += 2;
     if (3 * count_ > vertices_.size()) {
       // Grow in chunks within the reserved capacity (v_ and n_ stay valid): the zeroing then
-      // lands on memory about to be written, and costs one call per chunk, not per point.
+      // lands on memory about to be written, and costs one call per chunk, not per point. Its
+      // pages are faulted in by one call each first, not one fault a page (a virtual machine's
+      // page faults are dear: see populate_for_writing).
       const std::size_t size = 3 * std::min(capacity_, count_ + kGrowthChunk);
+      populate_for_writing(vertices_.data() + vertices_.size(), vertices_.data() + size);
+      populate_for_writing(neighbours_.data() + neighbours_.size(), neighbours_.data() + size);
       vertices_.resize(size);
       neighbours_.resize(size);
     }
