@@ -289,18 +289,23 @@ class HilbertSorter {
     }
     std::array<double, Dim> lo, hi;
     for (int d = 0; d < Dim; ++d) lo[d] = hi[d] = coordinate(points_[ids[0]], d);
-    std::vector<std::array<double, Dim>> share_lo(shares(team), lo), share_hi(shares(team), hi);
-    for_each_share(team, n, [&](std::size_t k, std::size_t begin, std::size_t end) {
-      std::array<double, Dim>& l = share_lo[k];
-      std::array<double, Dim>& h = share_hi[k];
+    auto extend = [&](std::array<double, Dim>& l, std::array<double, Dim>& h, std::size_t begin, std::size_t end) {
       for (std::size_t j = begin; j < end; ++j)
         for (int d = 0; d < Dim; ++d) {
           const double c = coordinate(points_[ids[j]], d);
           l[d] = std::min(l[d], c), h[d] = std::max(h[d], c);
         }
-    });
-    for (std::size_t k = 0; k < share_lo.size(); ++k)
-      for (int d = 0; d < Dim; ++d) lo[d] = std::min(lo[d], share_lo[k][d]), hi[d] = std::max(hi[d], share_hi[k][d]);
+    };
+    if (team == nullptr) {
+      extend(lo, hi, 0, n);  // no per-share boxes: this runs once per shared cell of the recursion
+    } else {
+      std::vector<std::array<double, Dim>> share_lo(shares(team), lo), share_hi(shares(team), hi);
+      for_each_share(team, n, [&](std::size_t k, std::size_t begin, std::size_t end) {
+        extend(share_lo[k], share_hi[k], begin, end);
+      });
+      for (std::size_t k = 0; k < share_lo.size(); ++k)
+        for (int d = 0; d < Dim; ++d) lo[d] = std::min(lo[d], share_lo[k][d]), hi[d] = std::max(hi[d], share_hi[k][d]);
+    }
     if (lo == hi) {  // all duplicates of one point
       std::sort(ids.begin(), ids.end());
       for (std::size_t k = 1; k < n; ++k) drop(ids[k], ids[0]);
