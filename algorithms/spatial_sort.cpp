@@ -488,24 +488,69 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> hilbert_sort_unique(std::sp
   return sort_unique<HilbertSorter3>(points, ids, team);
 }
 
-std::vector<std::uint32_t> brio_order_of_sorted(std::span<const std::uint32_t> ids, std::uint64_t seed,
-                                                std::size_t first_round) {
+namespace {
+
+// The BRIO order of `ids` (in Hilbert order) into order[0, n), and into ranks[0, n) (unless
+// null) the position in `ids` of each, n > first_round >= 1.
+void brio_rounds(std::span<const std::uint32_t> ids, std::uint64_t seed, WorkerTeam* team, std::size_t first_round,
+                 std::uint32_t* order, std::uint32_t* ranks) {
   const std::size_t n = ids.size();
-  first_round = std::max<std::size_t>(first_round, 1);
-  if (n <= first_round) return {ids.begin(), ids.end()};
   // Round sizes about n/2, n/4, ...: the deepest level keeps at least `first_round` points.
   const int last_level = std::bit_width(n / first_round) - 1;
-  auto level_of = [&](std::uint32_t id) {
+  const auto rounds = static_cast<std::size_t>(last_level) + 1;
+  // Round of an id: the deepest level (smallest round) is round 0.
+  auto round_of = [&](std::uint32_t id) {
     const std::uint64_t r = mix64(seed + 0x9E3779B97F4A7C15ull * (std::uint64_t{id} + 1));
-    return std::min(std::countr_zero(r), last_level);
+    return static_cast<std::size_t>(last_level - std::min(std::countr_zero(r), last_level));
   };
-  // Stable counting sort: deepest level (smallest round) first.
-  std::vector<std::size_t> start(static_cast<std::size_t>(last_level) + 2, 0);
-  for (const std::uint32_t id : ids) ++start[static_cast<std::size_t>(last_level - level_of(id)) + 1];
-  for (std::size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
-  std::vector<std::uint32_t> order(n);
-  for (const std::uint32_t id : ids) order[start[static_cast<std::size_t>(last_level - level_of(id))]++] = id;
+  // Stable counting sort by round, each share of the ids counted and dealt by one thread: share
+  // s of round r starts after rounds < r and after the earlier shares' points of round r, so the
+  // order is the one-thread order whatever the number of shares.
+  const std::size_t share_count = shares(team);
+  std::vector<std::size_t> start(share_count * rounds, 0);  // [share * rounds + round]
+  for_each_share(team, n, [&](std::size_t s, std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) ++start[s * rounds + round_of(ids[k])];
+  });
+  std::size_t at = 0;
+  for (std::size_t r = 0; r < rounds; ++r)
+    for (std::size_t s = 0; s < share_count; ++s) at += std::exchange(start[s * rounds + r], at);
+  for_each_share(team, n, [&](std::size_t s, std::size_t begin, std::size_t end) {
+    std::size_t* next = &start[s * rounds];
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t to = next[round_of(ids[k])]++;
+      order[to] = ids[k];
+      if (ranks != nullptr) ranks[to] = static_cast<std::uint32_t>(k);
+    }
+  });
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> brio_order_of_sorted(std::span<const std::uint32_t> ids, std::uint64_t seed,
+                                                std::size_t first_round) {
+  first_round = std::max<std::size_t>(first_round, 1);
+  if (ids.size() <= first_round) return {ids.begin(), ids.end()};
+  std::vector<std::uint32_t> order(ids.size());
+  brio_rounds(ids, seed, nullptr, first_round, order.data(), nullptr);
   return order;
+}
+
+BrioOrder brio_order_of_sorted(std::span<const std::uint32_t> ids, std::uint64_t seed, WorkerTeam* team,
+                               bool with_ranks, std::size_t first_round) {
+  const std::size_t n = ids.size();
+  first_round = std::max<std::size_t>(first_round, 1);
+  BrioOrder out;
+  out.ids.resize(n);  // written once below, not zero-filled first
+  if (with_ranks) out.ranks.resize(n);
+  if (n <= first_round) {
+    std::copy(ids.begin(), ids.end(), out.ids.begin());
+    std::iota(out.ranks.begin(), out.ranks.end(), std::uint32_t{0});
+    return out;
+  }
+  populate_for_writing(out.ids.data(), out.ids.data() + n);  // one call, not a fault a page
+  populate_for_writing(out.ranks.data(), out.ranks.data() + out.ranks.size());
+  brio_rounds(ids, seed, team, first_round, out.ids.data(), with_ranks ? out.ranks.data() : nullptr);
+  return out;
 }
 
 std::vector<std::uint32_t> brio_order(std::span<const Vec2> points, std::span<const std::uint32_t> ids,

@@ -23,6 +23,7 @@
 
 #include "kernel/vec.hpp"
 #include "kernel/worker_team.hpp"
+#include "mesh/uninitialized_vector.hpp"
 
 namespace dtlab {
 
@@ -72,6 +73,15 @@ DistinctPoints distinct_in_hilbert_order(std::span<const Vec3> points, WorkerTea
 // the first one.
 std::vector<std::uint32_t> brio_order_of_sorted(std::span<const std::uint32_t> hilbert_sorted_ids,
                                                 std::uint64_t seed, std::size_t first_round = 64);
+
+// The same order (ids) dealt on the threads of `team` (same result), and if asked the position
+// in hilbert_sorted_ids of each (ranks: within a round they increase).
+struct BrioOrder {
+  UninitializedVector<std::uint32_t> ids;
+  UninitializedVector<std::uint32_t> ranks;  // empty unless asked for
+};
+BrioOrder brio_order_of_sorted(std::span<const std::uint32_t> hilbert_sorted_ids, std::uint64_t seed,
+                               WorkerTeam* team, bool with_ranks, std::size_t first_round = 64);
 
 // hilbert_sort, then brio_order_of_sorted.
 std::vector<std::uint32_t> brio_order(std::span<const Vec2> points, std::span<const std::uint32_t> ids,

@@ -95,6 +95,11 @@ bool CavityKernel::insert_as(std::uint32_t p) {
 
 void CavityKernel::give_slots(std::uint32_t begin, std::uint32_t end) {
   DTLAB_ASSERT(begin <= end && end <= records_.size());
+  // The rest of the old chunk becomes free slots, each written once: its pages not yet faulted in
+  // are, in one call (after a parallel round, a kernel that deferred many points hands back
+  // hundreds of thousands of slots never touched).
+  const std::size_t unpopulated = std::max(chunk_next_, populated_);
+  if (unpopulated < chunk_end_) populate_for_writing(records_.data() + unpopulated, records_.data() + chunk_end_);
   for (std::size_t s = chunk_next_; s < chunk_end_; ++s) {
     records_[s].vertex[0] = kNone;
     free_.push_back(static_cast<std::uint32_t>(s));
@@ -428,14 +433,25 @@ void compact_tetrahedra(std::vector<T3::Record>& records, std::vector<std::uint3
   records.resize(live);
 }
 
-InsertionOrder::InsertionOrder(const PreparedPoints3& input)
-    : order_(brio_order_of_sorted(input.distinct, input.seed)), distinct_(order_.size()) {
+InsertionOrder::InsertionOrder(const PreparedPoints3& input, WorkerTeam* team, bool find_runs) {
+  BrioOrder brio = brio_order_of_sorted(input.distinct, input.seed, team, find_runs);
+  order_ = std::move(brio.ids);
+  distinct_ = order_.size();
   // The first tetrahedron: the first two points, the first one off their line, the first one
   // off their plane, moved to the front of the order.
   const auto simplex = first_simplex(input.points, order_);
   DTLAB_ASSERT(distinct_ >= 4 && simplex[3] < distinct_);
-  std::swap(order_[2], order_[simplex[2]]);
-  std::swap(order_[3], order_[simplex[3]]);
+  for (const std::size_t k : {std::size_t{2}, std::size_t{3}}) {
+    std::swap(order_[k], order_[simplex[k]]);
+    if (find_runs) std::swap(brio.ranks[k], brio.ranks[simplex[k]]);
+  }
+  if (find_runs) {
+    // The runs of increasing Hilbert rank after the first simplex: the BRIO rounds, some split
+    // by the swaps above.
+    for (std::size_t r = 5; r < distinct_; ++r)
+      if (brio.ranks[r] < brio.ranks[r - 1]) run_ends_.push_back(static_cast<std::uint32_t>(r));
+    run_ends_.push_back(static_cast<std::uint32_t>(distinct_));
+  }
   if (input.duplicates.size() + distinct_ != input.points.size())
     throw InternalError("3D Delaunay kernel: distinct and duplicate points do not partition the input");
   order_.insert(order_.end(), input.duplicates.begin(), input.duplicates.end());

@@ -42,6 +42,7 @@
 #include "kernel/vec.hpp"
 #include "kernel/worker_team.hpp"
 #include "mesh/tetrahedralization3.hpp"
+#include "mesh/uninitialized_vector.hpp"
 
 namespace dtlab {
 
@@ -201,19 +202,26 @@ void compact_tetrahedra(std::vector<Tetrahedralization3::Record>& records, std::
 // Given a WorkerTeam, both share their passes out among its threads (same result).
 class InsertionOrder {
  public:
-  explicit InsertionOrder(const PreparedPoints3& input);
+  // With `team`, the BRIO order is dealt on its threads (same result); with find_runs,
+  // run_ends() is filled (a pass over 4 bytes a point more).
+  explicit InsertionOrder(const PreparedPoints3& input, WorkerTeam* team = nullptr, bool find_runs = false);
   void reorder(std::vector<Vec3>& points, WorkerTeam* team = nullptr);
   std::size_t distinct_count() const noexcept { return distinct_; }
   // After reorder(): whether (0, 1, 2, 3) is positive, else start with (0, 1, 3, 2).
   bool first_simplex_positive() const noexcept { return positive_; }
   // The input id of each insertion rank.
   std::span<const std::uint32_t> input_ids() const noexcept { return order_; }
+  // With find_runs: the ends of the runs of ranks [4, distinct_count()) in increasing Hilbert
+  // order, ascending, the last one distinct_count(): the BRIO rounds, some split by the first
+  // simplex's swaps. Else empty.
+  std::span<const std::uint32_t> run_ends() const noexcept { return run_ends_; }
   // Spends the order: std::move(order).restore(...), once, last.
   void restore(std::vector<Vec3>& points, std::vector<Tetrahedralization3::Record>& records,
                WorkerTeam* team = nullptr) &&;
 
  private:
-  std::vector<std::uint32_t> order_;
+  UninitializedVector<std::uint32_t> order_;
+  std::vector<std::uint32_t> run_ends_;
   std::size_t distinct_ = 0;
   bool positive_ = true;
 };

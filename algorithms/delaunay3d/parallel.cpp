@@ -95,12 +95,7 @@ class ParallelInsertion {
   void sub_round(double Vec3::*axis) {
     restart_dead_walks();
     const std::vector<SlabOwnership> slabs = cut_into_slabs(axis);
-    for (auto& share : shares_) share.clear();
-    for (std::size_t i = 0; i < pending_.size(); ++i) {
-      unsigned k = 0;
-      while (k + 1 < threads_ && !slabs[k].owns(pending_[i])) ++k;
-      shares_[k].push_back(static_cast<std::uint32_t>(i));
-    }
+    deal_into_slabs(slabs);
     hand_out_slots();
     for (unsigned k = 0; k < threads_; ++k) {
       kernels_[k].refresh_views();
@@ -124,6 +119,34 @@ class ParallelInsertion {
     });
     for (const PredicateStats& s : stats) add_predicate_stats(s);
     restart_dead_walks();
+  }
+
+  // shares_[k]: the positions in pending_ of slab k's points, in order. Counted and dealt in
+  // shares of pending_ on the team (each share's points of slab k after the earlier shares'), so
+  // the lists are the same for every team size.
+  void deal_into_slabs(const std::vector<SlabOwnership>& slabs) {
+    const auto slab_of = [&](std::uint32_t p) {
+      unsigned k = 0;
+      while (k + 1 < threads_ && !slabs[k].owns(p)) ++k;
+      return k;
+    };
+    const std::size_t parts = shares(&team_);
+    std::vector<std::size_t> next(parts * threads_, 0);  // [part * threads_ + slab]
+    for_each_share(&team_, pending_.size(), [&](std::size_t part, std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) ++next[part * threads_ + slab_of(pending_[i])];
+    });
+    for (unsigned k = 0; k < threads_; ++k) {
+      std::size_t at = 0;
+      for (std::size_t part = 0; part < parts; ++part) at += std::exchange(next[part * threads_ + k], at);
+      shares_[k].resize(at);
+    }
+    for_each_share(&team_, pending_.size(), [&](std::size_t part, std::size_t begin, std::size_t end) {
+      std::size_t* at = &next[part * threads_];
+      for (std::size_t i = begin; i < end; ++i) {
+        const unsigned k = slab_of(pending_[i]);
+        shares_[k][at[k]++] = static_cast<std::uint32_t>(i);
+      }
+    });
   }
 
   // One slab per thread across `axis`, cut at quantiles of the pending points' coordinates (of
@@ -230,17 +253,7 @@ void delaunay3d_parallel(PreparedPoints3& input, const Delaunay3dOptions& option
   }
   std::vector<Vec3>& points = tetrahedralization.mutable_points();
   WorkerTeam team(options.threads);
-  InsertionOrder order(input);
-  // The BRIO rounds, as runs of increasing Hilbert rank (the first simplex's swaps split some).
-  std::vector<std::uint32_t> run_ends;
-  {
-    std::vector<std::uint32_t> rank_by_id(points.size(), kNone);
-    for (std::size_t k = 0; k < input.distinct.size(); ++k) rank_by_id[input.distinct[k]] = static_cast<std::uint32_t>(k);
-    const auto ids = order.input_ids();
-    for (std::size_t r = 5; r < order.distinct_count(); ++r)
-      if (rank_by_id[ids[r]] < rank_by_id[ids[r - 1]]) run_ends.push_back(static_cast<std::uint32_t>(r));
-    run_ends.push_back(static_cast<std::uint32_t>(order.distinct_count()));
-  }
+  InsertionOrder order(input, &team, /*find_runs=*/true);
   input.release_distinct();  // 4 bytes a point off the peak
   order.reorder(points, &team);
   const std::size_t m = order.distinct_count();
@@ -257,7 +270,8 @@ void delaunay3d_parallel(PreparedPoints3& input, const Delaunay3dOptions& option
     insertion.start(0, 1, 3, 2);
   }
   std::uint32_t first = 4;
-  for (const std::uint32_t end : run_ends) {
+  // The BRIO rounds, as runs of increasing Hilbert rank.
+  for (const std::uint32_t end : order.run_ends()) {
     insertion.insert_run(first, end);
     first = end;
   }

@@ -309,6 +309,32 @@ TEST(SpatialSort3, SortOnATeamEqualsTheSortOnOneThread) {
   EXPECT_EQ(distinct_in_hilbert_order(std::span<const Vec3>(clustered), &team).duplicates.size(), 5000u);
 }
 
+// The BRIO order dealt on a team is the one-thread order, and the ranks it gives with it are
+// each id's position in the Hilbert order, increasing within each round.
+TEST(SpatialSort3, BrioOnATeamEqualsTheBrioOnOneThread) {
+  WorkerTeam team(3);
+  const std::vector<Vec3> points = uniform(100000, 21);
+  std::vector<std::uint32_t> sorted(points.size());
+  std::iota(sorted.begin(), sorted.end(), 0u);
+  hilbert_sort(points, sorted);
+  for (const std::size_t n : {std::size_t{0}, std::size_t{50}, std::size_t{64}, std::size_t{65}, std::size_t{4097},
+                              sorted.size()}) {
+    const std::span<const std::uint32_t> ids(sorted.data(), n);
+    const std::vector<std::uint32_t> alone = brio_order_of_sorted(ids, 9);
+    const BrioOrder shared = brio_order_of_sorted(ids, 9, &team, true);
+    ASSERT_EQ(alone.size(), n);
+    EXPECT_TRUE(std::equal(alone.begin(), alone.end(), shared.ids.begin(), shared.ids.end())) << n;
+    ASSERT_EQ(shared.ranks.size(), n);
+    std::size_t descents = 0;
+    for (std::size_t r = 0; r < n; ++r) {
+      EXPECT_EQ(shared.ids[r], ids[shared.ranks[r]]);
+      descents += r > 0 && shared.ranks[r] < shared.ranks[r - 1];
+    }
+    EXPECT_LE(descents, 20u) << n;  // one a round at most: log2(n / 64) + 1 rounds
+    EXPECT_TRUE(brio_order_of_sorted(ids, 9, nullptr, false).ranks.empty());
+  }
+}
+
 TEST(SpatialSort3, SortUniqueDropsDuplicatesKeepingTheSmallestId) {
   std::vector<Vec3> P = uniform(5000, 3);
   for (int k = 0; k < 300; ++k) P.push_back(P[static_cast<std::size_t>(k * 7)]);

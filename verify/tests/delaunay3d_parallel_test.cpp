@@ -14,7 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/delaunay3d/cavity_kernel.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
+#include "algorithms/delaunay3d/prepare.hpp"
+#include "kernel/worker_team.hpp"
 #include "kernel/error.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
@@ -187,6 +190,37 @@ TEST(Delaunay3dParallel, StorageOrderDeterministicForAThreadCount) {
                              return x.vertex == y.vertex && x.neighbour == y.neighbour;
                            }))
         << "threads " << threads;
+  }
+}
+
+// The runs of increasing Hilbert rank the parallel variant inserts by: every place in the
+// insertion order where the Hilbert rank goes down, found here from the Hilbert order itself,
+// on input whose first simplex is not its first points (collinear and coplanar starts).
+TEST(Delaunay3dParallel, RunEndsAreTheDescentsOfTheHilbertRank) {
+  WorkerTeam team(2);
+  std::vector<std::vector<Vec3>> inputs;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  inputs.emplace_back();
+  for (int k = 0; k < 30000; ++k) inputs.back().push_back({u(rng), u(rng), u(rng)});
+  inputs.emplace_back();  // most points on one line, a few on a plane, a few off it
+  for (int k = 0; k < 20000; ++k) inputs.back().push_back({u(rng), 0.0, 0.0});
+  for (int k = 0; k < 20; ++k) inputs.back().push_back({u(rng), u(rng), 0.0});
+  for (int k = 0; k < 20; ++k) inputs.back().push_back({u(rng), u(rng), u(rng)});
+  for (const std::vector<Vec3>& points : inputs) {
+    const PreparedPoints3 input = prepare_points3(points, 7, &team);
+    const InsertionOrder order(input, &team, true);
+    std::vector<std::uint32_t> rank_by_id(points.size(), T3::kNone);
+    for (std::size_t k = 0; k < input.distinct.size(); ++k) rank_by_id[input.distinct[k]] = static_cast<std::uint32_t>(k);
+    std::vector<std::uint32_t> expected;
+    const auto ids = order.input_ids();
+    for (std::size_t r = 5; r < order.distinct_count(); ++r)
+      if (rank_by_id[ids[r]] < rank_by_id[ids[r - 1]]) expected.push_back(static_cast<std::uint32_t>(r));
+    expected.push_back(static_cast<std::uint32_t>(order.distinct_count()));
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(), order.run_ends().begin(), order.run_ends().end()));
+    EXPECT_TRUE(InsertionOrder(input).run_ends().empty());
+    const InsertionOrder alone(input, nullptr, true);
+    EXPECT_TRUE(std::equal(ids.begin(), ids.end(), alone.input_ids().begin(), alone.input_ids().end()));
   }
 }
 
