@@ -81,6 +81,27 @@ TEST(PermuteInPlace, MoveToDestinationsUndoesThePermutationAndSpendsIt) {
   }
 }
 
+// Halving on the team before the parts are finished (swap_across_halves), one to three levels
+// deep (8 parts on a team of 2: the split does not depend on the team's size), on permutations
+// whose crossing elements are all, none, or a random half.
+TEST(PermuteInPlace, HalvingOnATeamThenPartsEqualsOneThread) {
+  std::mt19937_64 rng(11);
+  WorkerTeam team(2);
+  for (const std::size_t n : {std::size_t{8193}, std::size_t{50001}, std::size_t{300007}}) {
+    for (const std::vector<std::uint32_t>& permutation : permutations_of(n, rng)) {
+      for (const unsigned levels : {1u, 2u, 3u}) {
+        std::vector<std::uint32_t> destination = permutation;
+        std::vector<Value> values = values_of(n);
+        detail::move_to_destinations_in_parts(values.data(), destination.data(), n, team, levels);
+        for (std::size_t i = 0; i < n; ++i) {
+          ASSERT_EQ(permutation[values[i].id], i) << "n " << n << ", levels " << levels;
+          ASSERT_EQ(destination[i], i);
+        }
+      }
+    }
+  }
+}
+
 TEST(PermuteInPlace, NotAPermutationIsAnInternalErrorNotAHang) {
   for (const std::size_t n : {std::size_t{10}, std::size_t{50000}}) {
     std::vector<std::uint32_t> order(n);
