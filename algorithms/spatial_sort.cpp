@@ -7,6 +7,7 @@
 #include <bit>
 #include <numeric>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "kernel/error.hpp"
@@ -267,7 +268,9 @@ class HilbertSorter {
                 WorkerTeam* team = nullptr)
       : points_(points), duplicates_(duplicates), team_(team) {}
 
-  void sort(std::span<std::uint32_t> ids) {
+  // With positions_are_ids, ids holds 0, 1, ..., n - 1: the sorted keys' position fields are
+  // then the ids themselves, which saves a copy of the ids and a gather of random reads.
+  void sort(std::span<std::uint32_t> ids, bool positions_are_ids = false) {
     const std::size_t n = ids.size();
     WorkerTeam* const team = n >= kParallelThreshold ? team_ : nullptr;
     if (n <= 1) return;
@@ -332,13 +335,19 @@ class HilbertSorter {
     } else {
       radix_sort_upper32(keys_, scratch_, team);
     }
-    resize_for_bulk(copy_, n);
-    for_each_share(team, n, [&](std::size_t, std::size_t begin, std::size_t end) {
-      std::copy(ids.begin() + begin, ids.begin() + end, copy_.begin() + begin);
-    });
-    for_each_share(team, n, [&](std::size_t, std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) ids[k] = copy_[keys_[k] & 0xFFFFFFFFu];
-    });
+    if (positions_are_ids) {
+      for_each_share(team, n, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) ids[k] = static_cast<std::uint32_t>(keys_[k]);
+      });
+    } else {
+      resize_for_bulk(copy_, n);
+      for_each_share(team, n, [&](std::size_t, std::size_t begin, std::size_t end) {
+        std::copy(ids.begin() + begin, ids.begin() + end, copy_.begin() + begin);
+      });
+      for_each_share(team, n, [&](std::size_t, std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) ids[k] = copy_[keys_[k] & 0xFFFFFFFFu];
+      });
+    }
     // Runs of equal keys share one cell: sort them again on their own bounding box. Collect the
     // runs first, since the recursion reuses the buffers.
     std::vector<std::pair<std::size_t, std::size_t>> runs;
@@ -453,12 +462,13 @@ namespace {
 
 template <class Sorter, class Point>
 std::vector<std::pair<std::uint32_t, std::uint32_t>> sort_unique(std::span<const Point> points,
-                                                                 std::vector<std::uint32_t>& ids, WorkerTeam* team) {
+                                                                 std::vector<std::uint32_t>& ids, WorkerTeam* team,
+                                                                 bool positions_are_ids = false) {
   for (const std::uint32_t id : ids)
     if (id >= kDroppedId) throw InternalError("hilbert_sort_unique: id " + std::to_string(id) + " above 2^31 - 1");
   std::vector<std::pair<std::uint32_t, std::uint32_t>> duplicates;
   Sorter sorter(points, &duplicates, team);
-  sorter.sort(ids);
+  sorter.sort(ids, positions_are_ids);
   if (!duplicates.empty()) std::erase_if(ids, [](std::uint32_t id) { return (id & kDroppedId) != 0; });
   std::sort(duplicates.begin(), duplicates.end());
   return duplicates;
@@ -574,7 +584,8 @@ DistinctPoints distinct_in_hilbert_order_impl(std::span<const P> points, WorkerT
   out.distinct.reserve(points.size());  // written once, not zero-filled first
   populate_for_writing(out.distinct.data(), out.distinct.data() + points.size());  // one call, not a fault a page
   for (std::size_t i = 0; i < points.size(); ++i) out.distinct.push_back(static_cast<std::uint32_t>(i));
-  const auto dropped = hilbert_sort_unique(points, out.distinct, team);
+  using Sorter = std::conditional_t<std::is_same_v<P, Vec2>, HilbertSorter2, HilbertSorter3>;
+  const auto dropped = sort_unique<Sorter>(points, out.distinct, team, /*positions_are_ids=*/true);
   out.duplicates.reserve(dropped.size());
   out.duplicate_of.reserve(dropped.size());
   for (const auto& [duplicate, original] : dropped) {

@@ -305,7 +305,29 @@ TEST(SpatialSort3, SortOnATeamEqualsTheSortOnOneThread) {
     const auto dropped_shared = hilbert_sort_unique(*points, shared, &team);
     EXPECT_EQ(alone, shared);
     EXPECT_EQ(dropped_alone, dropped_shared);
+    // distinct_in_hilbert_order sorts the positions themselves (no gather of ids): same order.
+    for (WorkerTeam* on : {static_cast<WorkerTeam*>(nullptr), &team}) {
+      const DistinctPoints split = distinct_in_hilbert_order(std::span<const Vec3>(*points), on);
+      EXPECT_EQ(split.distinct, alone);
+      ASSERT_EQ(split.duplicates.size(), dropped_alone.size());
+      for (std::size_t k = 0; k < dropped_alone.size(); ++k) {
+        EXPECT_EQ(split.duplicates[k], dropped_alone[k].first);
+        EXPECT_EQ(split.duplicate_of[k], dropped_alone[k].second);
+      }
+    }
   }
+  std::vector<Vec2> plane(100000);
+  std::mt19937_64 rng2(8);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (Vec2& p : plane) p = {u(rng2), u(rng2)};
+  plane[99999] = plane[12];
+  std::vector<std::uint32_t> plane_ids(plane.size());
+  std::iota(plane_ids.begin(), plane_ids.end(), 0u);
+  const auto plane_dropped = hilbert_sort_unique(plane, plane_ids);
+  const DistinctPoints plane_split = distinct_in_hilbert_order(std::span<const Vec2>(plane), &team);
+  EXPECT_EQ(plane_split.distinct, plane_ids);
+  ASSERT_EQ(plane_dropped.size(), 1u);
+  EXPECT_EQ(plane_split.duplicates, std::vector<std::uint32_t>{99999});
   EXPECT_EQ(distinct_in_hilbert_order(std::span<const Vec3>(clustered), &team).duplicates.size(), 5000u);
 }
 
