@@ -31,9 +31,12 @@ inline bool coordinate_in_range(double v) noexcept {
 // Why v is refused ("NaN", "infinite", "too large (...)", "too small (...)"), or "" if in range.
 std::string coordinate_problem(double v);
 
+class WorkerTeam;
+
 // Throw InputError naming the first point (0-based index) with a coordinate out of range.
-// `what` names the input in the message, e.g. "input point" or a file name.
-void check_coordinates(std::span<const Vec2> points, const std::string& what = "point");
-void check_coordinates(std::span<const Vec3> points, const std::string& what = "point");
+// `what` names the input in the message, e.g. "input point" or a file name. With `team`, the
+// points are scanned in shares on its threads (the same point is named).
+void check_coordinates(std::span<const Vec2> points, const std::string& what = "point", WorkerTeam* team = nullptr);
+void check_coordinates(std::span<const Vec3> points, const std::string& what = "point", WorkerTeam* team = nullptr);
 
 }  // namespace dtlab

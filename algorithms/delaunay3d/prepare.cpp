@@ -35,7 +35,7 @@ PreparedPoints3 prepare_points3(std::span<const Vec3> points, std::uint64_t seed
   if (points.size() > Tetrahedralization3::kMaxPoints)
     throw InputError(std::to_string(points.size()) + " points: more than the " +
                      std::to_string(Tetrahedralization3::kMaxPoints) + " a 3D tetrahedralization can index");
-  check_coordinates(points, "point");
+  check_coordinates(points, "point", team);
 
   PreparedPoints3 out;
   out.points = points;

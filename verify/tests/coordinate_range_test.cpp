@@ -13,6 +13,7 @@
 
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
+#include "kernel/worker_team.hpp"
 
 namespace {
 
@@ -139,13 +140,17 @@ RC_GTEST_PROP(CoordinateRange, AgreesWithTheExponentDefinition, (std::vector<std
     if (!in_range_by_exponent(points[i].x) || !in_range_by_exponent(points[i].y) ||
         !in_range_by_exponent(points[i].z))
       first_bad = i;
-  try {
-    dtlab::check_coordinates(std::span<const Vec3>(points));
-    RC_ASSERT(first_bad == points.size());
-  } catch (const InputError& e) {
-    RC_ASSERT(first_bad < points.size());
-    RC_ASSERT(e.items() == std::vector<std::uint64_t>{first_bad});
-    RC_ASSERT(std::string(e.what()).find("point " + std::to_string(first_bad) + ":") != std::string::npos);
+  // On one thread and in shares on a team (every share may hold bad points): the same point.
+  static dtlab::WorkerTeam team(2);
+  for (dtlab::WorkerTeam* on : {static_cast<dtlab::WorkerTeam*>(nullptr), &team}) {
+    try {
+      dtlab::check_coordinates(std::span<const Vec3>(points), "point", on);
+      RC_ASSERT(first_bad == points.size());
+    } catch (const InputError& e) {
+      RC_ASSERT(first_bad < points.size());
+      RC_ASSERT(e.items() == std::vector<std::uint64_t>{first_bad});
+      RC_ASSERT(std::string(e.what()).find("point " + std::to_string(first_bad) + ":") != std::string::npos);
+    }
   }
 }
 
