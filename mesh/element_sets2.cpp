@@ -4,6 +4,7 @@
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/navigation2.hpp"
 
 namespace dtlab {
 
@@ -17,13 +18,6 @@ std::uint32_t index_of(const T2& tri, std::uint32_t t, std::uint32_t v) {
   return T2::kNone;
 }
 
-// The triangle after t counter-clockwise around its vertex i: across the edge that enters i.
-std::uint32_t turn_ccw(const T2& tri, std::uint32_t t, std::uint32_t i, std::uint32_t& i_next) {
-  const std::uint32_t g = tri.twin(T2::half_edge(t, (i + 1) % 3));
-  i_next = (T2::index_in_triangle(g) + 1) % 3;  // g starts at the vertex
-  return T2::triangle_of(g);
-}
-
 // a, s, q collinear: does a lie on the same side of s as q?
 bool same_direction(const Vec2& s, const Vec2& a, const Vec2& q) {
   if (s.x != q.x) return (a.x > s.x) == (q.x > s.x);
@@ -32,12 +26,12 @@ bool same_direction(const Vec2& s, const Vec2& a, const Vec2& q) {
 
 }  // namespace
 
-std::vector<std::uint32_t> vertex_triangles(const Triangulation2& tri) {
+std::vector<std::uint32_t> vertex_triangles(const Triangulation2& tri, bool finite_first) {
   std::vector<std::uint32_t> out(tri.point_count(), T2::kNone);
   const auto count = static_cast<std::uint32_t>(tri.triangle_count());
-  for (int pass = 0; pass < 2; ++pass) {  // finite triangles first, ghosts fill the gaps
+  for (int pass = 0; pass < (finite_first ? 2 : 1); ++pass) {  // finite first: ghosts fill the gaps
     for (std::uint32_t t = 0; t < count; ++t) {
-      if (tri.is_ghost(t) != (pass == 1)) continue;
+      if (finite_first && tri.is_ghost(t) != (pass == 1)) continue;
       for (std::uint32_t i = 0; i < 3; ++i) {
         const std::uint32_t v = tri.vertex(t, i);
         if (v != T2::kInfinite && v < out.size() && out[v] == T2::kNone) out[v] = t;
@@ -51,16 +45,14 @@ std::vector<std::uint32_t> ball(const Triangulation2& tri, std::uint32_t triangl
   if (triangle >= tri.triangle_count() || index_of(tri, triangle, v) == T2::kNone)
     throw InternalError("ball: triangle " + std::to_string(triangle) + " does not have vertex " + std::to_string(v));
   std::vector<std::uint32_t> out;
-  std::uint32_t t = triangle, i = index_of(tri, triangle, v);
-  do {
-    out.push_back(t);
+  nav2::for_each_in_ball(tri, T2::half_edge(triangle, index_of(tri, triangle, v)), [&](std::uint32_t h) {
+    if (tri.vertices()[h] != v)
+      throw InternalError("ball of vertex " + std::to_string(v) + ": twin in triangle " +
+                          std::to_string(T2::triangle_of(h)) + " lacks the vertex (broken adjacency)");
+    out.push_back(T2::triangle_of(h));
     if (out.size() > tri.triangle_count())
       throw InternalError("ball of vertex " + std::to_string(v) + " does not close (broken adjacency)");
-    t = turn_ccw(tri, t, i, i);
-    if (tri.vertex(t, i) != v)
-      throw InternalError("ball of vertex " + std::to_string(v) + ": twin in triangle " + std::to_string(t) +
-                          " lacks the vertex (broken adjacency)");
-  } while (t != triangle);
+  });
   return out;
 }
 
@@ -119,7 +111,8 @@ Pipe2 pipe(const Triangulation2& tri, std::uint32_t triangle, std::uint32_t p, s
           break;
         }
       }
-      t = turn_ccw(tri, t, i, i);
+      const std::uint32_t h = nav2::turn_ccw(tri, T2::half_edge(t, i));
+      t = T2::triangle_of(h), i = T2::index_in_triangle(h);
     } while (t != first);
     if (moved_on) continue;
     if (crossing == T2::kNone)

@@ -11,9 +11,10 @@
 
 namespace dtlab {
 
-// For each vertex id, one triangle incident to it (ghosts only if no finite one is), or
-// Triangulation2::kNone for points that no triangle uses (duplicates). One pass, O(size).
-std::vector<std::uint32_t> vertex_triangles(const Triangulation2& tri);
+// For each vertex id, the first triangle in storage order incident to it (with finite_first,
+// ghosts only if no finite one is), or Triangulation2::kNone for points that no triangle uses
+// (duplicates). O(size).
+std::vector<std::uint32_t> vertex_triangles(const Triangulation2& tri, bool finite_first = true);
 
 // The ball of vertex v: every triangle incident to v, ghosts included, counter-clockwise around v
 // starting from `triangle` (which must have v as a vertex).

@@ -9,6 +9,8 @@
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/edge_key.hpp"
+#include "mesh/element_sets2.hpp"
+#include "mesh/navigation2.hpp"
 
 namespace dtlab {
 
@@ -27,19 +29,14 @@ Mesh2::Mesh2(const Triangulation2& tri, std::span<const int> triangle_refs, std:
   points_.assign(tri.points().begin(), tri.points().end());
   metrics_.assign(n, metric);
   vertex_flags_.assign(n, kFixed);
-  vertex_triangle_.assign(n, kNone);
+  vertex_triangle_ = vertex_triangles(tri, /*finite_first=*/false);
   vertices_ = tri.vertices();
   neighbours_ = tri.neighbours();
   refs_.assign(triangle_refs.begin(), triangle_refs.end());
   constrained_.assign(vertices_.size(), 0);
   edge_refs_.assign(vertices_.size(), 0);
-  for (std::uint32_t t = 0; t < nt; ++t) {
+  for (std::uint32_t t = 0; t < nt; ++t)
     if (is_ghost(t)) refs_[t] = kExterior;
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t v = vertices_[3 * t + i];
-      if (v != kInfinite && vertex_triangle_[v] == kNone) vertex_triangle_[v] = t;
-    }
-  }
   // Vertices no triangle uses (duplicates of the input) are dead slots.
   for (std::uint32_t v = 0; v < n; ++v) {
     if (vertex_triangle_[v] == kNone) {
@@ -144,15 +141,11 @@ void Mesh2::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
     if (vertices_[3 * t0 + i] == v) h0 = 3 * t0 + i;
   }
   DTLAB_ASSERT(h0 != kNone);
-  // Counter-clockwise around v: across next(h) (the edge ending at v), then the half-edge opposite
-  // v in the triangle there is next(twin(next(h))).
-  std::uint32_t h = h0;
   const std::size_t bound = live_triangle_count() + 1;
-  do {
+  nav2::for_each_in_ball(*this, h0, [&](std::uint32_t h) {
     out.push_back(h);
     if (out.size() > bound) throw InternalError("Mesh2::ball: the triangles around vertex " + std::to_string(v) + " do not close");
-    h = next(neighbours_[next(h)]);
-  } while (h != h0);
+  });
 }
 
 std::uint32_t Mesh2::find_half_edge(std::uint32_t u, std::uint32_t v) const {

@@ -12,6 +12,7 @@
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/navigation2.hpp"
 
 namespace dtlab {
 
@@ -116,14 +117,15 @@ void ConstrainedMesh2::write_triangle(std::uint32_t t, std::uint32_t a, std::uin
 std::uint32_t ConstrainedMesh2::find_half_edge(std::uint32_t u, std::uint32_t v) const {
   const std::uint32_t first = vtri_[u];
   if (first == kNone) return kNone;
-  std::uint32_t t = first, i = index_of(t, u);
+  const std::uint32_t i0 = index_of(first, u);
+  DTLAB_ASSERT(i0 != kNone);
+  const std::uint32_t h0 = T2::half_edge(first, i0);  // opposite u
+  std::uint32_t h = h0;
   const std::size_t bound = tri_.triangle_count() + 1;
   for (std::size_t k = 0; k < bound; ++k) {
-    DTLAB_ASSERT(i != kNone);
-    if (tri_.vertex(t, (i + 1) % 3) == v) return T2::half_edge(t, (i + 2) % 3);
-    const std::uint32_t g = tri_.twin(T2::half_edge(t, (i + 1) % 3));
-    t = T2::triangle_of(g), i = (T2::index_in_triangle(g) + 1) % 3;
-    if (t == first) return kNone;
+    if (tri_.origin(h) == v) return T2::prev(h);  // u -> origin(h)
+    h = nav2::turn_ccw(tri_, h);
+    if (h == h0) return kNone;
   }
   throw InternalError("constrained mesh: the ball of vertex " + std::to_string(u) + " does not close");
 }
@@ -162,8 +164,8 @@ ConstrainedMesh2::SegmentWalk ConstrainedMesh2::walk(std::uint32_t s, std::uint3
         break;
       }
     }
-    const std::uint32_t g = tri_.twin(T2::half_edge(t, (i + 1) % 3));
-    t = T2::triangle_of(g), i = (T2::index_in_triangle(g) + 1) % 3;
+    const std::uint32_t h = nav2::turn_ccw(tri_, T2::half_edge(t, i));
+    t = T2::triangle_of(h), i = T2::index_in_triangle(h);
     if (t == first) throw InternalError("segment walk: no triangle around vertex " + std::to_string(s) +
                                         " faces vertex " + std::to_string(q));
   }
