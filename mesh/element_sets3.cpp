@@ -7,6 +7,7 @@
 #include "kernel/error.hpp"
 #include "kernel/intersections.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/navigation3.hpp"
 #include "mesh/vertex_buckets.hpp"
 
 namespace dtlab {
@@ -21,23 +22,14 @@ std::uint32_t index_of(const T3& tet, std::uint32_t t, std::uint32_t v) {
   return T3::kNone;
 }
 
-// Is (i0, i1, i2, i3), a permutation of 0..3, even?
-bool even_permutation(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, std::uint32_t i3) {
-  const std::uint32_t p[4] = {i0, i1, i2, i3};
-  int inversions = 0;
-  for (int x = 0; x < 4; ++x)
-    for (int y = x + 1; y < 4; ++y) inversions += p[x] > p[y];
-  return inversions % 2 == 0;
-}
-
 }  // namespace
 
-std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet) {
+std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet, bool finite_first) {
   std::vector<std::uint32_t> out(tet.point_count(), T3::kNone);
   const auto count = static_cast<std::uint32_t>(tet.tetrahedron_count());
-  for (int pass = 0; pass < 2; ++pass) {  // finite tetrahedra first, ghosts fill the gaps
+  for (int pass = 0; pass < (finite_first ? 2 : 1); ++pass) {  // finite first: ghosts fill the gaps
     for (std::uint32_t t = 0; t < count; ++t) {
-      if (tet.is_ghost(t) != (pass == 1)) continue;
+      if (finite_first && tet.is_ghost(t) != (pass == 1)) continue;
       for (std::uint32_t i = 0; i < 4; ++i) {
         const std::uint32_t v = tet.vertex(t, i);
         if (v != T3::kInfinite && v < out.size() && out[v] == T3::kNone) out[v] = t;
@@ -68,19 +60,13 @@ void find_in_mesh(const Tetrahedralization3& tet, std::span<const std::array<std
   std::uint32_t stamp = 0;
   for (std::uint32_t u = 0; u < n; ++u) {
     if (start[u] == start[u + 1] || incident[u] == T3::kNone) continue;
-    // The ball of u, breadth-first through the facets holding u (bounded by the tetrahedra).
     ++stamp;
-    found.assign(1, incident[u]);
-    mark[incident[u]] = stamp;
-    for (std::size_t k = 0; k < found.size(); ++k) {
-      if (found.size() > count) throw InternalError("find_in_mesh: a vertex ball exceeds the mesh");
-      const std::uint32_t t = found[k];
-      for (std::uint32_t i = 0; i < 4; ++i) {
-        if (tet.vertex(t, i) == u) continue;
-        const std::uint32_t a = tet.adjacent(t, i);
-        if (mark[a] != stamp) mark[a] = stamp, found.push_back(a);
-      }
-    }
+    nav3::ball(tet, u, incident[u], found, [&](std::uint32_t t) {
+      if (mark[t] == stamp) return false;
+      if (found.size() >= count) throw InternalError("find_in_mesh: a vertex ball exceeds the mesh");
+      mark[t] = stamp;
+      return true;
+    });
     const auto holds = [&](std::uint32_t t, std::uint32_t v) {
       return tet.vertex(t, 0) == v || tet.vertex(t, 1) == v || tet.vertex(t, 2) == v || tet.vertex(t, 3) == v;
     };
@@ -105,23 +91,22 @@ std::vector<std::uint32_t> ball(const Tetrahedralization3& tet, std::uint32_t te
   if (tetrahedron >= tet.tetrahedron_count() || index_of(tet, tetrahedron, v) == T3::kNone)
     throw InternalError("ball: tetrahedron " + std::to_string(tetrahedron) + " does not have vertex " +
                         std::to_string(v));
-  std::vector<std::uint32_t> out{tetrahedron};
-  std::unordered_set<std::uint32_t> seen{tetrahedron};
-  // Each tetrahedron enters once, so the queue is bounded by the tetrahedron count.
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    const std::uint32_t t = out[k];
-    const std::uint32_t iv = index_of(tet, t, v);
-    if (iv == T3::kNone)
-      throw InternalError("ball of vertex " + std::to_string(v) + ": tetrahedron " + std::to_string(t) +
-                          " reached through a facet holding it lacks it (broken adjacency)");
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      if (i == iv) continue;  // the facet opposite v does not contain v
-      const std::uint32_t u = tet.adjacent(t, i);
-      if (seen.insert(u).second) out.push_back(u);
-    }
-    if (out.size() > tet.tetrahedron_count())
-      throw InternalError("ball of vertex " + std::to_string(v) + " exceeds the tetrahedron count");
-  }
+  std::vector<std::uint32_t> out;
+  std::unordered_set<std::uint32_t> seen;
+  nav3::search_ball(
+      tet, v, tetrahedron, out,
+      [&](std::uint32_t u) {
+        if (!seen.insert(u).second) return false;
+        if (out.size() >= tet.tetrahedron_count())
+          throw InternalError("ball of vertex " + std::to_string(v) + " exceeds the tetrahedron count");
+        return true;
+      },
+      [&](std::uint32_t t) {
+        if (index_of(tet, t, v) == T3::kNone)
+          throw InternalError("ball of vertex " + std::to_string(v) + ": tetrahedron " + std::to_string(t) +
+                              " reached through a facet holding it lacks it (broken adjacency)");
+        return false;
+      });
   return out;
 }
 
@@ -138,17 +123,11 @@ std::vector<std::uint32_t> shell(const Tetrahedralization3& tet, std::uint32_t t
     if (out.size() > tet.tetrahedron_count())
       throw InternalError("shell of edge [" + std::to_string(a) + ", " + std::to_string(b) +
                           "] does not close (broken adjacency)");
-    const std::uint32_t ia = index_of(tet, t, a), ib = index_of(tet, t, b);
-    if (ia == T3::kNone || ib == T3::kNone)
+    const auto [ia, ib] = nav3::local_indices(tet, t, a, b);
+    if (ia == 4 || ib == 4)
       throw InternalError("shell of edge [" + std::to_string(a) + ", " + std::to_string(b) + "]: tetrahedron " +
                           std::to_string(t) + " lacks an endpoint (broken adjacency)");
-    // (a, b, c, d) positive: the next tetrahedron lies across the facet opposite c.
-    std::uint32_t k = 0;
-    while (k == ia || k == ib) ++k;
-    std::uint32_t l = k + 1;
-    while (l == ia || l == ib) ++l;
-    if (!even_permutation(ia, ib, k, l)) std::swap(k, l);
-    t = tet.adjacent(t, k);
+    t = tet.adjacent(t, nav3::kShellStep[ia][ib][0]);
   } while (t != tetrahedron);
   return out;
 }

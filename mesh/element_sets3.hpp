@@ -12,9 +12,10 @@
 
 namespace dtlab {
 
-// For each vertex id, one tetrahedron incident to it (ghosts only if no finite one is), or
-// Tetrahedralization3::kNone for points that no tetrahedron uses (duplicates). One pass, O(size).
-std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet);
+// For each vertex id, the first tetrahedron in storage order incident to it (with finite_first,
+// ghosts only if no finite one is), or Tetrahedralization3::kNone for points that no tetrahedron
+// uses (duplicates). O(size).
+std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet, bool finite_first = true);
 
 // Whether each of `edges` and `faces` (vertex ids in any order) is an edge or a face of a finite
 // tetrahedron: edge_present[k] for edges[k], face_present[k] for faces[k]. One search of the ball

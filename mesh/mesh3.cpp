@@ -10,6 +10,8 @@
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/edge_key.hpp"
+#include "mesh/element_sets3.hpp"
+#include "mesh/navigation3.hpp"
 
 namespace dtlab {
 
@@ -35,33 +37,6 @@ bool reversed_facets(const std::array<std::uint32_t, 3>& f, const std::array<std
     if (f[0] == g[r] && f[1] == g[(r + 2) % 3] && f[2] == g[(r + 1) % 3]) return true;
   return false;
 }
-
-// Local indices k, l completing i, j so that (i, j, k, l) is an even permutation of (0, 1, 2, 3):
-// (v_i, v_j, v_k, v_l) is then positive like the tetrahedron.
-constexpr std::array<std::uint32_t, 2> complete_even(std::uint32_t i, std::uint32_t j) noexcept {
-  std::uint32_t k = 0;
-  while (k == i || k == j) ++k;
-  std::uint32_t l = 6 - i - j - k;
-  // Parity of (i, j, k, l): count inversions.
-  const std::uint32_t p[4] = {i, j, k, l};
-  int inversions = 0;
-  for (int x = 0; x < 4; ++x)
-    for (int y = x + 1; y < 4; ++y) inversions += p[x] > p[y];
-  if (inversions % 2) std::swap(k, l);
-  return {k, l};
-}
-
-// complete_even for every pair of distinct local indices, the shell's step without the loops.
-constexpr std::array<std::array<std::array<std::uint8_t, 2>, 4>, 4> kCompleteEven = [] {
-  std::array<std::array<std::array<std::uint8_t, 2>, 4>, 4> table{};
-  for (std::uint32_t i = 0; i < 4; ++i)
-    for (std::uint32_t j = 0; j < 4; ++j) {
-      if (i == j) continue;
-      const auto [k, l] = complete_even(i, j);
-      table[i][j] = {static_cast<std::uint8_t>(k), static_cast<std::uint8_t>(l)};
-    }
-  return table;
-}();
 
 // The tetrahedra already seen by a search around a vertex: a linear scan while few, beyond that
 // a stamp per tetrahedron slot (balls are small; a degenerate vertex of high valence should not
@@ -111,7 +86,7 @@ Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_re
   metrics_.assign(n, metric);
   anisotropic_slots_ = metric.is_scalar() ? 0 : n;
   vertex_flags_.assign(n, kFixed);
-  vertex_tetrahedron_.assign(n, kNone);
+  vertex_tetrahedron_ = vertex_tetrahedra(tet, /*finite_first=*/false);
   changed_at_.assign(n, 0);
   vertices_.resize(4 * nt);
   neighbours_.resize(4 * nt);
@@ -124,13 +99,8 @@ Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_re
   }
   refs_.assign(tetrahedron_refs.begin(), tetrahedron_refs.end());
   facet_refs_.assign(vertices_.size(), kUnconstrained);
-  for (std::uint32_t t = 0; t < nt; ++t) {
+  for (std::uint32_t t = 0; t < nt; ++t)
     if (is_ghost(t)) refs_[t] = kExterior;
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      const std::uint32_t v = vertices_[4 * t + i];
-      if (v != kInfinite && vertex_tetrahedron_[v] == kNone) vertex_tetrahedron_[v] = t;
-    }
-  }
   // Vertices no tetrahedron uses (duplicates of the input) are dead slots.
   for (std::uint32_t v = 0; v < n; ++v) {
     if (vertex_tetrahedron_[v] == kNone) {
@@ -357,24 +327,17 @@ void Mesh3::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
   DTLAB_ASSERT(v < vertex_capacity() && !is_dead_vertex(v));
   const std::uint32_t t0 = vertex_tetrahedron_[v];
   DTLAB_ASSERT(t0 != kNone && is_alive(t0));
-  // Breadth first across the facets holding v (those opposite the other three vertices): the
-  // order depends only on the structure, so it is deterministic.
+  // Breadth first: the order depends only on the structure, so it is deterministic.
   const std::size_t bound = live_tetrahedron_count();
   SeenSet seen(tetrahedron_capacity());
-  out.push_back(t0);
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    const std::uint32_t t = out[k];
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      if (vertices_[4 * t + i] == v) continue;
-      const std::uint32_t u = tetrahedron_of(neighbours_[4 * t + i]);
-      if (!seen.insert(u, out)) continue;
-      out.push_back(u);
-      if (out.size() > bound) {
-        throw InternalError("Mesh3::ball: the search around vertex " + std::to_string(v) + " passed " +
-                            std::to_string(bound) + " tetrahedra");
-      }
+  nav3::ball(*this, v, t0, out, [&](std::uint32_t u) {
+    if (!seen.insert(u, out)) return false;
+    if (out.size() >= bound) {
+      throw InternalError("Mesh3::ball: the search around vertex " + std::to_string(v) + " passed " +
+                          std::to_string(bound) + " tetrahedra");
     }
-  }
+    return true;
+  });
 }
 
 std::uint32_t Mesh3::find_edge(std::uint32_t a, std::uint32_t b) const {
@@ -433,9 +396,8 @@ void Mesh3::shell_at(std::uint32_t t0, std::uint32_t a, std::uint32_t b, std::ve
       if (vertices_[4 * t + i] == v) return i;
     throw InternalError("Mesh3::shell: tetrahedron " + std::to_string(t) + " lost vertex " + vertex_name(v));
   };
-  // In t = (a, b, c, d) positive, the next tetrahedron around the edge is across the facet
-  // (a, b, d) opposite c; its fourth vertex e gives (a, b, d, e) positive again.
-  const std::uint32_t k0 = complete_even(local(t0, a), local(t0, b))[0];
+  // The walk of nav3::kShellStep; c is the vertex opposite the facet crossed next.
+  const std::uint32_t k0 = nav3::kShellStep[local(t0, a)][local(t0, b)][0];
   std::uint32_t t = t0;
   std::uint32_t c = vertices_[4 * t0 + k0];
   const std::size_t bound = live_tetrahedron_count();
@@ -446,17 +408,12 @@ void Mesh3::shell_at(std::uint32_t t0, std::uint32_t a, std::uint32_t b, std::ve
       throw InternalError("Mesh3::shell: the tetrahedra around edge (" + vertex_name(a) + ", " + vertex_name(b) +
                           ") do not close");
     }
-    // a and b found in one scan; c must be the vertex kCompleteEven puts opposite the facet
-    // crossed next.
+    // c must be the vertex kShellStep puts opposite the facet crossed next.
     const std::uint32_t* v = &vertices_[4 * t];
-    std::uint32_t ia = 4, ib = 4;
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      if (v[i] == a) ia = i;
-      if (v[i] == b) ib = i;
-    }
+    const auto [ia, ib] = nav3::local_indices(*this, t, a, b);
     if (ia == 4) local(t, a);  // throws
     if (ib == 4) local(t, b);
-    const auto [k, l] = kCompleteEven[ia][ib];
+    const auto [k, l] = nav3::kShellStep[ia][ib];
     if (v[k] != c) local(t, c);  // throws when c is gone
     DTLAB_ASSERT(v[k] == c);
     c = v[l];

@@ -7,6 +7,7 @@
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/navigation3.hpp"
 #include "mesh/tetrahedralization3_build.hpp"
 
 namespace dtlab {
@@ -47,18 +48,11 @@ void check_vertex_balls(const T3& tet) {
   std::vector<std::uint32_t> stamp(records.size(), T3::kNone), queue;
   for (std::uint32_t v = 0; v < n; ++v) {
     if (first[v] == T3::kNone) continue;
-    queue.assign(1, first[v]);
-    stamp[first[v]] = v;
-    for (std::size_t k = 0; k < queue.size(); ++k) {
-      const auto& r = records[queue[k]];
-      for (std::uint32_t i = 0; i < 4; ++i) {
-        if (r.vertex[i] == v) continue;
-        const std::uint32_t u = T3::tetrahedron_of(r.neighbour[i]);
-        if (stamp[u] == v) continue;
-        stamp[u] = v;
-        queue.push_back(u);
-      }
-    }
+    nav3::ball(tet, v, first[v], queue, [&](std::uint32_t u) {
+      if (stamp[u] == v) return false;
+      stamp[u] = v;
+      return true;
+    });
     if (queue.size() != incident[v]) {
       throw InputError("the boundary is not a closed 2-manifold at vertex " + number(v) +
                            " (its tetrahedra are not connected across facets: two solids touch there)",

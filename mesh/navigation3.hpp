@@ -1,0 +1,79 @@
+// Navigation around a vertex and an edge, written once for both 3D structures that share the
+// numbering drawn in mesh/tetrahedralization3.hpp (Tetrahedralization3, Mesh3): any Mesh with
+// vertex(t, i) and adjacent(t, i). The ball of a vertex (book §1.7) is not a cycle as in 2D, so
+// it is searched across the facets that hold the vertex; the shell of an edge (§8.3.2) is a cycle,
+// walked with the table below.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace dtlab::nav3 {
+
+inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+// Which end of the list the search takes the next tetrahedron from: breadth first keeps the whole
+// ball in the list, in an order that depends only on the structure; depth first pops it.
+enum class Order : std::uint8_t { BreadthFirst, DepthFirst };
+
+// The ball of v searched from t0 (which holds v): `list` starts as {t0}; each tetrahedron taken
+// from it goes to visit(t) (true stops the search and returns t), then its neighbours across
+// facets 0..3 that hold v (those opposite the other vertices) are appended where first_time(u)
+// accepts them. first_time marks what it accepts (it is asked about t0 first) and may throw past
+// a bound. Returns kNone when the ball is exhausted.
+template <Order kOrder = Order::BreadthFirst, class Mesh, class FirstTime, class Visit>
+inline std::uint32_t search_ball(const Mesh& m, std::uint32_t v, std::uint32_t t0, std::vector<std::uint32_t>& list,
+                                 FirstTime&& first_time, Visit&& visit) {
+  list.clear();
+  first_time(t0);
+  list.push_back(t0);
+  for (std::size_t k = 0; kOrder == Order::BreadthFirst ? k < list.size() : !list.empty(); ++k) {
+    std::uint32_t t;
+    if constexpr (kOrder == Order::BreadthFirst) {
+      t = list[k];
+    } else {
+      t = list.back();
+      list.pop_back();
+    }
+    if (visit(t)) return t;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (m.vertex(t, i) == v) continue;  // the facet opposite v does not hold v
+      const std::uint32_t u = m.adjacent(t, i);
+      if (first_time(u)) list.push_back(u);
+    }
+  }
+  return kNone;
+}
+
+// The whole ball, breadth first, into `out` (out[0] == t0).
+template <class Mesh, class FirstTime>
+inline void ball(const Mesh& m, std::uint32_t v, std::uint32_t t0, std::vector<std::uint32_t>& out, FirstTime&& first_time) {
+  search_ball(m, v, t0, out, first_time, [](std::uint32_t) { return false; });
+}
+
+// The shell's step. In t = (a, b, c, d) positive, the next tetrahedron around edge ab lies across
+// the facet (a, b, d) opposite c, and its fourth vertex e makes (a, b, d, e) positive again. With
+// ia, ib the local indices of a and b, kShellStep[ia][ib] = {k, l} such that (ia, ib, k, l) is an
+// even permutation of (0, 1, 2, 3), so (v_ia, v_ib, v_k, v_l) is positive: cross facet k (c = v_k),
+// and v_l is the next tetrahedron's c.
+inline constexpr std::uint8_t kShellStep[4][4][2] = {
+    {{0, 0}, {2, 3}, {3, 1}, {1, 2}},
+    {{3, 2}, {0, 0}, {0, 3}, {2, 0}},
+    {{1, 3}, {3, 0}, {0, 0}, {0, 1}},
+    {{2, 1}, {0, 2}, {1, 0}, {0, 0}},
+};
+
+// The local indices of a and b in t, in one scan (4 for one that t lacks).
+template <class Mesh>
+inline std::array<std::uint32_t, 2> local_indices(const Mesh& m, std::uint32_t t, std::uint32_t a, std::uint32_t b) noexcept {
+  std::array<std::uint32_t, 2> out{4, 4};
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    const std::uint32_t x = m.vertex(t, i);
+    if (x == a) out[0] = i;
+    if (x == b) out[1] = i;
+  }
+  return out;
+}
+
+}  // namespace dtlab::nav3
