@@ -8,6 +8,7 @@
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/element_sets3.hpp"
+#include "mesh/navigation3.hpp"
 
 namespace dtlab {
 
@@ -92,51 +93,36 @@ bool FlipRecovery::is_protected_face(std::uint32_t a, std::uint32_t b, std::uint
 
 void FlipRecovery::finish() { flips_mesh_.finish(); }
 
+template <class Visit>
+std::uint32_t FlipRecovery::search_ball_of(std::uint32_t u, std::vector<std::uint32_t>& list, Visit&& visit) {
+  if (mark_.size() < records_.size()) mark_.resize(records_.size(), 0);
+  ++stamp_;
+  const auto first_time = [&](std::uint32_t t) {
+    if (mark_[t] == stamp_) return false;
+    if (list.size() >= records_.size()) throw InternalError("flip recovery: a vertex ball exceeded the mesh");
+    mark_[t] = stamp_;
+    return true;
+  };
+  return nav3::search_ball(mesh_, u, vertex_tet_[u], list, first_time, visit);
+}
+
 void FlipRecovery::ball_of(std::uint32_t u, std::vector<std::uint32_t>& out) {
   out.clear();
   if (u >= vertex_tet_.size() || vertex_tet_[u] == kNone) return;
-  if (mark_.size() < records_.size()) mark_.resize(records_.size(), 0);
-  ++stamp_;
-  const std::uint32_t t0 = vertex_tet_[u];
-  DTLAB_ASSERT(alive(t0));
-  out.push_back(t0);
-  mark_[t0] = stamp_;
-  for (std::size_t k = 0; k < out.size(); ++k) {
-    if (out.size() > records_.size()) throw InternalError("flip recovery: a vertex ball exceeded the mesh");
-    const auto& rec = records_[out[k]];
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      if (rec.vertex[i] == u) continue;  // the facet opposite u does not hold u
-      const std::uint32_t n = rec.neighbour[i] >> 2;
-      if (mark_[n] == stamp_) continue;
-      mark_[n] = stamp_;
-      out.push_back(n);
-    }
-  }
+  DTLAB_ASSERT(alive(vertex_tet_[u]));
+  search_ball_of(u, out, [](std::uint32_t) { return false; });
 }
 
 std::uint32_t FlipRecovery::tetrahedron_with(std::uint32_t u, std::uint32_t v, std::uint32_t w) {
   // The search of ball_of, ending at the first tetrahedron that holds v (and w).
   if (u >= vertex_tet_.size() || vertex_tet_[u] == kNone) return kNone;
-  if (mark_.size() < records_.size()) mark_.resize(records_.size(), 0);
-  ++stamp_;
-  walk_.assign(1, vertex_tet_[u]);
-  mark_[walk_[0]] = stamp_;
-  for (std::size_t k = 0; k < walk_.size(); ++k) {
-    if (walk_.size() > records_.size()) throw InternalError("flip recovery: a vertex ball exceeded the mesh");
-    const auto& rec = records_[walk_[k]];
-    const auto& x = rec.vertex;
-    if (x[0] != kInf) {
-      const bool has_v = x[0] == v || x[1] == v || x[2] == v || x[3] == v;
-      const bool has_w = w == kNone || x[0] == w || x[1] == w || x[2] == w || x[3] == w;
-      if (has_v && has_w) return walk_[k];
-    }
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      if (x[i] == u) continue;
-      const std::uint32_t n = rec.neighbour[i] >> 2;
-      if (mark_[n] != stamp_) mark_[n] = stamp_, walk_.push_back(n);
-    }
-  }
-  return kNone;
+  return search_ball_of(u, walk_, [&](std::uint32_t t) {
+    const auto& x = records_[t].vertex;
+    if (x[0] == kInf) return false;
+    const bool has_v = x[0] == v || x[1] == v || x[2] == v || x[3] == v;
+    const bool has_w = w == kNone || x[0] == w || x[1] == w || x[2] == w || x[3] == w;
+    return has_v && has_w;
+  });
 }
 
 bool FlipRecovery::has_edge(std::uint32_t u, std::uint32_t v) { return tetrahedron_with(u, v) != kNone; }

@@ -131,6 +131,9 @@ class FlipRecovery {
   // A finite tetrahedron holding u and v (kNone if none): a search of u's ball.
   std::uint32_t tetrahedron_with(std::uint32_t u, std::uint32_t v, std::uint32_t w = Tetrahedralization3::kNone);
   void ball_of(std::uint32_t u, std::vector<std::uint32_t>& out);
+  // nav3::search_ball from vertex_tet_[u] (which must be set), with this recovery's marks.
+  template <class Visit>
+  std::uint32_t search_ball_of(std::uint32_t u, std::vector<std::uint32_t>& list, Visit&& visit);
   bool is_protected_edge(std::uint32_t u, std::uint32_t v) const;
   // A tetrahedron insert_point or split_edge_at makes is valid: positive, or a ghost whose hull
   // facet is a proper triangle (a point on the hull's surface leaves the hull as it was).

@@ -14,6 +14,7 @@
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
 #include "kernel/rounding.hpp"
+#include "mesh/navigation3.hpp"
 
 namespace dtlab {
 
@@ -90,25 +91,14 @@ MeshIndex::MeshIndex(const Tetrahedralization3& mesh)
       if (v != T3::kInfinite) incident_[v] = t;
 }
 
-// Depth-first over the tetrahedra holding u, through their facets that hold u; stops early
-// where f returns true.
+// Depth first over the tetrahedra holding u (nav3::search_ball); stops early where f returns true.
 template <class F>
 void MeshIndex::for_each_in_star(std::uint32_t u, F&& f) const {
   if (u >= incident_.size() || incident_[u] == T3::kNone) return;
   if (++stamp_ == 0) std::fill(mark_.begin(), mark_.end(), 0), stamp_ = 1;
-  stack_.assign(1, incident_[u]);
-  mark_[incident_[u]] = stamp_;
-  while (!stack_.empty()) {
-    const std::uint32_t t = stack_.back();
-    stack_.pop_back();
-    if (f(t)) return;
-    const auto& r = mesh_.records()[t];
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      if (r.vertex[i] == u) continue;  // the facet opposite u does not hold it
-      const std::uint32_t n = T3::tetrahedron_of(r.neighbour[i]);
-      if (mark_[n] != stamp_) mark_[n] = stamp_, stack_.push_back(n);
-    }
-  }
+  nav3::search_ball<nav3::Order::DepthFirst>(
+      mesh_, u, incident_[u], stack_,
+      [&](std::uint32_t t) { return mark_[t] != stamp_ && (mark_[t] = stamp_, true); }, f);
 }
 
 bool MeshIndex::has_edge(std::uint32_t u, std::uint32_t v) const {

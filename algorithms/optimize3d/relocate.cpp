@@ -15,6 +15,7 @@
 #include "algorithms/optimize3d/operators.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/quality.hpp"
+#include "mesh/navigation3.hpp"
 
 namespace dtlab {
 
@@ -289,20 +290,11 @@ std::uint64_t optimize3d_detail::relocate_sweep(Mesh3& mesh, const MetricField3&
     // Its ball (topology, positions, metrics) unchanged since it failed: it fails again.
     if (memo && memo->relocation.failed_since(v, mesh.changed_at(v))) continue;
     ++stamp;
-    s.ball.clear();
-    const std::uint32_t t0 = mesh.vertex_tetrahedron(v);
-    s.ball.push_back(t0);
-    seen[t0] = stamp;
-    for (std::size_t k = 0; k < s.ball.size(); ++k) {
-      const std::uint32_t t = s.ball[k];
-      for (std::uint32_t i = 0; i < 4; ++i) {
-        if (mesh.vertex(t, i) == v) continue;
-        const std::uint32_t u = Mesh3::tetrahedron_of(mesh.twin(Mesh3::facet(t, i)));
-        if (seen[u] == stamp) continue;
-        seen[u] = stamp;
-        s.ball.push_back(u);
-      }
-    }
+    nav3::ball(mesh, v, mesh.vertex_tetrahedron(v), s.ball, [&](std::uint32_t u) {
+      if (seen[u] == stamp) return false;
+      seen[u] = stamp;
+      return true;
+    });
     if (relocate_free_vertex(mesh, v, field, options, s)) {
       ++moved;
     } else if (memo) {

@@ -11,6 +11,7 @@
 #include "algorithms/optimize3d/operators.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/quality.hpp"
+#include "mesh/navigation3.hpp"
 
 namespace dtlab {
 
@@ -37,28 +38,18 @@ class EdgeFinder {
   std::uint32_t find(const Mesh3& mesh, std::uint32_t a, std::uint32_t b) {
     if (seen_.size() < mesh.tetrahedron_capacity()) seen_.resize(mesh.tetrahedron_capacity(), 0);
     ++stamp_;
-    list_.clear();
-    auto holds_b = [&](std::uint32_t t) {
-      for (std::uint32_t i = 0; i < 4; ++i)
-        if (mesh.vertex(t, i) == b) return true;
-      return false;
+    // The first tetrahedron of a's ball (in Mesh3::ball's order) that holds b: tested as it is
+    // found, and the search stops at the next one it takes.
+    std::uint32_t hit = Mesh3::kNone;
+    const auto first_time = [&](std::uint32_t t) {
+      if (seen_[t] == stamp_) return false;
+      seen_[t] = stamp_;
+      const auto v = mesh.tetrahedron(t);
+      if (hit == Mesh3::kNone && (v[0] == b || v[1] == b || v[2] == b || v[3] == b)) hit = t;
+      return true;
     };
-    const std::uint32_t t0 = mesh.vertex_tetrahedron(a);
-    if (holds_b(t0)) return t0;
-    list_.push_back(t0);
-    seen_[t0] = stamp_;
-    for (std::size_t k = 0; k < list_.size(); ++k) {
-      const std::uint32_t t = list_[k];
-      for (std::uint32_t i = 0; i < 4; ++i) {
-        if (mesh.vertex(t, i) == a) continue;
-        const std::uint32_t u = Mesh3::tetrahedron_of(mesh.twin(Mesh3::facet(t, i)));
-        if (seen_[u] == stamp_) continue;
-        seen_[u] = stamp_;
-        if (holds_b(u)) return u;
-        list_.push_back(u);
-      }
-    }
-    return Mesh3::kNone;
+    nav3::search_ball(mesh, a, mesh.vertex_tetrahedron(a), list_, first_time, [&](std::uint32_t) { return hit != Mesh3::kNone; });
+    return hit;
   }
 
  private:
