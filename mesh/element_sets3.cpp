@@ -61,12 +61,8 @@ void find_in_mesh(const Tetrahedralization3& tet, std::span<const std::array<std
   for (std::uint32_t u = 0; u < n; ++u) {
     if (start[u] == start[u + 1] || incident[u] == T3::kNone) continue;
     ++stamp;
-    nav3::ball(tet, u, incident[u], found, [&](std::uint32_t t) {
-      if (mark[t] == stamp) return false;
-      if (found.size() >= count) throw InternalError("find_in_mesh: a vertex ball exceeds the mesh");
-      mark[t] = stamp;
-      return true;
-    });
+    nav3::ball(tet, u, incident[u], found, nav3::marking(mark, stamp));
+    if (found.size() > count) throw InternalError("find_in_mesh: a vertex ball exceeds the mesh");
     const auto holds = [&](std::uint32_t t, std::uint32_t v) {
       return tet.vertex(t, 0) == v || tet.vertex(t, 1) == v || tet.vertex(t, 2) == v || tet.vertex(t, 3) == v;
     };
@@ -94,19 +90,15 @@ std::vector<std::uint32_t> ball(const Tetrahedralization3& tet, std::uint32_t te
   std::vector<std::uint32_t> out;
   std::unordered_set<std::uint32_t> seen;
   nav3::search_ball(
-      tet, v, tetrahedron, out,
-      [&](std::uint32_t u) {
-        if (!seen.insert(u).second) return false;
-        if (out.size() >= tet.tetrahedron_count())
-          throw InternalError("ball of vertex " + std::to_string(v) + " exceeds the tetrahedron count");
-        return true;
-      },
+      tet, v, tetrahedron, out, [&](std::uint32_t u) { return seen.insert(u).second; },
       [&](std::uint32_t t) {
         if (index_of(tet, t, v) == T3::kNone)
           throw InternalError("ball of vertex " + std::to_string(v) + ": tetrahedron " + std::to_string(t) +
                               " reached through a facet holding it lacks it (broken adjacency)");
         return false;
       });
+  if (out.size() > tet.tetrahedron_count())
+    throw InternalError("ball of vertex " + std::to_string(v) + " exceeds the tetrahedron count");
   return out;
 }
 
@@ -123,7 +115,7 @@ std::vector<std::uint32_t> shell(const Tetrahedralization3& tet, std::uint32_t t
     if (out.size() > tet.tetrahedron_count())
       throw InternalError("shell of edge [" + std::to_string(a) + ", " + std::to_string(b) +
                           "] does not close (broken adjacency)");
-    const auto [ia, ib] = nav3::local_indices(tet, t, a, b);
+    const auto [ia, ib] = nav3::local_indices(tet.records()[t].vertex.data(), a, b);
     if (ia == 4 || ib == 4)
       throw InternalError("shell of edge [" + std::to_string(a) + ", " + std::to_string(b) + "]: tetrahedron " +
                           std::to_string(t) + " lacks an endpoint (broken adjacency)");

@@ -327,17 +327,14 @@ void Mesh3::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
   DTLAB_ASSERT(v < vertex_capacity() && !is_dead_vertex(v));
   const std::uint32_t t0 = vertex_tetrahedron_[v];
   DTLAB_ASSERT(t0 != kNone && is_alive(t0));
-  // Breadth first: the order depends only on the structure, so it is deterministic.
-  const std::size_t bound = live_tetrahedron_count();
+  // Breadth first: the order depends only on the structure, so it is deterministic. Each slot
+  // enters once, so the search ends; the bound is checked after it, out of the hot loop.
   SeenSet seen(tetrahedron_capacity());
-  nav3::ball(*this, v, t0, out, [&](std::uint32_t u) {
-    if (!seen.insert(u, out)) return false;
-    if (out.size() >= bound) {
-      throw InternalError("Mesh3::ball: the search around vertex " + std::to_string(v) + " passed " +
-                          std::to_string(bound) + " tetrahedra");
-    }
-    return true;
-  });
+  nav3::ball(*this, v, t0, out, [&](std::uint32_t u) { return seen.insert(u, out); });
+  if (out.size() > live_tetrahedron_count()) {
+    throw InternalError("Mesh3::ball: the search around vertex " + std::to_string(v) + " passed " +
+                        std::to_string(live_tetrahedron_count()) + " tetrahedra");
+  }
 }
 
 std::uint32_t Mesh3::find_edge(std::uint32_t a, std::uint32_t b) const {
@@ -410,7 +407,7 @@ void Mesh3::shell_at(std::uint32_t t0, std::uint32_t a, std::uint32_t b, std::ve
     }
     // c must be the vertex kShellStep puts opposite the facet crossed next.
     const std::uint32_t* v = &vertices_[4 * t];
-    const auto [ia, ib] = nav3::local_indices(*this, t, a, b);
+    const auto [ia, ib] = nav3::local_indices(v, a, b);
     if (ia == 4) local(t, a);  // throws
     if (ib == 4) local(t, b);
     const auto [k, l] = nav3::kShellStep[ia][ib];

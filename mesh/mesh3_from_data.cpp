@@ -48,11 +48,7 @@ void check_vertex_balls(const T3& tet) {
   std::vector<std::uint32_t> stamp(records.size(), T3::kNone), queue;
   for (std::uint32_t v = 0; v < n; ++v) {
     if (first[v] == T3::kNone) continue;
-    nav3::ball(tet, v, first[v], queue, [&](std::uint32_t u) {
-      if (stamp[u] == v) return false;
-      stamp[u] = v;
-      return true;
-    });
+    nav3::ball(tet, v, first[v], queue, nav3::marking(stamp, v));
     if (queue.size() != incident[v]) {
       throw InputError("the boundary is not a closed 2-manifold at vertex " + number(v) +
                            " (its tetrahedra are not connected across facets: two solids touch there)",

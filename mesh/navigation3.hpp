@@ -17,33 +17,45 @@ inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 // ball in the list, in an order that depends only on the structure; depth first pops it.
 enum class Order : std::uint8_t { BreadthFirst, DepthFirst };
 
-// The ball of v searched from t0 (which holds v): `list` starts as {t0}; each tetrahedron taken
-// from it goes to visit(t) (true stops the search and returns t), then its neighbours across
-// facets 0..3 that hold v (those opposite the other vertices) are appended where first_time(u)
-// accepts them. first_time marks what it accepts (it is asked about t0 first) and may throw past
-// a bound. Returns kNone when the ball is exhausted.
+// The ball of v searched from t0 (which holds v) across the facets that hold v (those opposite
+// the other vertices): a tetrahedron's neighbours across facets 0..3 are appended to `list` where
+// first_time(u) accepts them (it marks what it accepts, and is asked about t0 first). visit(t)
+// sees the tetrahedra in the search's order and stops it by returning true (search_ball returns
+// that t, else kNone). Breadth first, the order of appending is the order of taking, so visit
+// runs just before a tetrahedron is appended and a search for one stops as soon as it is found;
+// depth first, it runs as one is popped.
 template <Order kOrder = Order::BreadthFirst, class Mesh, class FirstTime, class Visit>
 inline std::uint32_t search_ball(const Mesh& m, std::uint32_t v, std::uint32_t t0, std::vector<std::uint32_t>& list,
                                  FirstTime&& first_time, Visit&& visit) {
+  constexpr bool kBreadth = kOrder == Order::BreadthFirst;
   list.clear();
   first_time(t0);
+  if (kBreadth && visit(t0)) return t0;
   list.push_back(t0);
-  for (std::size_t k = 0; kOrder == Order::BreadthFirst ? k < list.size() : !list.empty(); ++k) {
+  for (std::size_t k = 0; kBreadth ? k < list.size() : !list.empty(); ++k) {
     std::uint32_t t;
-    if constexpr (kOrder == Order::BreadthFirst) {
+    if constexpr (kBreadth) {
       t = list[k];
     } else {
       t = list.back();
       list.pop_back();
+      if (visit(t)) return t;
     }
-    if (visit(t)) return t;
     for (std::uint32_t i = 0; i < 4; ++i) {
-      if (m.vertex(t, i) == v) continue;  // the facet opposite v does not hold v
+      if (m.vertex(t, i) == v) continue;
       const std::uint32_t u = m.adjacent(t, i);
-      if (first_time(u)) list.push_back(u);
+      if (!first_time(u)) continue;
+      if (kBreadth && visit(u)) return u;
+      list.push_back(u);
     }
   }
   return kNone;
+}
+
+// A first_time for search_ball that marks a slot with the search's own stamp (mark has an entry
+// per tetrahedron slot; a fresh stamp per search, so earlier marks never read as seen).
+inline auto marking(std::vector<std::uint32_t>& mark, std::uint32_t stamp) noexcept {
+  return [&mark, stamp](std::uint32_t t) { return mark[t] != stamp && (mark[t] = stamp, true); };
 }
 
 // The whole ball, breadth first, into `out` (out[0] == t0).
@@ -64,14 +76,13 @@ inline constexpr std::uint8_t kShellStep[4][4][2] = {
     {{2, 1}, {0, 2}, {1, 0}, {0, 0}},
 };
 
-// The local indices of a and b in t, in one scan (4 for one that t lacks).
-template <class Mesh>
-inline std::array<std::uint32_t, 2> local_indices(const Mesh& m, std::uint32_t t, std::uint32_t a, std::uint32_t b) noexcept {
+// The local indices of a and b among a tetrahedron's four vertices v, in one scan (4 for one
+// that is not there).
+inline std::array<std::uint32_t, 2> local_indices(const std::uint32_t* v, std::uint32_t a, std::uint32_t b) noexcept {
   std::array<std::uint32_t, 2> out{4, 4};
   for (std::uint32_t i = 0; i < 4; ++i) {
-    const std::uint32_t x = m.vertex(t, i);
-    if (x == a) out[0] = i;
-    if (x == b) out[1] = i;
+    if (v[i] == a) out[0] = i;
+    if (v[i] == b) out[1] = i;
   }
   return out;
 }

@@ -97,13 +97,9 @@ template <class Visit>
 std::uint32_t FlipRecovery::search_ball_of(std::uint32_t u, std::vector<std::uint32_t>& list, Visit&& visit) {
   if (mark_.size() < records_.size()) mark_.resize(records_.size(), 0);
   ++stamp_;
-  const auto first_time = [&](std::uint32_t t) {
-    if (mark_[t] == stamp_) return false;
-    if (list.size() >= records_.size()) throw InternalError("flip recovery: a vertex ball exceeded the mesh");
-    mark_[t] = stamp_;
-    return true;
-  };
-  return nav3::search_ball(mesh_, u, vertex_tet_[u], list, first_time, visit);
+  const std::uint32_t found = nav3::search_ball(mesh_, u, vertex_tet_[u], list, nav3::marking(mark_, stamp_), visit);
+  if (list.size() > records_.size()) throw InternalError("flip recovery: a vertex ball exceeded the mesh");
+  return found;
 }
 
 void FlipRecovery::ball_of(std::uint32_t u, std::vector<std::uint32_t>& out) {

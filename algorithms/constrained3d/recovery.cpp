@@ -96,9 +96,7 @@ template <class F>
 void MeshIndex::for_each_in_star(std::uint32_t u, F&& f) const {
   if (u >= incident_.size() || incident_[u] == T3::kNone) return;
   if (++stamp_ == 0) std::fill(mark_.begin(), mark_.end(), 0), stamp_ = 1;
-  nav3::search_ball<nav3::Order::DepthFirst>(
-      mesh_, u, incident_[u], stack_,
-      [&](std::uint32_t t) { return mark_[t] != stamp_ && (mark_[t] = stamp_, true); }, f);
+  nav3::search_ball<nav3::Order::DepthFirst>(mesh_, u, incident_[u], stack_, nav3::marking(mark_, stamp_), f);
 }
 
 bool MeshIndex::has_edge(std::uint32_t u, std::uint32_t v) const {

@@ -290,11 +290,7 @@ std::uint64_t optimize3d_detail::relocate_sweep(Mesh3& mesh, const MetricField3&
     // Its ball (topology, positions, metrics) unchanged since it failed: it fails again.
     if (memo && memo->relocation.failed_since(v, mesh.changed_at(v))) continue;
     ++stamp;
-    nav3::ball(mesh, v, mesh.vertex_tetrahedron(v), s.ball, [&](std::uint32_t u) {
-      if (seen[u] == stamp) return false;
-      seen[u] = stamp;
-      return true;
-    });
+    nav3::ball(mesh, v, mesh.vertex_tetrahedron(v), s.ball, nav3::marking(seen, stamp));
     if (relocate_free_vertex(mesh, v, field, options, s)) {
       ++moved;
     } else if (memo) {

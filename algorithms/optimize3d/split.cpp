@@ -38,18 +38,10 @@ class EdgeFinder {
   std::uint32_t find(const Mesh3& mesh, std::uint32_t a, std::uint32_t b) {
     if (seen_.size() < mesh.tetrahedron_capacity()) seen_.resize(mesh.tetrahedron_capacity(), 0);
     ++stamp_;
-    // The first tetrahedron of a's ball (in Mesh3::ball's order) that holds b: tested as it is
-    // found, and the search stops at the next one it takes.
-    std::uint32_t hit = Mesh3::kNone;
-    const auto first_time = [&](std::uint32_t t) {
-      if (seen_[t] == stamp_) return false;
-      seen_[t] = stamp_;
-      const auto v = mesh.tetrahedron(t);
-      if (hit == Mesh3::kNone && (v[0] == b || v[1] == b || v[2] == b || v[3] == b)) hit = t;
-      return true;
-    };
-    nav3::search_ball(mesh, a, mesh.vertex_tetrahedron(a), list_, first_time, [&](std::uint32_t) { return hit != Mesh3::kNone; });
-    return hit;
+    // The first tetrahedron of a's ball (in Mesh3::ball's order) that holds b.
+    return nav3::search_ball(mesh, a, mesh.vertex_tetrahedron(a), list_, nav3::marking(seen_, stamp_), [&](std::uint32_t t) {
+      return mesh.vertex(t, 0) == b || mesh.vertex(t, 1) == b || mesh.vertex(t, 2) == b || mesh.vertex(t, 3) == b;
+    });
   }
 
  private:
