@@ -68,7 +68,7 @@ inline void ball(const Mesh& m, std::uint32_t v, std::uint32_t t0, std::vector<s
 // the facet (a, b, d) opposite c, and its fourth vertex e makes (a, b, d, e) positive again. With
 // ia, ib the local indices of a and b, kShellStep[ia][ib] = {k, l} such that (ia, ib, k, l) is an
 // even permutation of (0, 1, 2, 3), so (v_ia, v_ib, v_k, v_l) is positive: cross facet k (c = v_k),
-// and v_l is the next tetrahedron's c.
+// and v_l is the next tetrahedron's c. (The diagonal, ia == ib, is unused.)
 inline constexpr std::uint8_t kShellStep[4][4][2] = {
     {{0, 0}, {2, 3}, {3, 1}, {1, 2}},
     {{3, 2}, {0, 0}, {0, 3}, {2, 0}},
