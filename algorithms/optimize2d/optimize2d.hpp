@@ -14,25 +14,16 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 
+#include "algorithms/common/optimize_strategy.hpp"
 #include "algorithms/optimize2d/operators.hpp"
-#include "kernel/interrupt.hpp"
 #include "mesh/mesh2.hpp"
 
 namespace dtlab {
 
-struct Optimize2dOptions {
-  std::uint32_t max_rounds = 8;
-  // Another round while the worst or the mean Q_K drops by more than this, relative.
-  double round_improvement = 1e-3;
-  // Triangles worse than this are treated one by one, worst first, at the start of each round.
-  double bad_quality = 1.4;
-  bool swaps = true;
-  bool relocation = true;
-  std::uint32_t relocation_sweeps = 2;  // per round
-  bool collapses = true;                // short edges (size) and needles (shape)
-  bool splits = true;                   // long edges
+// The rounds' options (algorithms/common/optimize_strategy.hpp: at most 8 rounds, triangles with
+// Q_K > 1.4 treated one by one) and the 2D operators'.
+struct Optimize2dOptions : OptimizeRoundOptions<8, 1.4> {
   // Boundary vertices that are neither kFixed nor corners collapsed along the boundary
   // (boundary_collapse_pass, after collapse_pass): adaptation's coarsening of the boundary.
   bool boundary_collapses = false;
@@ -41,11 +32,10 @@ struct Optimize2dOptions {
   RelocateOptions relocate{};
   CollapseOptions collapse{};
   SplitOptions split{};
-  // Asked before each round and each pass of a round (kernel/interrupt.hpp); yes: Interrupted.
-  InterruptCheck interrupt{};
 };
 
-struct Optimize2dStats {
+// The rounds' report (algorithms/common/optimize_strategy.hpp) and the operators' counts.
+struct Optimize2dStats : OptimizeRoundStats {
   std::uint64_t swaps = 0;  // quality swaps, including those after splits
   std::uint64_t relocations = 0;
   std::uint64_t swap_relocations = 0;  // try_swap_relocate moves kept (bad triangles only)
@@ -54,17 +44,7 @@ struct Optimize2dStats {
   std::uint64_t splits = 0;
   std::uint64_t boundary_support_fallbacks = 0;  // boundary splits put on the chord (support point refused)
   std::uint64_t valence_swaps = 0;
-  std::uint32_t rounds = 0;
-  // Q_K over the domain's triangles (kernel/quality.hpp, in the vertex metrics); the mean over
-  // the finite values.
-  double worst_before = 0.0, mean_before = 0.0;
-  double worst_after = 0.0, mean_after = 0.0;
   std::uint64_t triangles_before = 0, triangles_after = 0;  // in the domain
-  std::uint64_t vertices_before = 0, vertices_after = 0;    // live
-  // Why the rounds ended: "converged" (no further improvement), "max_rounds", "swap_limit" or
-  // "vertex_limit" (a pass stopped at its bound; the mesh is valid all the same).
-  std::string stopped_by;
-  double seconds = 0.0;
 };
 
 // The worst and mean Q_K over the domain's triangles (the mean over the finite values; both 0

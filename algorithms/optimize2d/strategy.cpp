@@ -7,10 +7,10 @@
 // still improves the worst or the mean quality significantly (§8.6.3's stopping criterion).
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <utility>
 
+#include "algorithms/common/optimize_strategy.hpp"
 #include "algorithms/optimize2d/local.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
 #include "kernel/interrupt.hpp"
@@ -106,21 +106,21 @@ void treat_bad_triangles(Mesh2& mesh, const Optimize2dOptions& options, const Me
   }
 }
 
-}  // namespace
+// The 2D part of the round loop (algorithms/common/optimize_strategy.hpp): a round's operators.
+struct Rounds2 {
+  Mesh2& mesh;
+  const Optimize2dOptions& options;
+  const MetricField2& field;
+  Optimize2dStats& stats;
 
-Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field) {
-  const auto start = std::chrono::steady_clock::now();
-  Optimize2dStats stats;
-  const QualitySummary2 before = summarize_quality(mesh);
-  stats.worst_before = before.worst;
-  stats.mean_before = before.mean;
-  stats.triangles_before = before.triangles;
-  stats.vertices_before = mesh.live_vertex_count();
-  QualitySummary2 last = before;
-  stats.stopped_by = "max_rounds";
-  for (std::uint32_t round = 0; round < options.max_rounds; ++round) {
-    poll_interrupt(options.interrupt, "optimize2d: at the start of a round");
-    ++stats.rounds;
+  QualitySummary2 scan() const { return summarize_quality(mesh); }
+  optimize_detail::RoundGoal goal(const QualitySummary2&) const { return {}; }
+  void finish(const QualitySummary2& before, const QualitySummary2& after) {
+    stats.triangles_before = before.triangles;
+    stats.triangles_after = after.triangles;
+  }
+
+  optimize_detail::RoundResult round(std::uint32_t, const QualitySummary2&) {
     std::uint64_t size_changes = 0;
     bool limit = false;
     treat_bad_triangles(mesh, options, field, stats);
@@ -168,21 +168,16 @@ Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const 
       stats.valence_swaps += valence_pass(mesh);
       swaps();
     }
-    const QualitySummary2 now = summarize_quality(mesh);
-    const double keep = 1.0 - options.round_improvement;
-    const bool improved = now.worst < last.worst * keep || now.mean < last.mean * keep;
-    last = now;
-    if (limit) break;
-    if (!improved && size_changes == 0) {
-      stats.stopped_by = "converged";
-      break;
-    }
+    return {size_changes != 0, limit};
   }
-  stats.worst_after = last.worst;
-  stats.mean_after = last.mean;
-  stats.triangles_after = last.triangles;
-  stats.vertices_after = mesh.live_vertex_count();
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+};
+
+}  // namespace
+
+Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field) {
+  Optimize2dStats stats;
+  Rounds2 rounds{mesh, options, field, stats};
+  optimize_detail::optimize_rounds(rounds, mesh, options, stats, "optimize2d: at the start of a round");
   return stats;
 }
 

@@ -17,15 +17,15 @@
 #include <cstdint>
 #include <string>
 
+#include "algorithms/common/optimize_strategy.hpp"
 #include "algorithms/optimize3d/operators.hpp"
-#include "kernel/interrupt.hpp"
 #include "mesh/mesh3.hpp"
 
 namespace dtlab {
 
-struct Optimize3dOptions {
-  std::uint32_t max_rounds = 6;
-  double round_improvement = 1e-3;
+// The rounds' options (algorithms/common/optimize_strategy.hpp: at most 6 rounds, tetrahedra
+// with Q_K > 3 treated one by one) and the 3D operators'.
+struct Optimize3dOptions : OptimizeRoundOptions<6, 3.0> {
   // A goal (0: not asked): the rounds stop after the first one whose mesh has no Q_K above
   // goal_worst_quality, no dihedral angle below goal_min_dihedral_deg and none above
   // goal_max_dihedral_deg (Euclidean, degrees), whatever the improvement.
@@ -43,19 +43,12 @@ struct Optimize3dOptions {
   // With a goal, rounds after the first work only on the vertices within this many rings of
   // the tetrahedra that miss it (0: every round on the whole mesh).
   std::uint32_t goal_rings = 0;
-  // Tetrahedra worse than this are treated one by one, worst first, at the start of each round.
-  double bad_quality = 3.0;
-  bool swaps = true;
   // The swap pass starts from the tetrahedra worse than this (the others are reached as
   // neighbours of changed ones): a pass over all of them costs much and changes little.
   double swap_threshold = 1.5;
   // The same in the rounds restricted to the goal region (goal_rings): a small region affords
   // more seeds. 0: swap_threshold.
   double region_swap_threshold = 0.0;
-  bool relocation = true;
-  std::uint32_t relocation_sweeps = 2;  // per round
-  bool collapses = true;
-  bool splits = true;
   // Bad tetrahedra on four boundary vertices that no other operator cures get an interior
   // vertex (an edge split and the new vertex relocated, judged as one move; strategy.cpp).
   bool interior_vertices = true;
@@ -67,24 +60,16 @@ struct Optimize3dOptions {
   Relocate3Options relocate{};
   Collapse3Options collapse{};
   Split3Options split{};
-  // Asked before each round and each pass of a round (kernel/interrupt.hpp); yes: Interrupted.
-  InterruptCheck interrupt{};
 };
 
-struct Optimize3dStats {
+// The rounds' report (algorithms/common/optimize_strategy.hpp) and the operators' counts.
+struct Optimize3dStats : OptimizeRoundStats {
   std::uint64_t face_swaps = 0;
   std::uint64_t shell_transformations = 0;  // n -> 2n - 4, 3 -> 2 and 4 -> 4 included
   std::uint64_t relocations = 0;
   std::uint64_t collapses = 0;
   std::uint64_t splits = 0;
-  std::uint32_t rounds = 0;
-  double worst_before = 0.0, mean_before = 0.0;
-  double worst_after = 0.0, mean_after = 0.0;
   std::uint64_t tetrahedra_before = 0, tetrahedra_after = 0;  // in the domain
-  std::uint64_t vertices_before = 0, vertices_after = 0;      // live
-  // "converged", "goal", "max_rounds", "swap_limit" or "vertex_limit".
-  std::string stopped_by;
-  double seconds = 0.0;
 };
 
 struct QualitySummary3 {

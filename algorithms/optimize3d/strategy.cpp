@@ -5,7 +5,6 @@
 // relocation sweeps), and repeat while a round still improves the worst or the mean quality.
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <optional>
 #include <span>
@@ -13,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/common/optimize_strategy.hpp"
 #include "algorithms/optimize3d/local.hpp"
 #include "algorithms/optimize3d/optimize3d.hpp"
 #include "kernel/error.hpp"
@@ -277,57 +277,47 @@ void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const M
   }
 }
 
-}  // namespace
-
-QualitySummary3 summarize_quality(const Mesh3& mesh) { return scan_quality(mesh, nullptr, nullptr); }
-
-Optimize3dOptions optimize3d_effort(const std::string& level) {
-  Optimize3dOptions o;
-  if (level == "light") {
-    o.max_rounds = 1;
-    o.relocation_sweeps = 1;
-  } else if (level == "standard") {
-    o.swap_threshold = 2.0;
-    o.region_swap_threshold = 1.5;
-    o.relocation_sweeps = 1;
-    o.goal_rings = 3;
-    o.goal_worst_quality = 3.0;
-    o.goal_share_1_2 = 0.97;
-    o.goal_min_dihedral_deg = 20.0;
-    o.goal_max_dihedral_deg = 150.0;
-  } else if (level == "thorough") {
-    o.goal_min_dihedral_deg = 25.0;
-    o.goal_max_dihedral_deg = 150.0;
-    o.stop_at_goal = false;
-  } else {
-    throw InputError("unknown optimization effort '" + level + "' (light, standard, thorough)");
-  }
-  return o;
-}
-
-Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field) {
-  const auto start = std::chrono::steady_clock::now();
-  Optimize3dStats stats;
-  std::vector<std::uint8_t> flags;  // the last scan's goal flags, by tetrahedron slot
-  const Optimize3dOptions* goal = goal_asked(options) ? &options : nullptr;
-  const QualitySummary3 before = scan_quality(mesh, goal, &flags);
-  stats.worst_before = before.worst;
-  stats.mean_before = before.mean;
-  stats.tetrahedra_before = before.tetrahedra;
-  stats.vertices_before = mesh.live_vertex_count();
-  QualitySummary3 last = before;
+// The 3D part of the round loop (algorithms/common/optimize_strategy.hpp): a round's operators,
+// the goal, and the dihedral step after the rounds.
+struct Rounds3 {
+  Mesh3& mesh;
+  const Optimize3dOptions& options;
+  const MetricField3& field;
+  Optimize3dStats& stats;
+  const Optimize3dOptions* goal_options = goal_asked(options) ? &options : nullptr;
+  std::vector<std::uint8_t> flags{};  // the last scan's goal flags, by tetrahedron slot
   std::uint64_t last_misses = std::numeric_limits<std::uint64_t>::max();
-  optimize3d_detail::AttemptMemo memo_storage(mesh);
+  optimize3d_detail::AttemptMemo memo_storage{mesh};
   optimize3d_detail::AttemptMemo* memo = options.remember_failures ? &memo_storage : nullptr;
-  stats.stopped_by = "max_rounds";
-  for (std::uint32_t round = 0; round < options.max_rounds; ++round) {
-    poll_interrupt(options.interrupt, "optimize3d: at the start of a round");
-    ++stats.rounds;
+
+  QualitySummary3 scan() { return scan_quality(mesh, goal_options, &flags); }
+
+  optimize_detail::RoundGoal goal(const QualitySummary3& now) {
+    if (!goal_options) return {};
+    // A round that leaves a tenth fewer tetrahedra missing the goal improved too: rounds
+    // restricted to their region hardly move the mean.
+    const std::uint64_t misses = count_goal_misses(flags, share_short(now, options));
+    const bool gained = 10 * misses < 9 * last_misses;
+    last_misses = misses;
+    return {gained, options.stop_at_goal && meets_goal(now, options)};
+  }
+
+  void finish(const QualitySummary3& before, QualitySummary3& last) {
+    if (options.dihedral_step && options.goal_min_dihedral_deg > 0.0 &&
+        last.min_dihedral_deg < options.goal_min_dihedral_deg && options.relocation) {
+      stats.relocations += polish_dihedral_angles(mesh, options, field, last.worst);
+      last = scan_quality(mesh, nullptr, nullptr);
+    }
+    stats.tetrahedra_before = before.tetrahedra;
+    stats.tetrahedra_after = last.tetrahedra;
+  }
+
+  optimize_detail::RoundResult round(std::uint32_t index, const QualitySummary3& last) {
     std::uint64_t size_changes = 0;
     bool limit = false;
     // After the first round, with a goal and goal_rings: only around what misses it.
     std::vector<std::uint8_t> region_storage;
-    if (round > 0 && options.goal_rings > 0 && goal_asked(options))
+    if (index > 0 && options.goal_rings > 0 && goal_options)
       region_storage = goal_region(mesh, options, flags, share_short(last, options));
     const optimize3d_detail::Region region = region_storage;
     std::vector<std::uint32_t> seeds;
@@ -378,39 +368,44 @@ Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const 
         if (moved == 0) break;
       }
     }
-    const QualitySummary3 now = scan_quality(mesh, goal, &flags);
-    const double keep = 1.0 - options.round_improvement;
-    bool improved = now.worst < last.worst * keep || now.mean < last.mean * keep;
-    if (goal_asked(options)) {
-      // A round that leaves a tenth fewer tetrahedra missing the goal improved too: rounds
-      // restricted to their region hardly move the mean.
-      const std::uint64_t misses = count_goal_misses(flags, share_short(now, options));
-      improved = improved || 10 * misses < 9 * last_misses;
-      last_misses = misses;
-    }
-    last = now;
-    if (limit) break;
-    if (options.stop_at_goal && goal_asked(options) && meets_goal(now, options)) {
-      stats.stopped_by = "goal";
-      break;
-    }
     // A few collapses and splits that undo each other around a locked feature do not make a round
     // worth another: under one change per thousand vertices counts as none.
-    if (!improved && size_changes * 1000 <= mesh.live_vertex_count()) {
-      stats.stopped_by = "converged";
-      break;
-    }
+    return {size_changes * 1000 > mesh.live_vertex_count(), limit};
   }
-  if (options.dihedral_step && options.goal_min_dihedral_deg > 0.0 &&
-      last.min_dihedral_deg < options.goal_min_dihedral_deg && options.relocation) {
-    stats.relocations += polish_dihedral_angles(mesh, options, field, last.worst);
-    last = scan_quality(mesh, nullptr, nullptr);
+};
+
+}  // namespace
+
+QualitySummary3 summarize_quality(const Mesh3& mesh) { return scan_quality(mesh, nullptr, nullptr); }
+
+Optimize3dOptions optimize3d_effort(const std::string& level) {
+  Optimize3dOptions o;
+  if (level == "light") {
+    o.max_rounds = 1;
+    o.relocation_sweeps = 1;
+  } else if (level == "standard") {
+    o.swap_threshold = 2.0;
+    o.region_swap_threshold = 1.5;
+    o.relocation_sweeps = 1;
+    o.goal_rings = 3;
+    o.goal_worst_quality = 3.0;
+    o.goal_share_1_2 = 0.97;
+    o.goal_min_dihedral_deg = 20.0;
+    o.goal_max_dihedral_deg = 150.0;
+  } else if (level == "thorough") {
+    o.goal_min_dihedral_deg = 25.0;
+    o.goal_max_dihedral_deg = 150.0;
+    o.stop_at_goal = false;
+  } else {
+    throw InputError("unknown optimization effort '" + level + "' (light, standard, thorough)");
   }
-  stats.worst_after = last.worst;
-  stats.mean_after = last.mean;
-  stats.tetrahedra_after = last.tetrahedra;
-  stats.vertices_after = mesh.live_vertex_count();
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return o;
+}
+
+Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field) {
+  Optimize3dStats stats;
+  Rounds3 rounds{mesh, options, field, stats};
+  optimize_detail::optimize_rounds(rounds, mesh, options, stats, "optimize3d: at the start of a round");
   return stats;
 }
 

@@ -1,0 +1,105 @@
+// The round loop of the optimization strategy (book §8.6.3), written once for 2D and 3D: each
+// round the dimension's operators in their order, then a scan of the quality; rounds repeat while
+// one improves the worst or the mean Q_K by `round_improvement` (relative) or changes the sizes,
+// until a goal is met or max_rounds. The operators stay in optimize2d/ and optimize3d/.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+#include "kernel/interrupt.hpp"
+
+namespace dtlab {
+
+// What the rounds read in every dimension, with the dimension's defaults of max_rounds and
+// bad_quality; Optimize2dOptions and Optimize3dOptions add their operators' options.
+template <std::uint32_t kMaxRounds, double kBadQuality>
+struct OptimizeRoundOptions {
+  std::uint32_t max_rounds = kMaxRounds;
+  // Another round while the worst or the mean Q_K drops by more than this, relative.
+  double round_improvement = 1e-3;
+  // Elements worse than this are treated one by one, worst first, at the start of each round.
+  double bad_quality = kBadQuality;
+  bool swaps = true;
+  bool relocation = true;
+  std::uint32_t relocation_sweeps = 2;  // per round
+  bool collapses = true;                // short edges (size) and needles (shape)
+  bool splits = true;                   // long edges
+  // Asked before each round and each pass of a round (kernel/interrupt.hpp); yes: Interrupted.
+  InterruptCheck interrupt{};
+};
+
+// What the rounds report in every dimension (Optimize2dStats and Optimize3dStats add the counts
+// of their operators and elements).
+struct OptimizeRoundStats {
+  std::uint32_t rounds = 0;
+  // Q_K over the domain's elements (kernel/quality.hpp, in the vertex metrics); the mean over
+  // the finite values.
+  double worst_before = 0.0, mean_before = 0.0;
+  double worst_after = 0.0, mean_after = 0.0;
+  std::uint64_t vertices_before = 0, vertices_after = 0;  // live
+  // Why the rounds ended: "converged" (no further improvement), "goal" (3D), "max_rounds",
+  // "swap_limit" or "vertex_limit" (a pass stopped at its bound; the mesh is valid all the same).
+  std::string stopped_by;
+  double seconds = 0.0;
+};
+
+namespace optimize_detail {
+
+struct RoundResult {
+  bool resized = false;  // the collapses and splits changed the sizes (more than the dimension ignores)
+  bool limit = false;    // a pass stopped at its bound (and named it in stopped_by)
+};
+
+struct RoundGoal {
+  bool gained = false;  // the round improved whatever the worst and the mean did
+  bool met = false;     // stop after this round
+};
+
+// The rounds on `mesh`. `Dim` provides (its Summary has `worst` and `mean`):
+//   Summary scan()                                      the quality before the rounds and after each;
+//   RoundResult round(uint32_t r, const Summary& last)  round r's operators in their order, the
+//                                                       interrupt polled between passes;
+//   RoundGoal goal(const Summary& now)                  asked once after each round's scan;
+//   void finish(const Summary& before, Summary& last)   after the rounds (may change the mesh and
+//                                                       `last`): the element counts into the stats.
+// `round_start` names the point of an interrupt at the start of a round.
+template <class Dim, class Mesh, class Options>
+void optimize_rounds(Dim& dim, const Mesh& mesh, const Options& options, OptimizeRoundStats& stats,
+                     const char* round_start) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto before = dim.scan();
+  stats.worst_before = before.worst;
+  stats.mean_before = before.mean;
+  stats.vertices_before = mesh.live_vertex_count();
+  auto last = before;
+  stats.stopped_by = "max_rounds";
+  for (std::uint32_t round = 0; round < options.max_rounds; ++round) {
+    poll_interrupt(options.interrupt, round_start);
+    ++stats.rounds;
+    const RoundResult r = dim.round(round, last);
+    const auto now = dim.scan();
+    const RoundGoal goal = dim.goal(now);
+    const double keep = 1.0 - options.round_improvement;
+    const bool improved = goal.gained || now.worst < last.worst * keep || now.mean < last.mean * keep;
+    last = now;
+    if (r.limit) break;
+    if (goal.met) {
+      stats.stopped_by = "goal";
+      break;
+    }
+    if (!improved && !r.resized) {
+      stats.stopped_by = "converged";
+      break;
+    }
+  }
+  dim.finish(before, last);
+  stats.worst_after = last.worst;
+  stats.mean_after = last.mean;
+  stats.vertices_after = mesh.live_vertex_count();
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace optimize_detail
+}  // namespace dtlab
