@@ -7,6 +7,7 @@
 #include <string>
 
 #include "algorithms/adapt/transfer_apply.hpp"
+#include "algorithms/common/transfer_walk.hpp"
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
@@ -82,6 +83,37 @@ P1Weights weights_in(const Mesh2& mesh, std::uint32_t t, const Vec2& p) {
   return P1Weights{{v0, v1, v2}, {w0, w1, w2}};
 }
 
+// The 2D placement of a new vertex for the walk of algorithms/common/transfer_walk.hpp.
+struct Walk2 {
+  static constexpr const char* kSize = "the length of the nearest old boundary edge";
+  const Mesh2& mesh;
+  const ElementGrid<Vec2>& grid;  // triangle t of the old mesh is slot t of `mesh` (mesh2_from_data)
+  std::uint32_t boundary_search;
+  std::uint32_t hint;
+
+  transfer_detail::Placement<P1Weights> place(const Vec2& p) {
+    const Mesh2::Location loc = mesh.locate(p, hint);
+    if (loc.where != Mesh2::Where::Outside) {
+      hint = loc.triangle;
+      if (loc.where == Mesh2::Where::Vertex) return {{{loc.handle, loc.handle, loc.handle}, {1.0, 0.0, 0.0}}};
+      return {weights_in(mesh, loc.triangle, p)};
+    }
+    const Snap snap = nearest_boundary(mesh, loc.triangle, p, boundary_search);
+    hint = Mesh2::triangle_of(mesh.twin(Mesh2::half_edge(loc.triangle, 0)));
+    // On the domain's side of its nearest boundary edge: the walk left through a concavity or a
+    // hole, p may be inside after all.
+    if (orient2d(mesh.point(snap.a), mesh.point(snap.b), p) != Sign::Negative) {
+      const std::uint32_t t = settle(mesh, grid, p);
+      if (t != Mesh2::kNone) {
+        hint = t;
+        return {weights_in(mesh, t, p), transfer_detail::Placed::Rescanned};
+      }
+    }
+    return {{{snap.a, snap.b, snap.b}, {1.0 - snap.s, snap.s, 0.0}}, transfer_detail::Placed::Outside, snap.distance,
+            snap.edge_length};
+  }
+};
+
 }  // namespace
 
 double integrate_p1(const MeshData2& mesh, std::span<const double> field, std::size_t components,
@@ -103,62 +135,18 @@ std::vector<P1Weights> transfer_weights2(const MeshData2& old_mesh, const MeshDa
   if (old_mesh.triangles.empty()) throw InputError("the old mesh has no triangle");
   transfer_detail::check_elements(new_mesh, "new");
   const Mesh2 mesh = mesh2_from_data(old_mesh);  // names an invalid old mesh (numbered from 1)
-  TransferStats local;
-  TransferStats& st = stats ? *stats : local;
-  st = TransferStats{};
-
   std::vector<std::uint32_t> order(new_mesh.vertices.size());
   std::iota(order.begin(), order.end(), 0u);
   hilbert_sort(new_mesh.vertices, order);
-
   std::uint32_t hint = Mesh2::kNone;
   for (std::uint32_t t = 0; t < mesh.triangle_capacity() && hint == Mesh2::kNone; ++t) {
     if (mesh.is_alive(t) && !mesh.is_ghost(t)) hint = t;
   }
-  // Triangle t of the old mesh is slot t of `mesh` (mesh2_from_data).
   const ElementGrid<Vec2> grid(std::span<const Vec2>(old_mesh.vertices),
                                std::span<const std::array<std::uint32_t, 3>>(old_mesh.triangles));
-  std::vector<P1Weights> out(new_mesh.vertices.size());
-  for (std::uint32_t v : order) {
-    const Vec2& p = new_mesh.vertices[v];
-    const Mesh2::Location loc = mesh.locate(p, hint);
-    if (loc.where == Mesh2::Where::Vertex) {
-      out[v] = P1Weights{{loc.handle, loc.handle, loc.handle}, {1.0, 0.0, 0.0}};
-      hint = loc.triangle;
-      ++st.located;
-      continue;
-    }
-    if (loc.where != Mesh2::Where::Outside) {
-      out[v] = weights_in(mesh, loc.triangle, p);
-      hint = loc.triangle;
-      ++st.located;
-      continue;
-    }
-    const Snap snap = nearest_boundary(mesh, loc.triangle, p, options.boundary_search);
-    hint = Mesh2::triangle_of(mesh.twin(Mesh2::half_edge(loc.triangle, 0)));
-    // On the domain's side of its nearest boundary edge: the walk left through a concavity or a
-    // hole, p may be inside after all.
-    if (orient2d(mesh.point(snap.a), mesh.point(snap.b), p) != Sign::Negative) {
-      const std::uint32_t t = settle(mesh, grid, p);
-      if (t != Mesh2::kNone) {
-        out[v] = weights_in(mesh, t, p);
-        hint = t;
-        ++st.located;
-        ++st.rescanned;
-        continue;
-      }
-    }
-    if (snap.distance > options.outside_limit * snap.edge_length) {
-      throw InputError("new vertex " + std::to_string(v + 1) + " lies " + std::to_string(snap.distance) +
-                           " outside the old mesh, more than " + std::to_string(options.outside_limit) +
-                           " x the length of the nearest old boundary edge (" + std::to_string(snap.edge_length) + ")",
-                       {std::uint64_t{v} + 1});
-    }
-    out[v] = P1Weights{{snap.a, snap.b, snap.b}, {1.0 - snap.s, snap.s, 0.0}};
-    ++st.snapped;
-    st.max_outside_distance = std::max(st.max_outside_distance, snap.distance);
-  }
-  return out;
+  Walk2 walk{mesh, grid, options.boundary_search, hint};
+  return transfer_detail::transfer_walk(walk, std::span<const Vec2>(new_mesh.vertices), order, options.outside_limit,
+                                        stats);
 }
 
 std::vector<Metric2> transfer_metrics2(const MeshData2& old_mesh, std::span<const Metric2> metrics,

@@ -12,6 +12,7 @@
 
 #include "algorithms/adapt/transfer.hpp"
 #include "algorithms/adapt/transfer_apply.hpp"
+#include "algorithms/common/transfer_walk.hpp"
 #include "algorithms/spatial_sort.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
@@ -94,6 +95,56 @@ std::vector<std::array<std::uint32_t, 3>> boundary_triangles(const MeshData3& me
   return out;
 }
 
+// The 3D placement of a new vertex for the walk of algorithms/common/transfer_walk.hpp.
+struct Walk3 {
+  static constexpr const char* kSize = "the longest edge of the nearest old boundary triangle";
+  const MeshData3& old_mesh;
+  const Mesh3& mesh;              // tetrahedron t of the data is slot t of the mesh
+  const ElementGrid<Vec3>& grid;  // of the old tetrahedra
+  std::span<const std::array<std::uint32_t, 3>> boundary;
+  const ElementGrid<Vec3>& boundary_grid;  // of the boundary triangles
+  std::uint32_t hint = 0;
+
+  transfer_detail::Placement<P1Weights3> place(const Vec3& p) {
+    const Mesh3::Location loc = mesh.locate(p, hint);
+    if (loc.where != Mesh3::Where::Outside) {
+      hint = loc.tetrahedron;
+      return {weights_in(old_mesh, hint, p)};
+    }
+    for (const std::uint32_t c : grid.candidates(p)) {
+      const auto& ids = old_mesh.tetrahedra[c];
+      if (closed_tetrahedron_holds(old_mesh.vertices[ids[0]], old_mesh.vertices[ids[1]], old_mesh.vertices[ids[2]],
+                                   old_mesh.vertices[ids[3]], p)) {
+        hint = c;
+        return {weights_in(old_mesh, c, p), transfer_detail::Placed::Rescanned};
+      }
+    }
+    // Outside: the nearest point of the boundary triangles of p's bucket (all of them if none).
+    std::span<const std::uint32_t> near = boundary_grid.candidates(p);
+    std::vector<std::uint32_t> all;
+    if (near.empty()) {
+      all.resize(boundary.size());
+      std::iota(all.begin(), all.end(), 0u);
+      near = all;
+    }
+    transfer_detail::Placement<P1Weights3> at{{}, transfer_detail::Placed::Outside,
+                                              std::numeric_limits<double>::infinity(), 0.0};
+    for (const std::uint32_t f : near) {
+      const auto& ids = boundary[f];
+      const Vec3 &a = old_mesh.vertices[ids[0]], &b = old_mesh.vertices[ids[1]], &c = old_mesh.vertices[ids[2]];
+      const std::array<double, 3> w = nearest_on_triangle(p, a, b, c);
+      const Vec3 q = w[0] * a + w[1] * b + w[2] * c;
+      const double d = norm(p - q);
+      if (d < at.distance) {
+        at.distance = d;
+        at.size = std::max({norm(b - a), norm(c - b), norm(a - c)});
+        at.weights = P1Weights3{{ids[0], ids[1], ids[2], ids[2]}, {w[0], w[1], w[2], 0.0}};
+      }
+    }
+    return at;
+  }
+};
+
 }  // namespace
 
 double integrate_p1(const MeshData3& mesh, std::span<const double> field, std::size_t components,
@@ -116,9 +167,6 @@ std::vector<P1Weights3> transfer_weights3(const MeshData3& old_mesh, const MeshD
   if (old_mesh.tetrahedra.empty()) throw InputError("the old mesh has no tetrahedron");
   transfer_detail::check_elements(new_mesh, "new");
   const Mesh3 mesh = mesh3_from_data(old_mesh);  // names an invalid old mesh (numbered from 1)
-  TransferStats local;
-  TransferStats& st = stats ? *stats : local;
-  st = TransferStats{};
   const ElementGrid<Vec3> grid(std::span<const Vec3>(old_mesh.vertices),
                                std::span<const std::array<std::uint32_t, 4>>(old_mesh.tetrahedra));
   const std::vector<std::array<std::uint32_t, 3>> boundary = boundary_triangles(old_mesh);
@@ -128,64 +176,9 @@ std::vector<P1Weights3> transfer_weights3(const MeshData3& old_mesh, const MeshD
   std::vector<std::uint32_t> order(new_mesh.vertices.size());
   std::iota(order.begin(), order.end(), 0u);
   hilbert_sort(new_mesh.vertices, order);
-  std::uint32_t hint = 0;  // tetrahedron t of the data is slot t of the mesh
-  std::vector<P1Weights3> out(new_mesh.vertices.size());
-  for (const std::uint32_t v : order) {
-    const Vec3& p = new_mesh.vertices[v];
-    const Mesh3::Location loc = mesh.locate(p, hint);
-    std::uint32_t t = Mesh3::kNone;
-    if (loc.where != Mesh3::Where::Outside) {
-      t = loc.tetrahedron;
-    } else {
-      for (const std::uint32_t c : grid.candidates(p)) {
-        const auto& ids = old_mesh.tetrahedra[c];
-        if (closed_tetrahedron_holds(old_mesh.vertices[ids[0]], old_mesh.vertices[ids[1]], old_mesh.vertices[ids[2]],
-                                     old_mesh.vertices[ids[3]], p)) {
-          t = c;
-          ++st.rescanned;
-          break;
-        }
-      }
-    }
-    if (t != Mesh3::kNone) {
-      out[v] = weights_in(old_mesh, t, p);
-      hint = t;
-      ++st.located;
-      continue;
-    }
-    // Outside: the nearest point of the boundary triangles of p's bucket (all of them if none).
-    std::span<const std::uint32_t> near = boundary_grid.candidates(p);
-    std::vector<std::uint32_t> all;
-    if (near.empty()) {
-      all.resize(boundary.size());
-      std::iota(all.begin(), all.end(), 0u);
-      near = all;
-    }
-    double best = std::numeric_limits<double>::infinity(), longest = 0.0;
-    P1Weights3 snapped;
-    for (const std::uint32_t f : near) {
-      const auto& ids = boundary[f];
-      const Vec3 &a = old_mesh.vertices[ids[0]], &b = old_mesh.vertices[ids[1]], &c = old_mesh.vertices[ids[2]];
-      const std::array<double, 3> w = nearest_on_triangle(p, a, b, c);
-      const Vec3 q = w[0] * a + w[1] * b + w[2] * c;
-      const double d = norm(p - q);
-      if (d < best) {
-        best = d;
-        longest = std::max({norm(b - a), norm(c - b), norm(a - c)});
-        snapped = P1Weights3{{ids[0], ids[1], ids[2], ids[2]}, {w[0], w[1], w[2], 0.0}};
-      }
-    }
-    if (best > options.outside_limit * longest) {
-      throw InputError("new vertex " + std::to_string(v + 1) + " lies " + std::to_string(best) +
-                           " outside the old mesh, more than " + std::to_string(options.outside_limit) +
-                           " x the longest edge of the nearest old boundary triangle (" + std::to_string(longest) + ")",
-                       {std::uint64_t{v} + 1});
-    }
-    out[v] = snapped;
-    ++st.snapped;
-    st.max_outside_distance = std::max(st.max_outside_distance, best);
-  }
-  return out;
+  Walk3 walk{old_mesh, mesh, grid, boundary, boundary_grid};
+  return transfer_detail::transfer_walk(walk, std::span<const Vec3>(new_mesh.vertices), order, options.outside_limit,
+                                        stats);
 }
 
 std::vector<double> transfer_field3(const MeshData3& old_mesh, std::span<const double> field, std::size_t components,
