@@ -86,10 +86,13 @@ P1Weights weights_in(const Mesh2& mesh, std::uint32_t t, const Vec2& p) {
 // The 2D placement of a new vertex for the walk of algorithms/common/transfer_walk.hpp.
 struct Walk2 {
   static constexpr const char* kSize = "the length of the nearest old boundary edge";
-  const Mesh2& mesh;
-  const ElementGrid<Vec2>& grid;  // triangle t of the old mesh is slot t of `mesh` (mesh2_from_data)
+  const MeshData2& old_mesh;
   std::uint32_t boundary_search;
-  std::uint32_t hint;
+  const Mesh2 mesh = mesh2_from_data(old_mesh);  // names an invalid old mesh (numbered from 1)
+  // Triangle t of the old mesh is slot t of `mesh` (mesh2_from_data).
+  const ElementGrid<Vec2> grid{std::span<const Vec2>(old_mesh.vertices),
+                               std::span<const std::array<std::uint32_t, 3>>(old_mesh.triangles)};
+  std::uint32_t hint = Mesh2::kNone;
 
   transfer_detail::Placement<P1Weights> place(const Vec2& p) {
     const Mesh2::Location loc = mesh.locate(p, hint);
@@ -118,33 +121,23 @@ struct Walk2 {
 
 double integrate_p1(const MeshData2& mesh, std::span<const double> field, std::size_t components,
                     std::size_t component) {
-  transfer_detail::check_elements(mesh, "integrated");
-  if (field.size() != components * mesh.vertices.size()) throw InputError("integrate_p1: field size mismatch");
-  double sum = 0.0;
-  for (const auto& tri : mesh.triangles) {
+  return transfer_detail::integrate_elements(mesh, field, components, component, [&](const auto& tri) {
     const Vec2 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
-    const double area = 0.5 * cross(b - a, c - a);
-    sum += area * (field[tri[0] * components + component] + field[tri[1] * components + component] +
-                   field[tri[2] * components + component]) / 3.0;
-  }
-  return sum;
+    return 0.5 * cross(b - a, c - a);
+  });
 }
 
 std::vector<P1Weights> transfer_weights2(const MeshData2& old_mesh, const MeshData2& new_mesh,
                                          const TransferOptions& options, TransferStats* stats) {
   if (old_mesh.triangles.empty()) throw InputError("the old mesh has no triangle");
   transfer_detail::check_elements(new_mesh, "new");
-  const Mesh2 mesh = mesh2_from_data(old_mesh);  // names an invalid old mesh (numbered from 1)
+  Walk2 walk{old_mesh, options.boundary_search};
   std::vector<std::uint32_t> order(new_mesh.vertices.size());
   std::iota(order.begin(), order.end(), 0u);
   hilbert_sort(new_mesh.vertices, order);
-  std::uint32_t hint = Mesh2::kNone;
-  for (std::uint32_t t = 0; t < mesh.triangle_capacity() && hint == Mesh2::kNone; ++t) {
-    if (mesh.is_alive(t) && !mesh.is_ghost(t)) hint = t;
+  for (std::uint32_t t = 0; t < walk.mesh.triangle_capacity() && walk.hint == Mesh2::kNone; ++t) {
+    if (walk.mesh.is_alive(t) && !walk.mesh.is_ghost(t)) walk.hint = t;
   }
-  const ElementGrid<Vec2> grid(std::span<const Vec2>(old_mesh.vertices),
-                               std::span<const std::array<std::uint32_t, 3>>(old_mesh.triangles));
-  Walk2 walk{mesh, grid, options.boundary_search, hint};
   return transfer_detail::transfer_walk(walk, std::span<const Vec2>(new_mesh.vertices), order, options.outside_limit,
                                         stats);
 }
@@ -152,17 +145,12 @@ std::vector<P1Weights> transfer_weights2(const MeshData2& old_mesh, const MeshDa
 std::vector<Metric2> transfer_metrics2(const MeshData2& old_mesh, std::span<const Metric2> metrics,
                                        const MeshData2& new_mesh, const TransferOptions& options,
                                        TransferStats* stats, MetricInterpolation mode) {
-  transfer_detail::check_metrics(old_mesh.vertices.size(), metrics.size());
-  return transfer_detail::apply_metrics(metrics, transfer_weights2(old_mesh, new_mesh, options, stats), mode);
+  return transfer_detail::apply_metrics(old_mesh, metrics, new_mesh, options, stats, mode, transfer_weights2);
 }
 
 std::vector<double> transfer_field2(const MeshData2& old_mesh, std::span<const double> field, std::size_t components,
                                     const MeshData2& new_mesh, const TransferOptions& options, TransferStats* stats) {
-  transfer_detail::check_field(old_mesh, field, components);
-  TransferStats local;
-  TransferStats& st = stats ? *stats : local;
-  const std::vector<P1Weights> weights = transfer_weights2(old_mesh, new_mesh, options, &st);
-  return transfer_detail::apply_field(old_mesh, field, components, new_mesh, weights, options.conservative, st);
+  return transfer_detail::apply_field(old_mesh, field, components, new_mesh, options, stats, transfer_weights2);
 }
 
 }  // namespace dtlab

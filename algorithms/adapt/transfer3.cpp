@@ -99,11 +99,13 @@ std::vector<std::array<std::uint32_t, 3>> boundary_triangles(const MeshData3& me
 struct Walk3 {
   static constexpr const char* kSize = "the longest edge of the nearest old boundary triangle";
   const MeshData3& old_mesh;
-  const Mesh3& mesh;              // tetrahedron t of the data is slot t of the mesh
-  const ElementGrid<Vec3>& grid;  // of the old tetrahedra
-  std::span<const std::array<std::uint32_t, 3>> boundary;
-  const ElementGrid<Vec3>& boundary_grid;  // of the boundary triangles
-  std::uint32_t hint = 0;
+  const Mesh3 mesh = mesh3_from_data(old_mesh);  // names an invalid old mesh (numbered from 1)
+  const ElementGrid<Vec3> grid{std::span<const Vec3>(old_mesh.vertices),
+                               std::span<const std::array<std::uint32_t, 4>>(old_mesh.tetrahedra)};
+  const std::vector<std::array<std::uint32_t, 3>> boundary = boundary_triangles(old_mesh);
+  const ElementGrid<Vec3> boundary_grid{std::span<const Vec3>(old_mesh.vertices),
+                                        std::span<const std::array<std::uint32_t, 3>>(boundary)};
+  std::uint32_t hint = 0;  // tetrahedron t of the data is slot t of the mesh
 
   transfer_detail::Placement<P1Weights3> place(const Vec3& p) {
     const Mesh3::Location loc = mesh.locate(p, hint);
@@ -149,52 +151,33 @@ struct Walk3 {
 
 double integrate_p1(const MeshData3& mesh, std::span<const double> field, std::size_t components,
                     std::size_t component) {
-  transfer_detail::check_elements(mesh, "integrated");
-  if (field.size() != components * mesh.vertices.size()) throw InputError("integrate_p1: field size mismatch");
-  double sum = 0.0;
-  for (const auto& t : mesh.tetrahedra) {
+  return transfer_detail::integrate_elements(mesh, field, components, component, [&](const auto& t) {
     const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]], &d = mesh.vertices[t[3]];
-    const double volume = det3(b - a, c - a, d - a) / 6.0;
-    double mean = 0.0;
-    for (const std::uint32_t v : t) mean += field[v * components + component];
-    sum += volume * mean / 4.0;
-  }
-  return sum;
+    return det3(b - a, c - a, d - a) / 6.0;
+  });
 }
 
 std::vector<P1Weights3> transfer_weights3(const MeshData3& old_mesh, const MeshData3& new_mesh,
                                           const TransferOptions& options, TransferStats* stats) {
   if (old_mesh.tetrahedra.empty()) throw InputError("the old mesh has no tetrahedron");
   transfer_detail::check_elements(new_mesh, "new");
-  const Mesh3 mesh = mesh3_from_data(old_mesh);  // names an invalid old mesh (numbered from 1)
-  const ElementGrid<Vec3> grid(std::span<const Vec3>(old_mesh.vertices),
-                               std::span<const std::array<std::uint32_t, 4>>(old_mesh.tetrahedra));
-  const std::vector<std::array<std::uint32_t, 3>> boundary = boundary_triangles(old_mesh);
-  const ElementGrid<Vec3> boundary_grid(std::span<const Vec3>(old_mesh.vertices),
-                                        std::span<const std::array<std::uint32_t, 3>>(boundary));
-
+  Walk3 walk{old_mesh};
   std::vector<std::uint32_t> order(new_mesh.vertices.size());
   std::iota(order.begin(), order.end(), 0u);
   hilbert_sort(new_mesh.vertices, order);
-  Walk3 walk{old_mesh, mesh, grid, boundary, boundary_grid};
   return transfer_detail::transfer_walk(walk, std::span<const Vec3>(new_mesh.vertices), order, options.outside_limit,
                                         stats);
 }
 
 std::vector<double> transfer_field3(const MeshData3& old_mesh, std::span<const double> field, std::size_t components,
                                     const MeshData3& new_mesh, const TransferOptions& options, TransferStats* stats) {
-  transfer_detail::check_field(old_mesh, field, components);
-  TransferStats local;
-  TransferStats& st = stats ? *stats : local;
-  const std::vector<P1Weights3> weights = transfer_weights3(old_mesh, new_mesh, options, &st);
-  return transfer_detail::apply_field(old_mesh, field, components, new_mesh, weights, options.conservative, st);
+  return transfer_detail::apply_field(old_mesh, field, components, new_mesh, options, stats, transfer_weights3);
 }
 
 std::vector<Metric3> transfer_metrics3(const MeshData3& old_mesh, std::span<const Metric3> metrics,
                                        const MeshData3& new_mesh, const TransferOptions& options,
                                        TransferStats* stats, MetricInterpolation mode) {
-  transfer_detail::check_metrics(old_mesh.vertices.size(), metrics.size());
-  return transfer_detail::apply_metrics(metrics, transfer_weights3(old_mesh, new_mesh, options, stats), mode);
+  return transfer_detail::apply_metrics(old_mesh, metrics, new_mesh, options, stats, mode, transfer_weights3);
 }
 
 }  // namespace dtlab

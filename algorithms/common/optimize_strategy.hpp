@@ -4,9 +4,12 @@
 // until a goal is met or max_rounds. The operators stay in optimize2d/ and optimize3d/.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "kernel/interrupt.hpp"
 
@@ -57,26 +60,60 @@ struct RoundGoal {
   bool met = false;     // stop after this round
 };
 
-// The rounds on `mesh`. `Dim` provides (its Summary has `worst` and `mean`):
+// An element worse than bad_quality, with its vertices then: an earlier treatment may change its slot.
+template <class Vertices>
+struct BadElement {
+  double quality;
+  std::uint32_t t;
+  Vertices v;
+};
+
+// The domain's elements among `capacity` slots with `quality(t)` above bad_quality, worst first
+// (ties by slot), with their `vertices(t)`: the order in which a round treats them one by one.
+template <class Mesh, class Quality, class Vertices>
+auto bad_elements(const Mesh& mesh, std::uint32_t capacity, double bad_quality, Quality quality, Vertices vertices) {
+  std::vector<BadElement<decltype(vertices(0u))>> bad;
+  for (std::uint32_t t = 0; t < capacity; ++t) {
+    if (!mesh.in_domain(t)) continue;
+    const double q = quality(t);
+    if (q > bad_quality) bad.push_back({q, t, vertices(t)});
+  }
+  std::sort(bad.begin(), bad.end(), [](const auto& x, const auto& y) {
+    return x.quality > y.quality || (x.quality == y.quality && x.t < y.t);
+  });
+  return bad;
+}
+
+// What a run of the rounds works on: each dimension's policy derives from it.
+template <class Mesh, class Options, class Field, class Stats>
+struct RoundState {
+  Mesh& mesh;
+  const Options& options;  // an OptimizeRoundOptions
+  const Field& field;
+  Stats stats{};           // an OptimizeRoundStats, returned at the end
+};
+
+// The rounds. `Dim` derives from RoundState, names the point of an interrupt at the start of a
+// round `kRoundStart`, and provides (its Summary has `worst` and `mean`):
 //   Summary scan()                                      the quality before the rounds and after each;
 //   RoundResult round(uint32_t r, const Summary& last)  round r's operators in their order, the
 //                                                       interrupt polled between passes;
 //   RoundGoal goal(const Summary& now)                  asked once after each round's scan;
 //   void finish(const Summary& before, Summary& last)   after the rounds (may change the mesh and
 //                                                       `last`): the element counts into the stats.
-// `round_start` names the point of an interrupt at the start of a round.
-template <class Dim, class Mesh, class Options>
-void optimize_rounds(Dim& dim, const Mesh& mesh, const Options& options, OptimizeRoundStats& stats,
-                     const char* round_start) {
+template <class Dim>
+auto optimize_rounds(Dim&& dim) {
   const auto start = std::chrono::steady_clock::now();
+  const auto& options = dim.options;
+  auto& stats = dim.stats;
   const auto before = dim.scan();
   stats.worst_before = before.worst;
   stats.mean_before = before.mean;
-  stats.vertices_before = mesh.live_vertex_count();
+  stats.vertices_before = dim.mesh.live_vertex_count();
   auto last = before;
   stats.stopped_by = "max_rounds";
   for (std::uint32_t round = 0; round < options.max_rounds; ++round) {
-    poll_interrupt(options.interrupt, round_start);
+    poll_interrupt(options.interrupt, dim.kRoundStart);
     ++stats.rounds;
     const RoundResult r = dim.round(round, last);
     const auto now = dim.scan();
@@ -97,8 +134,9 @@ void optimize_rounds(Dim& dim, const Mesh& mesh, const Options& options, Optimiz
   dim.finish(before, last);
   stats.worst_after = last.worst;
   stats.mean_after = last.mean;
-  stats.vertices_after = mesh.live_vertex_count();
+  stats.vertices_after = dim.mesh.live_vertex_count();
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::move(stats);
 }
 
 }  // namespace optimize_detail

@@ -43,26 +43,12 @@ namespace {
 // The bad triangles, worst first: for each, the operators of its pathology until one applies.
 void treat_bad_triangles(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field,
                          Optimize2dStats& stats) {
-  struct Bad {
-    double quality;
-    std::uint32_t t;
-    std::array<std::uint32_t, 3> vertices;
-  };
-  std::vector<Bad> bad;
-  for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) {
-    if (!mesh.in_domain(t)) continue;
-    const double q = triangle_quality(mesh, t);
-    if (q > options.bad_quality) bad.push_back({q, t, {mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2)}});
-  }
-  std::sort(bad.begin(), bad.end(),
-            [](const Bad& x, const Bad& y) { return x.quality > y.quality || (x.quality == y.quality && x.t < y.t); });
-  for (const Bad& b : bad) {
+  auto quality = [&](std::uint32_t t) { return triangle_quality(mesh, t); };
+  auto vertices = [&](std::uint32_t t) { return std::array{mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2)}; };
+  const auto bad = optimize_detail::bad_elements(mesh, mesh.triangle_capacity(), options.bad_quality, quality, vertices);
+  for (const auto& b : bad) {
     const std::uint32_t t = b.t;
-    // An earlier operation may have changed or freed the slot.
-    if (!mesh.in_domain(t) || mesh.vertex(t, 0) != b.vertices[0] || mesh.vertex(t, 1) != b.vertices[1] ||
-        mesh.vertex(t, 2) != b.vertices[2]) {
-      continue;
-    }
+    if (!mesh.in_domain(t) || vertices(t) != b.v) continue;  // changed or freed by an earlier one
     // Edges by metric length, longest first: edge i is opposite vertex i.
     std::array<std::pair<double, std::uint32_t>, 3> edges;
     for (std::uint32_t i = 0; i < 3; ++i) {
@@ -84,7 +70,7 @@ void treat_bad_triangles(Mesh2& mesh, const Optimize2dOptions& options, const Me
     }
     if (done) continue;
     if (options.relocation) {
-      for (const std::uint32_t v : b.vertices) {
+      for (const std::uint32_t v : b.v) {
         if (try_relocate(mesh, v, field, options.relocate)) {
           ++stats.relocations;
           done = true;
@@ -107,11 +93,8 @@ void treat_bad_triangles(Mesh2& mesh, const Optimize2dOptions& options, const Me
 }
 
 // The 2D part of the round loop (algorithms/common/optimize_strategy.hpp): a round's operators.
-struct Rounds2 {
-  Mesh2& mesh;
-  const Optimize2dOptions& options;
-  const MetricField2& field;
-  Optimize2dStats& stats;
+struct Rounds2 : optimize_detail::RoundState<Mesh2, Optimize2dOptions, MetricField2, Optimize2dStats> {
+  static constexpr const char* kRoundStart = "optimize2d: at the start of a round";
 
   QualitySummary2 scan() const { return summarize_quality(mesh); }
   optimize_detail::RoundGoal goal(const QualitySummary2&) const { return {}; }
@@ -175,10 +158,7 @@ struct Rounds2 {
 }  // namespace
 
 Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field) {
-  Optimize2dStats stats;
-  Rounds2 rounds{mesh, options, field, stats};
-  optimize_detail::optimize_rounds(rounds, mesh, options, stats, "optimize2d: at the start of a round");
-  return stats;
+  return optimize_detail::optimize_rounds(Rounds2{{mesh, options, field}});
 }
 
 }  // namespace dtlab

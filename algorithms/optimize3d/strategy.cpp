@@ -186,21 +186,10 @@ constexpr std::array<std::array<std::uint32_t, 2>, 6> kEdges{{{0, 1}, {0, 2}, {0
 
 void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field,
                           Optimize3dStats& stats) {
-  struct Bad {
-    double quality;
-    std::uint32_t t;
-    std::array<std::uint32_t, 4> v;
-  };
-  std::vector<Bad> bad;
-  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
-    if (!mesh.in_domain(t)) continue;
-    const double q = tetrahedron_quality(mesh, t);
-    if (q > options.bad_quality) bad.push_back({q, t, mesh.tetrahedron(t)});
-  }
   std::vector<std::uint32_t> shell, ring, ball;  // (the interior-vertex treatment's, below)
-  std::sort(bad.begin(), bad.end(),
-            [](const Bad& x, const Bad& y) { return x.quality > y.quality || (x.quality == y.quality && x.t < y.t); });
-  for (const Bad& b : bad) {
+  for (const auto& b : optimize_detail::bad_elements(mesh, mesh.tetrahedron_capacity(), options.bad_quality,
+                                                     [&](std::uint32_t t) { return tetrahedron_quality(mesh, t); },
+                                                     [&](std::uint32_t t) { return mesh.tetrahedron(t); })) {
     if (!mesh.in_domain(b.t) || mesh.tetrahedron(b.t) != b.v) continue;  // changed by an earlier one
     bool done = false;
     if (options.swaps) {
@@ -279,11 +268,8 @@ void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const M
 
 // The 3D part of the round loop (algorithms/common/optimize_strategy.hpp): a round's operators,
 // the goal, and the dihedral step after the rounds.
-struct Rounds3 {
-  Mesh3& mesh;
-  const Optimize3dOptions& options;
-  const MetricField3& field;
-  Optimize3dStats& stats;
+struct Rounds3 : optimize_detail::RoundState<Mesh3, Optimize3dOptions, MetricField3, Optimize3dStats> {
+  static constexpr const char* kRoundStart = "optimize3d: at the start of a round";
   const Optimize3dOptions* goal_options = goal_asked(options) ? &options : nullptr;
   std::vector<std::uint8_t> flags{};  // the last scan's goal flags, by tetrahedron slot
   std::uint64_t last_misses = std::numeric_limits<std::uint64_t>::max();
@@ -403,10 +389,7 @@ Optimize3dOptions optimize3d_effort(const std::string& level) {
 }
 
 Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field) {
-  Optimize3dStats stats;
-  Rounds3 rounds{mesh, options, field, stats};
-  optimize_detail::optimize_rounds(rounds, mesh, options, stats, "optimize3d: at the start of a round");
-  return stats;
+  return optimize_detail::optimize_rounds(Rounds3{{mesh, options, field}});
 }
 
 }  // namespace dtlab
