@@ -34,11 +34,10 @@ struct OptimizeRoundOptions {
 };
 
 // What the rounds report in every dimension (Optimize2dStats and Optimize3dStats add the counts
-// of their operators and elements).
+// of their operators and elements). Q_K over the domain's elements (kernel/quality.hpp, in the
+// vertex metrics); the mean over the finite values.
 struct OptimizeRoundStats {
   std::uint32_t rounds = 0;
-  // Q_K over the domain's elements (kernel/quality.hpp, in the vertex metrics); the mean over
-  // the finite values.
   double worst_before = 0.0, mean_before = 0.0;
   double worst_after = 0.0, mean_after = 0.0;
   std::uint64_t vertices_before = 0, vertices_after = 0;  // live
@@ -50,26 +49,25 @@ struct OptimizeRoundStats {
 
 namespace optimize_detail {
 
+// A round's operators: the sizes changed (more than the dimension ignores), a pass stopped at
+// its bound (and named it in stopped_by).
 struct RoundResult {
-  bool resized = false;  // the collapses and splits changed the sizes (more than the dimension ignores)
-  bool limit = false;    // a pass stopped at its bound (and named it in stopped_by)
+  bool resized = false, limit = false;
 };
-
+// A round's goal: improved whatever the worst and the mean did, met (stop after this round).
 struct RoundGoal {
-  bool gained = false;  // the round improved whatever the worst and the mean did
-  bool met = false;     // stop after this round
+  bool gained = false, met = false;
 };
 
-// An element worse than bad_quality, with its vertices then: an earlier treatment may change its slot.
+// The domain's elements among `capacity` slots with `quality(t)` above bad_quality, worst first
+// (ties by slot), with their `vertices(t)` then (an earlier treatment may change the slot): the
+// order in which a round treats them one by one.
 template <class Vertices>
 struct BadElement {
   double quality;
   std::uint32_t t;
   Vertices v;
 };
-
-// The domain's elements among `capacity` slots with `quality(t)` above bad_quality, worst first
-// (ties by slot), with their `vertices(t)`: the order in which a round treats them one by one.
 template <class Mesh, class Quality, class Vertices>
 auto bad_elements(const Mesh& mesh, std::uint32_t capacity, double bad_quality, Quality quality, Vertices vertices) {
   std::vector<BadElement<decltype(vertices(0u))>> bad;
@@ -122,12 +120,8 @@ auto optimize_rounds(Dim&& dim) {
     const bool improved = goal.gained || now.worst < last.worst * keep || now.mean < last.mean * keep;
     last = now;
     if (r.limit) break;
-    if (goal.met) {
-      stats.stopped_by = "goal";
-      break;
-    }
-    if (!improved && !r.resized) {
-      stats.stopped_by = "converged";
+    if (goal.met || (!improved && !r.resized)) {
+      stats.stopped_by = goal.met ? "goal" : "converged";
       break;
     }
   }

@@ -1,8 +1,8 @@
 // The walk of the solution transfer (book §9.8, §12.2.6), written once for 2D and 3D: each new
 // vertex, in the caller's order (Hilbert: each walk starts where the previous one ended), placed
-// in the old mesh by the dimension's `Walk` (its mesh's walk, the bucket grid for walks lost
-// through a concavity, the nearest old boundary point for a vertex outside), with its P1 weights.
-// A vertex outside farther than outside_limit x the size of the nearest boundary element is an error.
+// in the old mesh with its P1 weights by the dimension's `Walk` (its mesh's walk, the bucket grid
+// for walks lost through a concavity, else the nearest old boundary point: an error farther than
+// outside_limit x the size of the nearest boundary element).
 #pragma once
 
 #include <algorithm>
@@ -15,14 +15,14 @@
 
 namespace dtlab::transfer_detail {
 
+// Rescanned: the walk left through a concavity, the grid found the point. Outside: its distance
+// to the nearest old boundary point and that element's size (the message names it Walk::kSize).
 enum class Placed { Walked, Rescanned, Outside };
-
 template <class Weights>
 struct Placement {
   Weights weights;
-  Placed how = Placed::Walked;  // Rescanned: the walk left through a concavity, the grid found it
-  double distance = 0.0;        // Outside: to the nearest old boundary point
-  double size = 0.0;            // Outside: the nearest boundary element's size (Walk::kSize names it)
+  Placed how = Placed::Walked;
+  double distance = 0.0, size = 0.0;
 };
 
 // `Walk` provides `Placement<Weights> place(const Point& p)` and `kSize`. `Stats` (TransferStats,
