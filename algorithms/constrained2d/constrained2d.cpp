@@ -14,19 +14,8 @@
 
 namespace dtlab {
 
-namespace {
-
-const Constrained2dMethod& method_named(const std::string& name) {
-  if (const Constrained2dMethod* m = find_constrained2d_method(name)) return *m;
-  std::string known;
-  for (const Constrained2dMethod& m : constrained2d_methods()) known += (known.empty() ? "" : ", ") + std::string(m.name);
-  throw InputError("unknown constrained triangulation method '" + name + "' (known: " + known + ")");
-}
-
-}  // namespace
-
 Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrained2dOptions& options) {
-  const Constrained2dMethod& method = method_named(options.method);
+  const Constrained2dMethod& method = constrained2d_methods().at(options.method);
   const PredicateStats before = predicate_stats();
   const auto start = std::chrono::steady_clock::now();
   const std::size_t n = input.points.size();

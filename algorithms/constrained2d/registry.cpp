@@ -1,7 +1,5 @@
 #include "algorithms/constrained2d/registry.hpp"
 
-#include <array>
-
 namespace dtlab {
 
 void constrained2d_conforming(const Constrained2dContext& context);  // conforming.cpp
@@ -22,8 +20,12 @@ void run_cdt(const Constrained2dContext& context) {
   context.mesh.lawson(context.mesh.take_changed_edges(), true);
 }
 
-constexpr std::array kMethods = {
-    Constrained2dMethod{"cdt",
+}  // namespace
+
+const Registry<Constrained2dMethod>& constrained2d_methods() {
+  static const Registry<Constrained2dMethod> entries{
+      "constrained triangulation method",
+      {    Constrained2dMethod{"cdt",
                         "constrained Delaunay (§3.4): segments enforced by swaps along their pipes, then Lawson "
                         "flips of every non-constrained edge failing the empty circle",
                         &run_cdt},
@@ -34,17 +36,8 @@ constexpr std::array kMethods = {
     Constrained2dMethod{"conforming",
                         "conforming Delaunay (§3.2, §3.3.2): pieces that are not Delaunay edges split (midpoint, or "
                         "concentric power-of-two shells around input vertices) until all are; result Delaunay",
-                        &constrained2d_conforming},
-};
-
-}  // namespace
-
-std::span<const Constrained2dMethod> constrained2d_methods() noexcept { return kMethods; }
-
-const Constrained2dMethod* find_constrained2d_method(std::string_view name) noexcept {
-  for (const Constrained2dMethod& m : kMethods)
-    if (m.name == name) return &m;
-  return nullptr;
+                        &constrained2d_conforming}}};
+  return entries;
 }
 
 }  // namespace dtlab

@@ -7,9 +7,9 @@
 // Delaunay. It throws InternalError on a broken invariant, never loops without bound.
 #pragma once
 
-#include <span>
 #include <string_view>
 
+#include "algorithms/common/registry.hpp"
 #include "algorithms/constrained2d/context.hpp"
 
 namespace dtlab {
@@ -20,7 +20,7 @@ struct Constrained2dMethod {
   void (*run)(const Constrained2dContext& context);
 };
 
-std::span<const Constrained2dMethod> constrained2d_methods() noexcept;
-const Constrained2dMethod* find_constrained2d_method(std::string_view name) noexcept;
+// Every registered method: the table of registry.cpp (algorithms/common/registry.hpp).
+const Registry<Constrained2dMethod>& constrained2d_methods();
 
 }  // namespace dtlab

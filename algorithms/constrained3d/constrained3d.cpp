@@ -102,12 +102,7 @@ std::vector<Constrained3dMethodInfo> constrained3d_method_list() {
 Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrained3dOptions& options) {
   const auto start = Clock::now();
   const PredicateStats stats_before = predicate_stats();
-  const Constrained3dMethod* method = find_constrained3d_method(options.method);
-  if (method == nullptr) {
-    std::string known;
-    for (const auto& m : constrained3d_methods()) known += (known.empty() ? "" : ", ") + std::string(m.name);
-    throw InputError("constrained3d: unknown method '" + options.method + "' (known: " + known + ")");
-  }
+  const Constrained3dMethod* method = &constrained3d_methods().at(options.method);
   if (!input.triangle_refs.empty() && input.triangle_refs.size() != input.triangles.size())
     throw InputError("constrained3d: " + std::to_string(input.triangle_refs.size()) + " triangle references for " +
                      std::to_string(input.triangles.size()) + " triangles");

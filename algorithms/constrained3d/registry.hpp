@@ -9,9 +9,9 @@
 // broken invariant, and never loops without bound.
 #pragma once
 
-#include <span>
 #include <string_view>
 
+#include "algorithms/common/registry.hpp"
 #include "algorithms/constrained3d/context.hpp"
 
 namespace dtlab {
@@ -22,7 +22,7 @@ struct Constrained3dMethod {
   void (*run)(Constrained3dContext& context);
 };
 
-std::span<const Constrained3dMethod> constrained3d_methods() noexcept;
-const Constrained3dMethod* find_constrained3d_method(std::string_view name) noexcept;
+// Every registered method: the table of registry.cpp (algorithms/common/registry.hpp).
+const Registry<Constrained3dMethod>& constrained3d_methods();
 
 }  // namespace dtlab

@@ -9,15 +9,7 @@
 namespace dtlab {
 
 Delaunay2dResult delaunay2d(std::span<const Vec2> points, const Delaunay2dOptions& options) {
-  const Delaunay2dVariant* variant = find_delaunay2d_variant(options.algorithm);
-  if (variant == nullptr) {
-    std::string known;
-    for (const Delaunay2dVariant& v : delaunay2d_variants()) {
-      if (!known.empty()) known += ", ";
-      known += v.name;
-    }
-    throw InputError("unknown 2D Delaunay algorithm '" + options.algorithm + "' (known: " + known + ")");
-  }
+  const Delaunay2dVariant* variant = &(options.variants ? *options.variants : delaunay2d_variants()).at(options.algorithm);
   const PredicateStats before = predicate_stats();
   const auto start = std::chrono::steady_clock::now();
 

@@ -19,9 +19,14 @@
 
 namespace dtlab {
 
+template <class Entry>
+class Registry;  // algorithms/common/registry.hpp
+struct Delaunay2dVariant;  // registry.hpp
+
 struct Delaunay2dOptions {
   std::string algorithm = "incremental";   // a name from delaunay2d_variants()
   std::uint64_t seed = 0x5EED'D71A'B000'0001ull;  // randomised steps (BRIO); fixed for reproducibility
+  const Registry<Delaunay2dVariant>* variants = nullptr;  // where `algorithm` is looked up; null: delaunay2d_variants()
 };
 
 struct Delaunay2dResult {

@@ -1,7 +1,5 @@
 #include "algorithms/delaunay2d/registry.hpp"
 
-#include <array>
-
 namespace dtlab {
 
 // Each variant's run function lives in its own file.
@@ -10,10 +8,10 @@ void delaunay2d_divide_conquer(const PreparedPoints2& input, Triangulation2& tri
 void delaunay2d_sweep(const PreparedPoints2& input, Triangulation2& triangulation);
 void delaunay2d_flip(const PreparedPoints2& input, Triangulation2& triangulation);
 
-namespace {
-
-constexpr std::array kVariants = {
-    Delaunay2dVariant{"incremental",
+const Registry<Delaunay2dVariant>& delaunay2d_variants() {
+  static const Registry<Delaunay2dVariant> variants{
+      "2D Delaunay algorithm",
+      {Delaunay2dVariant{"incremental",
                       "reduced incremental method (Delaunay kernel, book §2.4-2.6): BRIO/Hilbert order, "
                       "visibility walk from the last insertion, cavity grown by adjacency",
                       &delaunay2d_incremental},
@@ -28,17 +26,8 @@ constexpr std::array kVariants = {
     Delaunay2dVariant{"flip",
                       "Lawson flips (book §2, Theorem 2.2): lexicographic fan sweep by orient2d alone, then "
                       "every edge not locally Delaunay flipped",
-                      &delaunay2d_flip},
-};
-
-}  // namespace
-
-std::span<const Delaunay2dVariant> delaunay2d_variants() noexcept { return kVariants; }
-
-const Delaunay2dVariant* find_delaunay2d_variant(std::string_view name) noexcept {
-  for (const Delaunay2dVariant& v : kVariants)
-    if (v.name == name) return &v;
-  return nullptr;
+                      &delaunay2d_flip}}};
+  return variants;
 }
 
 }  // namespace dtlab

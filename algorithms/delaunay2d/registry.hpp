@@ -14,9 +14,9 @@
 // Adding a variant: one new file defining its run function, one line in the table.
 #pragma once
 
-#include <span>
 #include <string_view>
 
+#include "algorithms/common/registry.hpp"
 #include "algorithms/delaunay2d/prepare.hpp"
 #include "mesh/triangulation2.hpp"
 
@@ -28,10 +28,7 @@ struct Delaunay2dVariant {
   void (*run)(const PreparedPoints2& input, Triangulation2& triangulation);
 };
 
-// Every registered variant, in table order.
-std::span<const Delaunay2dVariant> delaunay2d_variants() noexcept;
-
-// The variant called `name`, or nullptr.
-const Delaunay2dVariant* find_delaunay2d_variant(std::string_view name) noexcept;
+// Every registered variant: the table of registry.cpp (algorithms/common/registry.hpp).
+const Registry<Delaunay2dVariant>& delaunay2d_variants();
 
 }  // namespace dtlab

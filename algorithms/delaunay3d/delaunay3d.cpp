@@ -14,15 +14,7 @@ Delaunay3dResult delaunay3d(std::span<const Vec3> points, const Delaunay3dOption
 }
 
 Delaunay3dResult delaunay3d(std::vector<Vec3>&& points, const Delaunay3dOptions& options) {
-  const Delaunay3dVariant* variant = find_delaunay3d_variant(options.algorithm);
-  if (variant == nullptr) {
-    std::string known;
-    for (const Delaunay3dVariant& v : delaunay3d_variants()) {
-      if (!known.empty()) known += ", ";
-      known += v.name;
-    }
-    throw InputError("unknown 3D Delaunay algorithm '" + options.algorithm + "' (known: " + known + ")");
-  }
+  const Delaunay3dVariant* variant = &(options.variants ? *options.variants : delaunay3d_variants()).at(options.algorithm);
   if (options.threads == 0) throw InputError("delaunay3d: threads must be at least 1");
   const PredicateStats before = predicate_stats();
   const auto start = std::chrono::steady_clock::now();

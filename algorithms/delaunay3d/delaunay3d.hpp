@@ -19,10 +19,15 @@
 
 namespace dtlab {
 
+template <class Entry>
+class Registry;  // algorithms/common/registry.hpp
+struct Delaunay3dVariant;  // registry.hpp
+
 struct Delaunay3dOptions {
   std::string algorithm = "incremental";          // a name from delaunay3d_variants()
   std::uint64_t seed = 0x5EED'D71A'B000'0001ull;  // randomised steps (BRIO); fixed for reproducibility
   unsigned threads = 1;                           // for parallel variants; sequential ones ignore it
+  const Registry<Delaunay3dVariant>* variants = nullptr;  // where `algorithm` is looked up; null: delaunay3d_variants()
 };
 
 struct Delaunay3dResult {

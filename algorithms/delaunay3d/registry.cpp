@@ -1,7 +1,5 @@
 #include "algorithms/delaunay3d/registry.hpp"
 
-#include <array>
-
 namespace dtlab {
 
 // Each variant's run function lives in its own file.
@@ -14,10 +12,10 @@ void delaunay3d_divide_conquer(PreparedPoints3& input, const Delaunay3dOptions& 
 void delaunay3d_parallel(PreparedPoints3& input, const Delaunay3dOptions& options,
                          Tetrahedralization3& tetrahedralization);
 
-namespace {
-
-constexpr std::array kVariants = {
-    Delaunay3dVariant{"incremental",
+const Registry<Delaunay3dVariant>& delaunay3d_variants() {
+  static const Registry<Delaunay3dVariant> entries{
+      "3D Delaunay algorithm",
+      {Delaunay3dVariant{"incremental",
                       "reduced incremental method (Delaunay kernel, book §2.4-2.6): BRIO/Hilbert order, "
                       "visibility walk from the last insertion, cavity grown by adjacency, ball joined to its "
                       "boundary, deleted tetrahedra recycled",
@@ -31,17 +29,8 @@ constexpr std::array kVariants = {
     Delaunay3dVariant{"parallel",
                       "Delaunay kernel on several threads (--threads): each owns a slab of space (x, then y, then z "
                       "cuts), insertions whose walk or cavity leaves it deferred (after Marot-Pellerin-Remacle 2019)",
-                      &delaunay3d_parallel, true},
-};
-
-}  // namespace
-
-std::span<const Delaunay3dVariant> delaunay3d_variants() noexcept { return kVariants; }
-
-const Delaunay3dVariant* find_delaunay3d_variant(std::string_view name) noexcept {
-  for (const Delaunay3dVariant& v : kVariants)
-    if (v.name == name) return &v;
-  return nullptr;
+                      &delaunay3d_parallel, true}}};
+  return entries;
 }
 
 }  // namespace dtlab

@@ -23,9 +23,9 @@
 // function, one line in the table of registry.cpp.
 #pragma once
 
-#include <span>
 #include <string_view>
 
+#include "algorithms/common/registry.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "algorithms/delaunay3d/prepare.hpp"
 #include "mesh/tetrahedralization3.hpp"
@@ -41,10 +41,7 @@ struct Delaunay3dVariant {
   bool threaded = false;
 };
 
-// Every registered variant, in table order.
-std::span<const Delaunay3dVariant> delaunay3d_variants() noexcept;
-
-// The variant called `name`, or nullptr.
-const Delaunay3dVariant* find_delaunay3d_variant(std::string_view name) noexcept;
+// Every registered variant: the table of registry.cpp (algorithms/common/registry.hpp).
+const Registry<Delaunay3dVariant>& delaunay3d_variants();
 
 }  // namespace dtlab

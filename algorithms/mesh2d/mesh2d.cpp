@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 
+#include "algorithms/mesh2d/registry.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
 #include "kernel/error.hpp"
 #include "kernel/interrupt.hpp"
@@ -22,9 +23,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  if (options.method != "edge" && options.method != "front") {
-    throw InputError("unknown field point method '" + options.method + "' (edge, front)");
-  }
+  const FieldPointMethod2& method = (options.methods ? *options.methods : mesh2d_methods()).at(options.method);
   if (!(options.filter_distance > 0.0 && options.filter_distance < 1.0)) {
     throw InputError("mesh2d: filter_distance must lie in (0, 1)");
   }
@@ -102,11 +101,7 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
 
   // 3.+4. Field points and their insertion.
   phase = std::chrono::steady_clock::now();
-  if (options.method == "edge") {
-    insert_edge_points(result.mesh, control, options, result.stats);
-  } else {
-    insert_front_points(result.mesh, control, options, result.stats);
-  }
+  method.run(result.mesh, control, options, result.stats);
   result.stats.seconds_field_points = seconds_since(phase);
 
   // 5. Optimization.

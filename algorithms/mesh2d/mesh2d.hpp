@@ -38,10 +38,16 @@ struct Mesh2dInput {
   std::span<const RegionSeed2> regions;
 };
 
+template <class Entry>
+class Registry;  // algorithms/common/registry.hpp
+struct FieldPointMethod2;  // registry.hpp
+
 struct Mesh2dOptions {
-  // Field point placement: "edge" (the edge method, §5 / §7.5-§7.7) or "front" (advancing-front
-  // placement, §5.8 / §7.8).
+  // Field point placement, a name from mesh2d_methods() (registry.hpp): "edge" (the edge method,
+  // §5 / §7.5-§7.7) or "front" (advancing-front placement, §5.8 / §7.8); looked up in `methods`
+  // when given.
   std::string method = "edge";
+  const Registry<FieldPointMethod2>* methods = nullptr;
   // The size specification; null: the classical case (sizes from the boundary discretisation),
   // unless `input_metrics` holds one metric per input point: then the control space is the
   // empty mesh with these metrics (a crossing point of the empty mesh takes the interpolation

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "algorithms/mesh3d/local_remesh.hpp"
+#include "algorithms/mesh3d/registry.hpp"
 #include "algorithms/mesh3d/spatial_renumber.hpp"
 #include "kernel/error.hpp"
 
@@ -25,7 +26,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   if (options.method == "front") {
     throw InputError("mesh3d: the advancing-front method (book §7.8) is not implemented in 3D yet (use edge)");
   }
-  if (options.method != "edge") throw InputError("unknown field point method '" + options.method + "' (edge)");
+  const FieldPointMethod3& method = (options.methods ? *options.methods : mesh3d_methods()).at(options.method);
   if (!(options.filter_distance > 0.0 && options.filter_distance < 1.0)) {
     throw InputError("mesh3d: filter_distance must lie in (0, 1)");
   }
@@ -69,7 +70,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
 
   // 3.+4. Field points and their insertion.
   phase = std::chrono::steady_clock::now();
-  insert_edge_points(result.mesh, control, options, result.stats);
+  method.run(result.mesh, control, options, result.stats);
   result.stats.seconds_field_points = seconds_since(phase);
 
   // 5. Optimization, on the mesh renumbered for locality (spatial_renumber.hpp).

@@ -34,10 +34,16 @@ namespace dtlab {
 // The input: a closed surface (several shells allowed), as constrained3d takes it.
 using Mesh3dInput = ConstrainedInput3;
 
+template <class Entry>
+class Registry;  // algorithms/common/registry.hpp
+struct FieldPointMethod3;  // registry.hpp
+
 struct Mesh3dOptions {
   // Field point placement: "edge" (the edge method, §7.5-§7.7). The advancing-front placement
-  // of §7.8 is not implemented in 3D yet: "front" is refused by name.
+  // of §7.8 is not implemented in 3D yet: "front" is refused by name. A name from
+  // mesh3d_methods() (registry.hpp), looked up in `methods` when given.
   std::string method = "edge";
+  const Registry<FieldPointMethod3>* methods = nullptr;
   // The size specification; null: the classical case (sizes from the surface discretisation).
   const ControlSpace3* control = nullptr;
   // Step 5: the 3D optimization (algorithms/optimize3d, book §8.6's strategy), governed by the

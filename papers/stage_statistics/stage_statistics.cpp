@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
         return 2;
       }
     } else if (std::strcmp(argv[i], "--variant") == 0 && has_value) {
-      const dtlab::Delaunay2dVariant* v = dtlab::find_delaunay2d_variant(argv[++i]);
+      const dtlab::Delaunay2dVariant* v = dtlab::delaunay2d_variants().find(argv[++i]);
       if (v == nullptr) {
         std::fprintf(stderr, "unknown variant '%s'\n", argv[i]);
         return 2;

@@ -80,7 +80,7 @@ void expect_sweep_triangulates(std::vector<Vec2> P, const std::string& what) {
 }
 
 TEST(Delaunay2dFlip, IsRegistered) {
-  const Delaunay2dVariant* v = find_delaunay2d_variant("flip");
+  const Delaunay2dVariant* v = delaunay2d_variants().find("flip");
   ASSERT_NE(v, nullptr);
   EXPECT_NE(v->run, nullptr);
 }

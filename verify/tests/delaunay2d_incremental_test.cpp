@@ -449,9 +449,9 @@ TEST(Delaunay2dRegistry, EveryVariantHasANameAndARunFunction) {
     EXPECT_FALSE(v.name.empty());
     EXPECT_NE(v.run, nullptr);
     EXPECT_TRUE(names.insert(v.name).second) << "duplicate name " << v.name;
-    EXPECT_EQ(find_delaunay2d_variant(v.name), &v);
+    EXPECT_EQ(delaunay2d_variants().find(v.name), &v);
   }
-  EXPECT_EQ(find_delaunay2d_variant("no-such"), nullptr);
+  EXPECT_EQ(delaunay2d_variants().find("no-such"), nullptr);
 }
 
 }  // namespace

@@ -500,8 +500,8 @@ TEST(Delaunay2dVariantRegistry, NamesAreUniqueAndFindable) {
   EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), names.size());
   for (const std::string& n : names) {
     EXPECT_FALSE(n.empty());
-    ASSERT_NE(find_delaunay2d_variant(n), nullptr) << n;
-    EXPECT_EQ(find_delaunay2d_variant(n)->name, n);
+    ASSERT_NE(delaunay2d_variants().find(n), nullptr) << n;
+    EXPECT_EQ(delaunay2d_variants().find(n)->name, n);
   }
 }
 

@@ -119,7 +119,7 @@ std::vector<Vec3> uniform(std::size_t n, std::uint64_t seed) {
 }
 
 TEST(Delaunay3dFlip, RegisteredUnderItsName) {
-  ASSERT_NE(find_delaunay3d_variant("flip"), nullptr);
+  ASSERT_NE(delaunay3d_variants().find("flip"), nullptr);
 }
 
 TEST(Delaunay3dFlip, SingleTetrahedronEitherOrientation) {

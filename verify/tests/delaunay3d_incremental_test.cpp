@@ -572,8 +572,8 @@ TEST(Delaunay3dIncremental, BadInputNamesThePoint) {
 }
 
 TEST(Delaunay3dIncremental, RegistryListsIncremental) {
-  ASSERT_NE(find_delaunay3d_variant("incremental"), nullptr);
-  EXPECT_EQ(find_delaunay3d_variant("nonsense"), nullptr);
+  ASSERT_NE(delaunay3d_variants().find("incremental"), nullptr);
+  EXPECT_EQ(delaunay3d_variants().find("nonsense"), nullptr);
   EXPECT_FALSE(delaunay3d_variants().empty());
 }
 

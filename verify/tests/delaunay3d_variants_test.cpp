@@ -377,10 +377,10 @@ TEST(Delaunay3dVariantRegistry, NamesAreUniqueAndFindable) {
   EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), names.size());
   for (const std::string& n : names) {
     EXPECT_FALSE(n.empty());
-    ASSERT_NE(find_delaunay3d_variant(n), nullptr) << n;
-    EXPECT_EQ(find_delaunay3d_variant(n)->name, n);
+    ASSERT_NE(delaunay3d_variants().find(n), nullptr) << n;
+    EXPECT_EQ(delaunay3d_variants().find(n)->name, n);
   }
-  EXPECT_NE(find_delaunay3d_variant(kReference), nullptr);
+  EXPECT_NE(delaunay3d_variants().find(kReference), nullptr);
 }
 
 }  // namespace
