@@ -21,7 +21,7 @@
 #include "apps/adapt3.hpp"
 #include "apps/adapt_request.hpp"
 #include "apps/cli_util.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/element_edges.hpp"
@@ -97,9 +97,7 @@ int run_reconstruct2(const AdaptRequest& request, const MeshData2& input, const 
 
 int run_adapt2(const AdaptRequest& request) {
   const MeshData2 input = read_mesh2(request.mesh);
-  const SolData sol = read_medit_sol(request.metric);
-  check_sol_matches(sol, input.vertices.size(), request.metric);
-  std::vector<Metric2> metrics = metrics2_from_sol(sol, request.metric);
+  std::vector<Metric2> metrics = read_metrics<Metric2>(request.metric, input.vertices.size());
   if (request.hgrad) apply_gradation(input.vertices, element_edges(std::span<const std::array<std::uint32_t, 3>>(input.triangles)), metrics, *request.hgrad);
   Mesh2 mesh;
   try {

@@ -11,7 +11,7 @@
 
 #include "algorithms/adapt/adapt3d.hpp"
 #include "apps/cli_util.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "kernel/error.hpp"
 #include "mesh/element_edges.hpp"
 #include "mesh/io/medit_sol.hpp"
@@ -52,9 +52,7 @@ int run_adapt3(const AdaptRequest& request) {
     throw InputError("--rounds " + std::to_string(request.max_rounds) + ": give 1 to 1000 rounds");
   const MeshData3 input = read_mesh3(request.mesh);
   if (input.tetrahedra.empty()) throw InputError(request.mesh + ": no Tetrahedra (a 3D mesh is needed)");
-  const SolData sol = read_medit_sol(request.metric);
-  check_sol_matches(sol, input.vertices.size(), request.metric);
-  std::vector<Metric3> metrics = metrics3_from_sol(sol, request.metric);
+  std::vector<Metric3> metrics = read_metrics<Metric3>(request.metric, input.vertices.size());
   if (request.hgrad) {
     if (!(*request.hgrad > 1.0))
       throw InputError("--hgrad " + json_number(*request.hgrad) + ": give a gradation above 1");

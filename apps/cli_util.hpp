@@ -4,11 +4,15 @@
 #include <sys/resource.h>
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstdio>
 #include <string>
 #include <string_view>
 
+#include "kernel/error.hpp"
 #include "verify/problem_report.hpp"  // json_string
 
 namespace dtlab::cli {
@@ -26,14 +30,15 @@ inline std::string json_number(double v) {
   return buf;
 }
 
-// Lower-case extension of a path, without the dot ("" if none).
-inline std::string extension_of(std::string_view path) {
-  const auto slash = path.find_last_of('/');
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) return "";
-  std::string ext(path.substr(dot + 1));
-  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  return ext;
+// A --size H given as text: parsed and refused with the project's message (exit 1) unless
+// positive and finite, instead of CLI11's checks (which pass NaN and print 309 digits for 0).
+inline double parse_size(const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  const double h = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(h) || !(h > 0.0))
+    throw InputError("--size " + text + ": give a positive finite size H (the metric H^-2 I)");
+  return h;
 }
 
 // A validator for an integer option in [lo, hi]. CLI11 reads "-5" into an unsigned option as a

@@ -15,6 +15,7 @@
 #include "algorithms/constrained2d/registry.hpp"
 #include "algorithms/constrained3d/constrained3d.hpp"
 #include "apps/cli_util.hpp"
+#include "mesh/io/any_format.hpp"
 #include "apps/constrain3d.hpp"
 #include "apps/graph_input.hpp"
 #include "apps/subcommands.hpp"

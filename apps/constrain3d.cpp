@@ -12,20 +12,13 @@
 #include "algorithms/constrained3d/constrained3d.hpp"
 #include "algorithms/constrained3d/facet_triangulation.hpp"
 #include "apps/cli_util.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit3.hpp"
 #include "mesh/io/surface_input.hpp"
 #include "verify/checks_constrained3d.hpp"
 
 namespace dtlab::cli {
-
-bool is_surface_input(const std::string& path) {
-  const std::string ext = extension_of(path);
-  if (ext == "off" || ext == "obj" || ext == "stl" || ext == "smesh") return true;
-  if (ext == "poly" || ext == "mesh") return input_dimension(path) == 3;
-  return false;
-}
 
 int list_constrained3d_methods() {
   for (const auto& m : constrained3d_method_list()) std::cout << m.name << "\t" << m.description << "\n";

@@ -19,9 +19,6 @@ struct Constrain3dCliArgs {
   bool merge_coplanar = false;        // FacetTriangulationOptions::merge_coplanar
 };
 
-// Whether `path` is a 3D piecewise linear complex rather than a planar graph.
-bool is_surface_input(const std::string& path);
-
 // Returns the exit status: 0 success, 3 a check failed. Throws InputError for bad input, naming
 // the items (plc_checks.hpp).
 int run_constrain3d(const Constrain3dCliArgs& args);

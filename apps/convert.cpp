@@ -30,7 +30,7 @@
 #include "mesh/io/tetgen_format.hpp"
 #include "mesh/io/triangle_format.hpp"
 #include "mesh/io/vtu_format.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 
 namespace dtlab::cli {
 

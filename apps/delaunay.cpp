@@ -9,7 +9,7 @@
 #include "algorithms/delaunay2d/registry.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/delaunay3d.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/triangulation2.hpp"

@@ -10,7 +10,7 @@
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
 #include "apps/cli_util.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "kernel/error.hpp"
 #include "mesh/tetrahedralization3.hpp"
 #include "verify/checks3d.hpp"

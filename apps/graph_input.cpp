@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "apps/cli_util.hpp"
+#include "mesh/io/any_format.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit.hpp"
 

@@ -10,12 +10,16 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <type_traits>
 
 #include "algorithms/mesh2d/mesh2d.hpp"
+#include "algorithms/mesh2d/registry.hpp"
+#include "algorithms/mesh3d/registry.hpp"
 #include "apps/cli_util.hpp"
+#include "mesh/io/any_format.hpp"
 #include "apps/constrain3d.hpp"
-#include "apps/mesh3.hpp"
 #include "apps/graph_input.hpp"
+#include "apps/mesh_args.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit.hpp"
@@ -25,59 +29,37 @@
 
 namespace dtlab::cli {
 
-namespace {
-
-struct MeshArgs {
-  std::string input, output, output_metric;
-  double size = 0.0;  // 0: not given
-  std::string size_map, metric, background;
-  std::string method = "edge";
-  std::string interpolation = "sizes";
-  bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
-  bool no_remesh = false;  // surfaces only: Mesh3dOptions::local_remesh off
-  bool remove_cavities = false;  // surfaces only (apps/mesh3.cpp)
-  std::string optimize = "standard";  // surfaces only: the effort (optimize3d_effort)
-  bool triangulate_nonplanar = false;  // surfaces only
-  unsigned threads = 1;  // surfaces only: Mesh3dOptions::threads
-  std::uint32_t insertion_regions = 1;  // surfaces only: Mesh3dOptions::insertion_regions
-};
-
-// A uniform size: the box of the input, enlarged by 1 on each side.
-ControlSpace2 uniform_control_space(const std::vector<Vec2>& points, double h) {
-  Vec2 lo = points.front(), hi = lo;
-  for (const Vec2& p : points) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-  }
-  return ControlSpace2::uniform(Metric2::isotropic(h), lo - Vec2{1, 1}, hi + Vec2{1, 1});
-}
-
-std::vector<Metric2> read_metrics(const MeshArgs& args, std::size_t vertex_count, const std::string& against) {
+template <class Metric>
+std::vector<Metric> read_size_file(const MeshCliArgs& args, std::size_t vertex_count, const std::string& against) {
+  constexpr int kDimension = std::is_same_v<Metric, Metric2> ? 2 : 3;
   const std::string& file = args.size_map.empty() ? args.metric : args.size_map;
   const SolData sol = read_medit_sol(file);
-  if (sol.dimension != 2) throw InputError(file + ": a " + std::to_string(sol.dimension) + "D solution for a 2D domain");
+  if (sol.dimension != kDimension)
+    throw InputError(file + ": a " + std::to_string(sol.dimension) + "D solution for a " + std::to_string(kDimension) +
+                     "D domain");
   if (!args.size_map.empty() && sol.kind != SolData::Kind::Scalar)
     throw InputError(file + ": --size-map wants scalar sizes; this file holds tensors (use --metric)");
   if (!args.metric.empty() && sol.kind != SolData::Kind::Tensor)
     throw InputError(file + ": --metric wants symmetric tensors; this file holds scalar sizes (use --size-map)");
   check_sol_matches(sol, vertex_count, file + " (against " + against + ")");
-  return metrics2_from_sol(sol, file);
+  if constexpr (kDimension == 2)
+    return metrics2_from_sol(sol, file);
+  else
+    return metrics3_from_sol(sol, file);
 }
+template std::vector<Metric2> read_size_file<Metric2>(const MeshCliArgs&, std::size_t, const std::string&);
+template std::vector<Metric3> read_size_file<Metric3>(const MeshCliArgs&, std::size_t, const std::string&);
 
-int run_mesh(const MeshArgs& args) {
+namespace {
+
+int run_mesh(const MeshCliArgs& args) {
   if (is_surface_input(args.input)) {  // a closed surface: the 3D mesher (apps/mesh3.cpp)
-    return run_mesh3({.input = args.input, .output = args.output, .output_metric = args.output_metric, .size = args.size,
-                      .size_map = args.size_map, .metric = args.metric, .background = args.background,
-                      .method = args.method, .interpolation = args.interpolation, .no_optimize = args.no_optimize,
-                      .stats = args.stats, .verify = args.verify, .resample_boundary = args.resample_boundary,
-                      .remove_cavities = args.remove_cavities, .optimize = args.optimize,
-                      .triangulate_nonplanar = args.triangulate_nonplanar, .no_remesh = args.no_remesh,
-                      .threads = args.threads, .insertion_regions = args.insertion_regions});
+    return run_mesh3(args);
   }
   if (args.threads != 1) throw InputError("--threads: the 2D mesher is sequential (give --threads 1 or leave it out)");
   if (args.insertion_regions != 1)
     throw InputError("--insertion-regions: the 2D mesher inserts one point after the other (give 1 or leave it out)");
-  const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
+  const int given = args.sizes_given();
   if (given > 1) throw InputError("give one of --size, --size-map, --metric");
   if (!args.background.empty() && args.size_map.empty() && args.metric.empty())
     throw InputError("--background needs --size-map or --metric (the file of values at its vertices)");
@@ -101,16 +83,16 @@ int run_mesh(const MeshArgs& args) {
   options.interpolation = args.interpolation == "log-euclidean" ? MetricInterpolation::LogEuclidean : MetricInterpolation::Sizes;
   std::optional<ControlSpace2> control;
   std::vector<Metric2> input_metrics;
-  if (args.size > 0) {
-    control.emplace(uniform_control_space(poly.points, args.size));
+  if (args.size_given) {
+    control.emplace(ControlSpace2::uniform_size(poly.points, parse_size(args.size)));
   } else if (given == 1) {
     if (!args.background.empty()) {
       const MeshData2 background = read_medit2(args.background);
-      control.emplace(background, read_metrics(args, background.vertices.size(), args.background), options.interpolation);
+      control.emplace(background, read_size_file<Metric2>(args, background.vertices.size(), args.background), options.interpolation);
     } else if (!graph.medit.triangles.empty()) {
-      control.emplace(graph.medit, read_metrics(args, graph.medit.vertices.size(), args.input), options.interpolation);
+      control.emplace(graph.medit, read_size_file<Metric2>(args, graph.medit.vertices.size(), args.input), options.interpolation);
     } else {
-      input_metrics = read_metrics(args, poly.points.size(), args.input);
+      input_metrics = read_size_file<Metric2>(args, poly.points.size(), args.input);
       options.input_metrics = input_metrics;
     }
   }
@@ -160,7 +142,7 @@ int run_mesh(const MeshArgs& args) {
 }  // namespace
 
 void add_mesh(CLI::App& app) {
-  auto args = std::make_shared<MeshArgs>();
+  auto args = std::make_shared<MeshCliArgs>();
   CLI::App* cmd = app.add_subcommand(
       "mesh", "Mesh generation governed by sizes or a metric: 2D domains (book chapter 5), closed surfaces (chapter 7)");
   cmd->add_option("input", args->input,
@@ -169,14 +151,15 @@ void add_mesh(CLI::App& app) {
                   ".stl .smesh, TetGen .poly or Medit .mesh in 3D) is meshed in volume (apps/mesh3.cpp)")
       ->required();
   cmd->add_option("-o,--output", args->output, "Write OUT.mesh (Medit): Vertices, Edges with markers, Triangles with regions");
-  cmd->add_option("--size", args->size, "Uniform target size H (> 0)")->check(CLI::PositiveNumber);
+  CLI::Option* size = cmd->add_option("--size", args->size, "Uniform target size H (> 0)");
   cmd->add_option("--size-map", args->size_map, "Medit .sol/.solb of scalar sizes at the vertices of --background");
   cmd->add_option("--metric", args->metric, "Medit .sol/.solb of symmetric tensors (m11 m12 m22) at the vertices of --background");
   cmd->add_option("--background", args->background,
                   "Medit .mesh holding the --size-map / --metric vertices (default: the input; its Triangles, or its "
                   "constrained triangulation)");
-  cmd->add_option("--method", args->method, "Field points: edge (the edge method) or front (advancing front)")
-      ->check(CLI::IsMember({"edge", "front"}));
+  cmd->add_option("--method", args->method,
+                  "Field points: " + mesh2d_methods().names(", ") + " in 2D (edge: the edge method, front: advancing "
+                  "front); " + mesh3d_methods().names(", ") + " in 3D");
   cmd->add_option("--interpolation", args->interpolation, "Metric interpolation: sizes (default) or log-euclidean")
       ->check(CLI::IsMember({"sizes", "log-euclidean"}));
   cmd->add_option("--output-metric", args->output_metric, "Write the metric at the output vertices (Medit .sol)");
@@ -207,7 +190,10 @@ void add_mesh(CLI::App& app) {
   cmd->add_flag("--stats", args->stats, "Print the quality table and one JSON object (counts, phases, quality) last");
   cmd->add_flag("--verify", args->verify,
                 "Check the output exactly (validity, segments as chains, regions, area); exit 3 if it fails");
-  cmd->callback([args] { exit_code() = run_mesh(*args); });
+  cmd->callback([args, size] {
+    args->size_given = size->count() > 0;
+    exit_code() = run_mesh(*args);
+  });
 }
 
 }  // namespace dtlab::cli

@@ -7,7 +7,7 @@
 // references) and the boundary Triangles (input references). --stats prints the book's Table 7.1
 // and 7.2 columns (ne, np, target, Q_M, % in [1,2], time, elements per minute, share of time in
 // point insertion) with the quality report (dihedral angles, unit edges) and one JSON object.
-#include "apps/mesh3.hpp"
+#include "apps/mesh_args.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@
 #include "algorithms/constrained3d/facet_triangulation.hpp"
 #include "algorithms/mesh3d/mesh3d.hpp"
 #include "apps/cli_util.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "kernel/error.hpp"
 #include "kernel/quality.hpp"
 #include "mesh/io/medit3.hpp"
@@ -61,22 +61,10 @@ double quality_target(const MeshData3& mesh) {
   return target;
 }
 
-std::vector<Metric3> read_metrics3(const Mesh3CliArgs& args, std::size_t vertex_count) {
-  const std::string& file = args.size_map.empty() ? args.metric : args.size_map;
-  const SolData sol = read_medit_sol(file);
-  if (sol.dimension != 3) throw InputError(file + ": a " + std::to_string(sol.dimension) + "D solution for a 3D domain");
-  if (!args.size_map.empty() && sol.kind != SolData::Kind::Scalar)
-    throw InputError(file + ": --size-map wants scalar sizes; this file holds tensors (use --metric)");
-  if (!args.metric.empty() && sol.kind != SolData::Kind::Tensor)
-    throw InputError(file + ": --metric wants symmetric tensors; this file holds scalar sizes (use --size-map)");
-  check_sol_matches(sol, vertex_count, file + " (against " + args.background + ")");
-  return metrics3_from_sol(sol, file);
-}
-
 }  // namespace
 
-int run_mesh3(const Mesh3CliArgs& args) {
-  const int given = (args.size > 0) + !args.size_map.empty() + !args.metric.empty();
+int run_mesh3(const MeshCliArgs& args) {
+  const int given = args.sizes_given();
   if (given > 1) throw InputError("give one of --size, --size-map, --metric");
   if (!args.background.empty() && args.size_map.empty() && args.metric.empty())
     throw InputError("--background needs --size-map or --metric (the file of values at its vertices)");
@@ -115,17 +103,12 @@ int run_mesh3(const Mesh3CliArgs& args) {
   const MetricInterpolation mode =
       args.interpolation == "log-euclidean" ? MetricInterpolation::LogEuclidean : MetricInterpolation::Sizes;
   std::optional<ControlSpace3> control;
-  if (args.size > 0) {
-    Vec3 lo = input.points.front(), hi = lo;
-    for (const Vec3& p : input.points) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-    control.emplace(ControlSpace3::uniform(Metric3::isotropic(args.size), lo - Vec3{1, 1, 1}, hi + Vec3{1, 1, 1}));
+  if (args.size_given) {
+    control.emplace(ControlSpace3::uniform_size(input.points, parse_size(args.size)));
   } else if (given == 1) {
     const MeshData3 background = read_medit3(args.background);
     try {
-      control.emplace(background, read_metrics3(args, background.vertices.size()), mode);
+      control.emplace(background, read_size_file<Metric3>(args, background.vertices.size(), args.background), mode);
     } catch (const InputError& e) {
       throw InputError(args.background + ": " + e.what(), e.items());
     }

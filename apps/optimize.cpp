@@ -25,7 +25,7 @@
 #include "algorithms/optimize2d/optimize2d.hpp"
 #include "algorithms/optimize3d/optimize3d.hpp"
 #include "apps/cli_util.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/implied_metrics.hpp"
@@ -51,15 +51,6 @@ struct OptimizeArgs {
   bool no_remesh = false;
   bool stats = false;
 };
-
-double parse_size(const std::string& text) {
-  errno = 0;
-  char* end = nullptr;
-  const double h = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(h) || !(h > 0.0))
-    throw InputError("--size " + text + ": give a positive finite size H (the metric H^-2 I)");
-  return h;
-}
 
 // The domain as a file, with the metric of each of its vertices, and the input's vertex
 // references kept for the boundary vertices (never moved or removed; the others are 0).
@@ -111,9 +102,7 @@ int run_optimize3(const OptimizeArgs& args) {
   if (args.size_given) {
     metrics.assign(input.vertices.size(), Metric3::isotropic(parse_size(args.size)));
   } else if (!args.metric.empty()) {
-    const SolData sol = read_medit_sol(args.metric);
-    check_sol_matches(sol, input.vertices.size(), args.metric);
-    metrics = metrics3_from_sol(sol, args.metric);
+    metrics = read_metrics<Metric3>(args.metric, input.vertices.size());
   } else {
     metrics = implied_metrics(input);
   }
@@ -183,9 +172,7 @@ int run_optimize(const OptimizeArgs& args) {
   if (args.size_given) {
     metrics.assign(input.vertices.size(), Metric2::isotropic(parse_size(args.size)));
   } else if (!args.metric.empty()) {
-    const SolData sol = read_medit_sol(args.metric);
-    check_sol_matches(sol, input.vertices.size(), args.metric);
-    metrics = metrics2_from_sol(sol, args.metric);
+    metrics = read_metrics<Metric2>(args.metric, input.vertices.size());
   } else {
     metrics = implied_metrics(input);
   }

@@ -26,7 +26,7 @@
 
 #include "algorithms/mesh2d/control_space.hpp"
 #include "apps/cli_util.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "apps/subcommands.hpp"
 #include "apps/svg_canvas.hpp"
 #include "kernel/error.hpp"
@@ -69,16 +69,6 @@ std::string mesh_path(const std::string& given) {
 int mesh_dimension(const std::string& path) {
   if (extension_of(path) != "ele") return input_dimension(path);
   return input_dimension(path.substr(0, path.size() - 3) + "node");
-}
-
-template <class Metric>
-std::vector<Metric> read_metrics(const std::string& sol, std::size_t vertices) {
-  const SolData data = read_medit_sol(sol);
-  check_sol_matches(data, vertices, sol);
-  if constexpr (std::is_same_v<Metric, Metric2>)
-    return metrics2_from_sol(data, sol);
-  else
-    return metrics3_from_sol(data, sol);
 }
 
 // The vertex metrics of a 2D mesh: none, a .sol at its vertices, or a .sol on a background

@@ -15,7 +15,7 @@
 
 #include "algorithms/mesh2d/control_space.hpp"
 #include "apps/cli_util.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit_sol.hpp"
@@ -56,19 +56,6 @@ std::optional<double> parse_size(const std::string& text, bool given) {
   if (end == text.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(h) || !(h > 0.0))
     throw InputError("--size " + text + ": give a positive finite size H (the metric H^-2 I)");
   return h;
-}
-
-// The vertex metrics of a .sol file for the `vertices` vertices of the mesh or background (a
-// scalar h is h^-2 I); the reader names the file and vertex of a bad value, the dimension of a
-// solution for the other dimension, and a count that differs.
-template <class Metric>
-std::vector<Metric> read_metrics(const std::string& sol, std::size_t vertices) {
-  const SolData data = read_medit_sol(sol);
-  check_sol_matches(data, vertices, sol);
-  if constexpr (std::is_same_v<Metric, Metric2>)
-    return metrics2_from_sol(data, sol);
-  else
-    return metrics3_from_sol(data, sol);
 }
 
 template <class Cells>

@@ -5,7 +5,7 @@
 #include "algorithms/delaunay2d/prepare.hpp"
 #include "algorithms/delaunay3d/prepare.hpp"
 #include "apps/cli_util.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/tetrahedralization3_build.hpp"

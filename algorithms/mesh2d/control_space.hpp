@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "kernel/metric.hpp"
@@ -36,6 +37,10 @@ class ControlSpace2 {
   // The same metric everywhere: a background of two triangles over the box [lo, hi] (a point
   // outside it takes the same metric all the same).
   static ControlSpace2 uniform(const Metric2& metric, const Vec2& lo, const Vec2& hi);
+  // A uniform size h (the metric h^-2 I) over the box of `points` grown by 1 on each side, as
+  // `dtlab mesh --size` and Python's size= give it; InputError unless h is positive and finite
+  // and there is a point.
+  static ControlSpace2 uniform_size(std::span<const Vec2> points, double h);
   Metric2 metric_at(const Vec2& p, std::uint32_t& hint) const;
 
   const Mesh2& background() const noexcept { return mesh_; }

@@ -114,6 +114,18 @@ bool ControlSpace3::contains(std::uint32_t t, const Vec3& p) const {
   return closed_tetrahedron_holds(points_[v[0]], points_[v[1]], points_[v[2]], points_[v[3]], p);
 }
 
+ControlSpace3 ControlSpace3::uniform_size(std::span<const Vec3> points, double h) {
+  if (!(h > 0.0) || !std::isfinite(h))
+    throw InputError("size: give a positive finite size H (the metric H^-2 I)");
+  if (points.empty()) throw InputError("a uniform size needs a domain: no points");
+  Vec3 lo = points.front(), hi = lo;
+  for (const Vec3& p : points) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  return uniform(Metric3::isotropic(h), lo - Vec3{1, 1, 1}, hi + Vec3{1, 1, 1});
+}
+
 ControlSpace3 ControlSpace3::uniform(const Metric3& metric, const Vec3& lo, const Vec3& hi) {
   MeshData3 box;
   for (std::uint32_t c = 0; c < 8; ++c)

@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "kernel/metric.hpp"
@@ -42,6 +43,10 @@ class ControlSpace3 {
   // The same metric everywhere: a background of six tetrahedra over the box [lo, hi] (a point
   // outside it takes the same metric all the same).
   static ControlSpace3 uniform(const Metric3& metric, const Vec3& lo, const Vec3& hi);
+  // A uniform size h (the metric h^-2 I) over the box of `points` grown by 1 on each side, as
+  // `dtlab mesh --size` and Python's size= give it; InputError unless h is positive and finite
+  // and there is a point.
+  static ControlSpace3 uniform_size(std::span<const Vec3> points, double h);
 
   // The metric at p: located by a visibility walk (exact orient3d) from `hint` (a background
   // tetrahedron, updated to where p was found), interpolated from the vertices of the

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 
 #include "kernel/error.hpp"
 #include "mesh/io/binary_input.hpp"
@@ -449,6 +450,18 @@ std::vector<Metric3> metrics3_from_sol(const SolData& sol, const std::string& fi
 
 SolData sol_from_metrics(std::span<const Metric2> metrics) { return sol_from<Metric2, 2>(metrics); }
 SolData sol_from_metrics(std::span<const Metric3> metrics) { return sol_from<Metric3, 3>(metrics); }
+
+template <class Metric>
+std::vector<Metric> read_metrics(const std::string& file, std::size_t vertex_count) {
+  const SolData sol = read_medit_sol(file);
+  check_sol_matches(sol, vertex_count, file);
+  if constexpr (std::is_same_v<Metric, Metric2>)
+    return metrics2_from_sol(sol, file);
+  else
+    return metrics3_from_sol(sol, file);
+}
+template std::vector<Metric2> read_metrics<Metric2>(const std::string&, std::size_t);
+template std::vector<Metric3> read_metrics<Metric3>(const std::string&, std::size_t);
 
 void check_sol_matches(const SolData& sol, std::size_t vertex_count, const std::string& file) {
   // vertex_count() rounds down: a partial vertex would otherwise pass for the one before it.

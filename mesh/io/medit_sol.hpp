@@ -82,4 +82,9 @@ SolData sol_from_metrics(std::span<const Metric3> metrics);
 // InputError naming `file` unless the solution has exactly `vertex_count` vertices.
 void check_sol_matches(const SolData& sol, std::size_t vertex_count, const std::string& file);
 
+// The metric at each of `vertex_count` vertices from the .sol/.solb `file` (sizes or tensors):
+// read, checked against the count, converted (the three steps above). Metric2 or Metric3.
+template <class Metric>
+std::vector<Metric> read_metrics(const std::string& file, std::size_t vertex_count);
+
 }  // namespace dtlab

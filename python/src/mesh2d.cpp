@@ -77,15 +77,6 @@ py::dict mesh_result(MeshData2&& data, std::vector<Metric2>&& metrics, py::dict 
   return out;
 }
 
-ControlSpace2 uniform_control_space(std::span<const Vec2> points, double h) {
-  Vec2 lo = points.front(), hi = lo;
-  for (const Vec2& p : points) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-  }
-  return ControlSpace2::uniform(Metric2::isotropic(h), lo - Vec2{1, 1}, hi + Vec2{1, 1});
-}
-
 py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, const py::handle& markers_obj,
               const py::handle& holes_obj, const py::handle& regions_obj, const py::handle& size, const py::handle& metric,
               const py::handle& background_points, const py::handle& background_triangles, const std::string& method,
@@ -120,10 +111,8 @@ py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, cons
   const bool scalar_size = !size.is_none() && (py::isinstance<py::float_>(size) || py::isinstance<py::int_>(size));
   if (scalar_size) {
     if (!metric.is_none()) throw InputError("give size or metric, not both");
-    const double h = size.cast<double>();
-    if (!(h > 0.0) || !std::isfinite(h)) throw InputError("size: a positive finite number");
     if (!background_points.is_none()) throw InputError("background: goes with per-vertex sizes or a metric, not a uniform size");
-    control.emplace(uniform_control_space(input.points, h));
+    control.emplace(ControlSpace2::uniform_size(input.points, size.cast<double>()));
   } else if (!background_points.is_none()) {
     const DoubleArray bp = double_rows(background_points, 2, "background points");
     const IndexArray bt = index_rows(background_triangles, 3, "background triangles");

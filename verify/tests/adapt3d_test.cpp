@@ -17,7 +17,7 @@
 
 #include "algorithms/adapt/adapt3d.hpp"
 #include "apps/adapt3.hpp"
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/io/medit_sol.hpp"
@@ -191,7 +191,7 @@ struct Files {
 TEST(RunAdapt3, AdaptsAFileAndKeepsReferences) {
   Files f;
   const MeshData3 input = cube_mesh(3);
-  cli::write_mesh3(f.path("cube.mesh"), input);
+  write_mesh3(f.path("cube.mesh"), input);
   std::vector<Metric3> metrics(input.vertices.size(), Metric3::isotropic(0.2));
   write_medit_sol(f.path("cube.sol"), sol_from_metrics(metrics));
   cli::AdaptRequest r;
@@ -203,7 +203,7 @@ TEST(RunAdapt3, AdaptsAFileAndKeepsReferences) {
   EXPECT_EQ(cli::run_adapt3(r), 0);
   const std::string out = testing::internal::GetCapturedStdout();
   EXPECT_NE(out.find("\"stopped_by\":"), std::string::npos);
-  const MeshData3 result = cli::read_mesh3(r.output);
+  const MeshData3 result = read_mesh3(r.output);
   EXPECT_GT(result.tetrahedra.size(), input.tetrahedra.size());
   std::set<int> refs_in(input.triangle_refs.begin(), input.triangle_refs.end());
   std::set<int> refs_out(result.triangle_refs.begin(), result.triangle_refs.end());
@@ -214,7 +214,7 @@ TEST(RunAdapt3, AdaptsAFileAndKeepsReferences) {
 TEST(RunAdapt3, BadInputNamed) {
   Files f;
   const MeshData3 input = cube_mesh(2);
-  cli::write_mesh3(f.path("cube.mesh"), input);
+  write_mesh3(f.path("cube.mesh"), input);
   std::vector<Metric3> few(input.vertices.size() - 1, Metric3::isotropic(0.2));
   write_medit_sol(f.path("few.sol"), sol_from_metrics(few));
   cli::AdaptRequest r;

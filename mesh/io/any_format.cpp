@@ -1,9 +1,8 @@
-#include "apps/input_files.hpp"
+#include "mesh/io/any_format.hpp"
 
 #include <fstream>
 #include <sstream>
 
-#include "apps/cli_util.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit.hpp"
 #include "mesh/io/medit3.hpp"
@@ -14,7 +13,16 @@
 #include "mesh/io/point_file.hpp"
 #include "mesh/io/triangle_format.hpp"
 
-namespace dtlab::cli {
+namespace dtlab {
+
+std::string extension_of(std::string_view path) {
+  const auto slash = path.find_last_of('/');
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string_view::npos || (slash != std::string_view::npos && dot < slash)) return "";
+  std::string ext(path.substr(dot + 1));
+  for (char& c : ext) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return ext;
+}
 
 namespace {
 std::string without_extension(const std::string& path) {
@@ -46,6 +54,13 @@ int input_dimension(const std::string& path) {
     }
   }
   return ext == "mesh" ? 3 : 2;
+}
+
+bool is_surface_input(const std::string& path) {
+  const std::string ext = extension_of(path);
+  if (ext == "off" || ext == "obj" || ext == "stl" || ext == "smesh") return true;
+  if (ext == "poly" || ext == "mesh") return input_dimension(path) == 3;
+  return false;
 }
 
 std::vector<Vec2> read_points2(const std::string& path) {
@@ -101,4 +116,4 @@ void write_mesh3(const std::string& path, const MeshData3& mesh) {
                    "': supported 3D outputs are .mesh, .meshb (Medit), .msh (Gmsh) and .ele (TetGen .node + .ele)");
 }
 
-}  // namespace dtlab::cli
+}  // namespace dtlab

@@ -1,14 +1,20 @@
-// Reading the inputs and writing the outputs of the subcommands, by file extension.
+// Reading and writing points and meshes of either dimension by file extension: the one facade
+// that the command line (apps/), Python (python/) and the tests use, so that a format is added
+// in one place (docs/architecture.md, "Where a new X goes").
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kernel/vec.hpp"
 #include "mesh/io/mesh_data.hpp"
 #include "mesh/io/mesh_data3.hpp"
 
-namespace dtlab::cli {
+namespace dtlab {
+
+// Lower-case extension of a path, without the dot ("" if none).
+std::string extension_of(std::string_view path);
 
 // Medit binary .meshb and Gmsh .msh (a 2D mesh: no tetrahedra, every z = 0) are read and written
 // beside the formats below, for 2D and 3D alike.
@@ -16,6 +22,10 @@ namespace dtlab::cli {
 // 2 or 3: the dimension of a point or mesh input: a .mesh file's Dimension keyword, a .node or
 // .poly file's header (Triangle's 2 or TetGen's 3), the numbers per line of a plain point file.
 int input_dimension(const std::string& path);
+
+// Whether `path` holds a 3D piecewise linear complex (a closed surface: .off .obj .stl .smesh, a
+// TetGen .poly or a Medit .mesh of dimension 3) rather than a planar graph or a point set.
+bool is_surface_input(const std::string& path);
 
 // Points of a 2D input: Triangle .node, Medit .mesh (its Vertices), or a plain point file.
 std::vector<Vec2> read_points2(const std::string& path);
@@ -34,4 +44,4 @@ std::vector<Vec3> read_points3(const std::string& path);
 MeshData3 read_mesh3(const std::string& path);
 void write_mesh3(const std::string& path, const MeshData3& mesh);
 
-}  // namespace dtlab::cli
+}  // namespace dtlab

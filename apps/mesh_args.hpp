@@ -1,0 +1,41 @@
+// The arguments of `dtlab mesh`, one set for both dimensions: apps/mesh.cpp parses them and
+// meshes a planar graph, or hands a closed surface to apps/mesh3.cpp.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kernel/metric.hpp"
+
+namespace dtlab::cli {
+
+struct MeshCliArgs {
+  std::string input, output, output_metric;
+  std::string size;  // kept as text: refused with our own message (parse_size, cli_util.hpp)
+  bool size_given = false;
+  std::string size_map, metric, background;
+  std::string method = "edge";
+  std::string interpolation = "sizes";
+  bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
+  bool no_remesh = false;               // surfaces: Mesh3dOptions::local_remesh off
+  bool remove_cavities = false;         // surfaces: Mesh3dOptions::remove_cavities
+  std::string optimize = "standard";    // surfaces: the effort, optimize3d_effort (optimize3d.hpp)
+  bool triangulate_nonplanar = false;   // surfaces: FacetTriangulationOptions::triangulate_nonplanar
+  unsigned threads = 1;                 // surfaces: Mesh3dOptions::threads
+  std::uint32_t insertion_regions = 1;  // surfaces: Mesh3dOptions::insertion_regions
+
+  // How many of --size, --size-map, --metric were given.
+  int sizes_given() const { return size_given + !size_map.empty() + !metric.empty(); }
+};
+
+// The --size-map (scalars) or --metric (tensors) file at `vertex_count` vertices of `against`,
+// checked to be of that kind and dimension. Metric2 or Metric3.
+template <class Metric>
+std::vector<Metric> read_size_file(const MeshCliArgs& args, std::size_t vertex_count, const std::string& against);
+
+// The 3D path: returns the exit status (0 success, 3 --verify failed); InputError for bad input.
+int run_mesh3(const MeshCliArgs& args);
+
+}  // namespace dtlab::cli
