@@ -3,7 +3,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS dtlab dtlab_kernel dtlab_mesh dtlab_algorithms dtlab_verify
+install(TARGETS dtlab dtlab_kernel dtlab_mesh dtlab_algorithms ${DTLAB_ALGORITHM_TARGETS} dtlab_verify
         EXPORT dtlabTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
