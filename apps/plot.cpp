@@ -66,11 +66,6 @@ std::string mesh_path(const std::string& given) {
   return given + ".ele";
 }
 
-int mesh_dimension(const std::string& path) {
-  if (extension_of(path) != "ele") return input_dimension(path);
-  return input_dimension(path.substr(0, path.size() - 3) + "node");
-}
-
 // The vertex metrics of a 2D mesh: none, a .sol at its vertices, or a .sol on a background
 // mesh interpolated at the vertices the triangles use (as `dtlab quality` does).
 std::vector<Metric2> metrics2(const PlotArgs& args, const MeshData2& mesh) {
@@ -425,7 +420,7 @@ int run_plot(const PlotArgs& args) {
     throw InputError("--background " + args.background + " needs --metric, the metric at its vertices");
   const std::string path = mesh_path(args.mesh);
 
-  if (mesh_dimension(path) == 3) {
+  if (input_dimension(path) == 3) {
     if (!args.background.empty())
       throw InputError("--background " + args.background + ": a background mesh is supported for 2D meshes only, and " +
                        path + " is 3D (give --metric at its vertices)");

@@ -41,22 +41,6 @@ std::string mesh_path(const std::string& given) {
   return given + ".ele";
 }
 
-// The dimension of the mesh: a .mesh's Dimension, or the header of the .node beside an .ele.
-int mesh_dimension(const std::string& path) {
-  if (extension_of(path) != "ele") return input_dimension(path);
-  return input_dimension(path.substr(0, path.size() - 3) + "node");
-}
-
-// --size H: a positive finite number, H^-2 I at every vertex.
-std::optional<double> parse_size(const std::string& text, bool given) {
-  if (!given) return std::nullopt;
-  errno = 0;
-  char* end = nullptr;
-  const double h = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(h) || !(h > 0.0))
-    throw InputError("--size " + text + ": give a positive finite size H (the metric H^-2 I)");
-  return h;
-}
 
 template <class Cells>
 std::vector<char> used_vertices(std::size_t count, const Cells& cells) {
@@ -116,13 +100,13 @@ int run_quality3(const QualityArgs& args, const std::string& path, std::optional
 }
 
 int run_quality(const QualityArgs& args) {
-  const std::optional<double> size = parse_size(args.size, args.size_given);
+  const std::optional<double> size = args.size_given ? std::optional<double>(parse_size(args.size)) : std::nullopt;
   if (size && (!args.metric.empty() || !args.background.empty()))
     throw InputError("--size " + args.size + ": give either --size or --metric (with or without --background)");
   if (!args.background.empty() && args.metric.empty())
     throw InputError("--background " + args.background + " needs --metric, the metric at its vertices");
   const std::string path = mesh_path(args.mesh);
-  return mesh_dimension(path) == 3 ? run_quality3(args, path, size) : run_quality2(args, path, size);
+  return input_dimension(path) == 3 ? run_quality3(args, path, size) : run_quality2(args, path, size);
 }
 
 }  // namespace

@@ -33,6 +33,7 @@ std::string without_extension(const std::string& path) {
 
 int input_dimension(const std::string& path) {
   const std::string ext = extension_of(path);
+  if (ext == "ele") return input_dimension(without_extension(path) + ".node");  // Triangle's or TetGen's
   if (ext == "meshb") return medit_binary_dimension(path);
   if (ext == "msh") return is_planar(read_gmsh(path).mesh) ? 2 : 3;
   if (ext != "node" && ext != "mesh" && ext != "poly") return point_file_dimension(path);

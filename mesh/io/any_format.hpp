@@ -20,7 +20,8 @@ std::string extension_of(std::string_view path);
 // beside the formats below, for 2D and 3D alike.
 //
 // 2 or 3: the dimension of a point or mesh input: a .mesh file's Dimension keyword, a .node or
-// .poly file's header (Triangle's 2 or TetGen's 3), the numbers per line of a plain point file.
+// .poly file's header (Triangle's 2 or TetGen's 3; for a .ele, the .node's beside it), the
+// numbers per line of a plain point file.
 int input_dimension(const std::string& path);
 
 // Whether `path` holds a 3D piecewise linear complex (a closed surface: .off .obj .stl .smesh, a
