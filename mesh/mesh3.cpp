@@ -9,6 +9,7 @@
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/domain_vertices.hpp"
 #include "mesh/edge_key.hpp"
 #include "mesh/element_sets3.hpp"
 #include "mesh/navigation3.hpp"
@@ -555,20 +556,10 @@ void Mesh3::check() const {
 
 MeshData3 Mesh3::domain(std::vector<std::uint32_t>* vertex_ids) const {
   MeshData3 out;
-  std::vector<std::uint32_t> number(vertex_capacity(), kNone);
+  const std::vector<std::uint32_t> number = number_domain_vertices<4>(
+      std::span<const std::uint32_t>(vertices_), std::span<const Vec3>(points_),
+      [this](std::uint32_t t) { return in_domain(t); }, out.vertices, out.vertex_refs, vertex_ids);
   const std::uint32_t nt = tetrahedron_capacity();
-  for (std::uint32_t t = 0; t < nt; ++t) {
-    if (!in_domain(t)) continue;
-    for (std::uint32_t i = 0; i < 4; ++i) number[vertices_[4 * t + i]] = 0;
-  }
-  if (vertex_ids) vertex_ids->clear();
-  for (std::uint32_t v = 0; v < vertex_capacity(); ++v) {
-    if (number[v] == kNone) continue;
-    number[v] = static_cast<std::uint32_t>(out.vertices.size());
-    out.vertices.push_back(points_[v]);
-    out.vertex_refs.push_back(0);
-    if (vertex_ids) vertex_ids->push_back(v);
-  }
   for (std::uint32_t t = 0; t < nt; ++t) {
     if (!in_domain(t)) continue;
     const auto v = tetrahedron(t);

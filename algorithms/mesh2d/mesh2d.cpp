@@ -1,11 +1,11 @@
 // The 2D mesher's pipeline (mesh2d.hpp): empty mesh, control space, field points, optimization.
 #include "algorithms/mesh2d/mesh2d.hpp"
 
-#include <chrono>
 #include <memory>
 #include <span>
 #include <string>
 
+#include "algorithms/common/mesh_pipeline.hpp"
 #include "algorithms/mesh2d/registry.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
 #include "kernel/error.hpp"
@@ -13,16 +13,10 @@
 
 namespace dtlab {
 
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
+using mesh_pipeline::seconds_since;
 
 Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = mesh_pipeline::Clock::now();
   const FieldPointMethod2& method = (options.methods ? *options.methods : mesh2d_methods()).at(options.method);
   if (!(options.filter_distance > 0.0 && options.filter_distance < 1.0)) {
     throw InputError("mesh2d: filter_distance must lie in (0, 1)");
@@ -32,7 +26,7 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   result.stats.segments = input.segments.size();
 
   // 1. Empty mesh.
-  auto phase = std::chrono::steady_clock::now();
+  auto phase = mesh_pipeline::Clock::now();
   Constrained2dOptions cdt_options;
   cdt_options.method = "cdt";
   cdt_options.first_number = options.first_number;
@@ -73,7 +67,7 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   poll_interrupt(options.interrupt, "mesh2d: after the empty mesh");
 
   // 2. Control space: the given one, or the classical sizes on a frozen copy of the empty mesh.
-  phase = std::chrono::steady_clock::now();
+  phase = mesh_pipeline::Clock::now();
   std::unique_ptr<ControlSpace2> classical;
   if (!options.control && !options.input_metrics.empty()) {
     if (options.input_metrics.size() != input.points.size()) {
@@ -92,26 +86,22 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
     result.stats.boundary_points = boundary.points.size() - input.points.size();
     result.mesh = build_empty_mesh(boundary.points, boundary.segments, boundary.markers);
   }
-  std::uint32_t hint = ControlSpace2::kNoHint;
-  for (std::uint32_t v = 0; v < result.mesh.vertex_capacity(); ++v) {
-    if (!result.mesh.is_dead_vertex(v)) result.mesh.set_metric(v, control.metric_at(result.mesh.point(v), hint));
-  }
+  mesh_pipeline::assign_vertex_metrics(result.mesh, control);
   result.stats.seconds_control_space = seconds_since(phase);
   poll_interrupt(options.interrupt, "mesh2d: after the control space");
 
   // 3.+4. Field points and their insertion.
-  phase = std::chrono::steady_clock::now();
+  phase = mesh_pipeline::Clock::now();
   method.run(result.mesh, control, options, result.stats);
   result.stats.seconds_field_points = seconds_since(phase);
 
   // 5. Optimization.
-  phase = std::chrono::steady_clock::now();
+  phase = mesh_pipeline::Clock::now();
   if (options.optimize) {
     // Moved and new points take their metric from the control space (one walk hint for all).
-    std::uint32_t field_hint = ControlSpace2::kNoHint;
-    const MetricField2 field = [&control, &field_hint](const Vec2& p) { return control.metric_at(p, field_hint); };
-    Optimize2dOptions optimization = options.optimization;
-    if (!optimization.interrupt) optimization.interrupt = options.interrupt;
+    std::uint32_t field_hint = 0;
+    const MetricField2 field = mesh_pipeline::metric_field<MetricField2>(control, field_hint);
+    const Optimize2dOptions optimization = mesh_pipeline::with_interrupt(options.optimization, options.interrupt);
     const Optimize2dStats o = optimize2d(result.mesh, optimization, field);
     result.stats.swaps = o.swaps + o.valence_swaps;
     result.stats.relocations = o.relocations;
@@ -121,10 +111,7 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   }
   result.stats.seconds_optimization = seconds_since(phase);
 
-  result.output = result.mesh.domain(&result.output_vertex_ids);
-  result.output_metrics.reserve(result.output_vertex_ids.size());
-  for (const std::uint32_t v : result.output_vertex_ids) result.output_metrics.push_back(result.mesh.metric(v));
-  result.stats.seconds = seconds_since(start);
+  mesh_pipeline::finish(result, start);
   return result;
 }
 

@@ -2,10 +2,10 @@
 // optimization, domain output.
 #include "algorithms/mesh3d/mesh3d.hpp"
 
-#include <chrono>
 #include <memory>
 #include <string>
 
+#include "algorithms/common/mesh_pipeline.hpp"
 #include "algorithms/mesh3d/local_remesh.hpp"
 #include "algorithms/mesh3d/registry.hpp"
 #include "algorithms/mesh3d/spatial_renumber.hpp"
@@ -13,16 +13,10 @@
 
 namespace dtlab {
 
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
+using mesh_pipeline::seconds_since;
 
 Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = mesh_pipeline::Clock::now();
   if (options.method == "front") {
     throw InputError("mesh3d: the advancing-front method (book §7.8) is not implemented in 3D yet (use edge)");
   }
@@ -36,7 +30,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
 
   // 1. Empty mesh: boundary recovery with the fewest Steiner points; the whole tetrahedralization
   //    comes back in `tetrahedralization`, the domain's tetrahedra with their regions.
-  auto phase = std::chrono::steady_clock::now();
+  auto phase = mesh_pipeline::Clock::now();
   {
     Constrained3dOptions recovery;
     recovery.method = "recover";
@@ -57,30 +51,26 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   poll_interrupt(options.interrupt, "mesh3d: after the empty mesh");
 
   // 2. Control space: the given one, or the classical sizes on the empty mesh (a frozen copy).
-  phase = std::chrono::steady_clock::now();
+  phase = mesh_pipeline::Clock::now();
   std::unique_ptr<ControlSpace3> classical;
   if (!options.control) classical = std::make_unique<ControlSpace3>(classical_control_space(result.mesh));
   const ControlSpace3& control = options.control ? *options.control : *classical;
-  std::uint32_t hint = ControlSpace3::kNoHint;
-  for (std::uint32_t v = 0; v < result.mesh.vertex_capacity(); ++v) {
-    if (!result.mesh.is_dead_vertex(v)) result.mesh.set_metric(v, control.metric_at(result.mesh.point(v), hint));
-  }
+  mesh_pipeline::assign_vertex_metrics(result.mesh, control);
   result.stats.seconds_control_space = seconds_since(phase);
   poll_interrupt(options.interrupt, "mesh3d: after the control space");
 
   // 3.+4. Field points and their insertion.
-  phase = std::chrono::steady_clock::now();
+  phase = mesh_pipeline::Clock::now();
   method.run(result.mesh, control, options, result.stats);
   result.stats.seconds_field_points = seconds_since(phase);
 
   // 5. Optimization, on the mesh renumbered for locality (spatial_renumber.hpp).
-  phase = std::chrono::steady_clock::now();
+  phase = mesh_pipeline::Clock::now();
   if (options.optimize) {
     renumber_spatially(result.mesh);
-    std::uint32_t field_hint = ControlSpace3::kNoHint;
-    const MetricField3 field = [&control, &field_hint](const Vec3& p) { return control.metric_at(p, field_hint); };
-    Optimize3dOptions optimization = options.optimization;
-    if (!optimization.interrupt) optimization.interrupt = options.interrupt;
+    std::uint32_t field_hint = 0;
+    const MetricField3 field = mesh_pipeline::metric_field<MetricField3>(control, field_hint);
+    const Optimize3dOptions optimization = mesh_pipeline::with_interrupt(options.optimization, options.interrupt);
     const Optimize3dStats o = optimize3d(result.mesh, optimization, field);
     result.stats.face_swaps = o.face_swaps;
     result.stats.shell_transformations = o.shell_transformations;
@@ -104,10 +94,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   result.stats.seconds_optimization = seconds_since(phase);
 
   // The domain (exterior dropped), regions and boundary triangles with their references.
-  result.output = result.mesh.domain(&result.output_vertex_ids);
-  result.output_metrics.reserve(result.output_vertex_ids.size());
-  for (const std::uint32_t v : result.output_vertex_ids) result.output_metrics.push_back(result.mesh.metric(v));
-  result.stats.seconds = seconds_since(start);
+  mesh_pipeline::finish(result, start);
   return result;
 }
 
