@@ -10,12 +10,11 @@
 #include <sstream>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
-#include "algorithms/constrained3d/facet_triangulation.hpp"
+#include "algorithms/constrained3d/surface_problem.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit3.hpp"
-#include "mesh/io/surface_input.hpp"
 #include "verify/checks_constrained3d.hpp"
 
 namespace dtlab::cli {
@@ -29,8 +28,10 @@ namespace {
 
 // What the facet triangulation did that the user should know: merged groups (the first few
 // named), facets without area, and segments that are no constraint of a tetrahedralization.
-void report_facets(const SurfaceInput& in, const FacetTriangulation& facets, bool merge) {
-  for (const std::string& m : facets.messages) std::cerr << "dtlab: " << m << "\n";
+void report_facets(const SurfaceProblem& problem, bool merge) {
+  const SurfaceInput& in = problem.surface;
+  const FacetTriangulation& facets = problem.facets;
+  for (const std::string& m : problem.messages) std::cerr << "dtlab: " << m << "\n";
   if (facets.segments_alone > 0)
     std::cerr << "dtlab: " << facets.segments_alone
               << " facet(s) of segments or isolated vertices only (no area): not constraints of the "
@@ -50,46 +51,14 @@ void report_facets(const SurfaceInput& in, const FacetTriangulation& facets, boo
   if (facets.merged.size() > kShown) std::cerr << "dtlab:   ... and " << facets.merged.size() - kShown << " more groups\n";
 }
 
-// Input triangle t as the input check names it: its facet, and which of the facet's triangles it
-// is where the facet has several (a facet's triangles are consecutive).
-std::string triangle_name(const SurfaceInput& in, const FacetTriangulation& facets, std::uint32_t t) {
-  const auto& of = facets.triangle_facet;
-  std::uint32_t first = t, last = t;
-  while (first > 0 && of[first - 1] == of[t]) --first;
-  while (last + 1 < of.size() && of[last + 1] == of[t]) ++last;
-  std::string name = in.facet_name(of[t]);
-  if (last > first)
-    name += " (triangle " + std::to_string(t - first + 1) + " of " + std::to_string(last - first + 1) + ")";
-  return name;
-}
-
 }  // namespace
 
 int run_constrain3d(const Constrain3dCliArgs& args) {
-  const SurfaceInput in = read_surface(args.input);
-  FacetTriangulation facets;
-  try {
-    facets = triangulate_facets(in.plc, {.merge_coplanar = args.merge_coplanar,
-                                         .facet_name = [&in](std::size_t f) { return in.facet_name(f); },
-                                         .first_vertex_number = in.first_vertex_number});
-  } catch (const InputError& e) {
-    throw InputError(args.input + ": " + e.what(), e.items());
-  }
-  report_facets(in, facets, args.merge_coplanar);
-  std::vector<RegionSeed3> seeds;
-  for (const PlcRegion3& r : in.plc.regions) {
-    const int attribute = static_cast<int>(r.attribute);
-    if (static_cast<double>(attribute) != r.attribute)
-      std::cerr << "dtlab: region attribute " << r.attribute << " is not an integer; the reference is " << attribute
-                << "\n";
-    seeds.push_back({r.point, attribute});
-  }
-  ConstrainedInput3 input{.points = in.plc.vertices,
-                          .triangles = facets.triangles,
-                          .triangle_refs = facets.triangle_refs,
-                          .holes = in.plc.holes,
-                          .regions = seeds,
-                          .triangle_name = [&](std::uint32_t t) { return triangle_name(in, facets, t); }};
+  const SurfaceProblem problem = read_surface_problem(args.input, {.merge_coplanar = args.merge_coplanar});
+  const SurfaceInput& in = problem.surface;
+  const FacetTriangulation& facets = problem.facets;
+  report_facets(problem, args.merge_coplanar);
+  const ConstrainedInput3 input = problem.input();
   Constrained3dOptions options;
   options.method = args.method;
   options.keep_exterior = args.keep_exterior;

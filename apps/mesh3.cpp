@@ -15,7 +15,7 @@
 #include <optional>
 #include <sstream>
 
-#include "algorithms/constrained3d/facet_triangulation.hpp"
+#include "algorithms/constrained3d/surface_problem.hpp"
 #include "algorithms/mesh3d/mesh3d.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
@@ -23,7 +23,6 @@
 #include "kernel/quality.hpp"
 #include "mesh/io/medit3.hpp"
 #include "mesh/io/medit_sol.hpp"
-#include "mesh/io/surface_input.hpp"
 #include "mesh/mesh_quality.hpp"
 #include "verify/checks_mesh3d.hpp"
 
@@ -74,24 +73,10 @@ int run_mesh3(const MeshCliArgs& args) {
   if (args.resample_boundary)
     throw InputError("--resample-boundary is for 2D domains: a surface is meshed as given");
 
-  const SurfaceInput in = read_surface(args.input);
-  FacetTriangulation facets;
-  try {
-    facets = triangulate_facets(in.plc, {.triangulate_nonplanar = args.triangulate_nonplanar,
-                                         .facet_name = [&in](std::size_t f) { return in.facet_name(f); },
-                                         .first_vertex_number = in.first_vertex_number});
-  } catch (const InputError& e) {
-    throw InputError(args.input + ": " + e.what(), e.items());
-  }
-  for (const std::string& m : facets.messages) std::cerr << "dtlab: " << m << "\n";
-  std::vector<RegionSeed3> seeds;
-  for (const PlcRegion3& r : in.plc.regions) seeds.push_back({r.point, static_cast<int>(r.attribute)});
-  const Mesh3dInput input{.points = in.plc.vertices,
-                          .triangles = facets.triangles,
-                          .triangle_refs = facets.triangle_refs,
-                          .holes = in.plc.holes,
-                          .regions = seeds,
-                          .triangle_name = [&](std::uint32_t t) { return in.facet_name(facets.triangle_facet[t]); }};
+  const SurfaceProblem problem =
+      read_surface_problem(args.input, {.triangulate_nonplanar = args.triangulate_nonplanar});
+  for (const std::string& m : problem.messages) std::cerr << "dtlab: " << m << "\n";
+  const Mesh3dInput input = problem.input();
   Mesh3dOptions options;
   options.method = args.method;
   options.optimize = !args.no_optimize;
