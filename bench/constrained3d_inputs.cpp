@@ -2,14 +2,14 @@
 // the inputs of scripts/bench_constrained3d.py that no file ships: Schönhardt's polyhedron at
 // three twists, twisted n-gonal prisms, a stack of twisted prisms, Bagemihl polyhedra and
 // Chazelle's polyhedron
-// (algorithms/constrained3d/schonhardt.hpp). Prints one file name per line.
+// (verify/generators/schonhardt.hpp). Prints one file name per line.
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "algorithms/constrained3d/schonhardt.hpp"
+#include "verify/generators/schonhardt.hpp"
 #include "mesh/io/mesh_data3.hpp"
 #include "mesh/io/off_format.hpp"
 

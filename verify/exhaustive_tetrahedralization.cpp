@@ -1,6 +1,6 @@
 // Exhaustive exact search for a tetrahedralization without Steiner points
 // (exhaustive_tetrahedralization.hpp; book §3.5, Schönhardt 1928).
-#include "algorithms/constrained3d/exhaustive_tetrahedralization.hpp"
+#include "verify/exhaustive_tetrahedralization.hpp"
 
 #include <algorithm>
 #include <map>

@@ -1,7 +1,7 @@
 // Generators of the Schönhardt family (schonhardt.hpp): twisted prisms and their stacks
 // (Schönhardt 1928; Rambau 2005), Bagemihl polyhedra and Chazelle's notched box (Chazelle
 // 1984; book §3.5).
-#include "algorithms/constrained3d/schonhardt.hpp"
+#include "verify/generators/schonhardt.hpp"
 
 #include <cmath>
 #include <algorithm>
