@@ -1,16 +1,19 @@
 // The round loop of the optimization strategy (book §8.6.3), written once for 2D and 3D: each
-// round the dimension's operators in their order, then a scan of the quality; rounds repeat while
-// one improves the worst or the mean Q_K by `round_improvement` (relative) or changes the sizes,
-// until a goal is met or max_rounds. The operators stay in optimize2d/ and optimize3d/.
+// round the dimension's operators in their sequence, by name from its registry, then a scan of
+// the quality; rounds repeat while one improves the worst or the mean Q_K by `round_improvement`
+// (relative) or changes the sizes, until a goal is met or max_rounds. The operators and their
+// registries stay in optimize2d/ and optimize3d/ (registry.hpp).
 #pragma once
 
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "algorithms/common/registry.hpp"
 #include "kernel/interrupt.hpp"
 
 namespace dtlab {
@@ -29,6 +32,9 @@ struct OptimizeRoundOptions {
   std::uint32_t relocation_sweeps = 2;  // per round
   bool collapses = true;                // short edges (size) and needles (shape)
   bool splits = true;                   // long edges
+  // A round's operators in order, names from the dimension's operator registry (registry.hpp);
+  // empty: every operator of the registry in its order (the book's, as before the registries).
+  std::vector<std::string> sequence{};
   // Asked before each round and each pass of a round (kernel/interrupt.hpp); yes: Interrupted.
   InterruptCheck interrupt{};
 };
@@ -47,7 +53,41 @@ struct OptimizeRoundStats {
   double seconds = 0.0;
 };
 
+// What one operator's pass tells the round: its size changes (collapses, splits), and whether it
+// stopped at its bound (it then names the bound in stats.stopped_by; the round goes on, the rounds
+// end after it).
+struct OperatorResult {
+  std::uint64_t size_changes = 0;
+  bool limit = false;
+};
+
 namespace optimize_detail {
+
+// The entries of `registry` named by `sequence` in its order (empty: all of them); InputError
+// naming an unknown one and the known ones.
+template <class Entry>
+std::vector<Entry> operator_sequence(const Registry<Entry>& registry, std::span<const std::string> sequence) {
+  if (sequence.empty()) return {registry.begin(), registry.end()};
+  std::vector<Entry> out;
+  for (const std::string& name : sequence) out.push_back(registry.at(name));
+  return out;
+}
+
+// A round's operators in order, each run by `pass(entry)`, the interrupt polled after each
+// ("<what>: after the <name> pass"): their size changes summed, and whether one reached its bound.
+template <class Entry, class Pass>
+OperatorResult run_operators(std::span<const Entry> operators, const InterruptCheck& interrupt, const char* what,
+                             Pass pass) {
+  OperatorResult round;
+  for (const Entry& op : operators) {
+    const OperatorResult r = pass(op);
+    round.size_changes += r.size_changes;
+    round.limit = round.limit || r.limit;
+    if (interrupt && interrupt())
+      throw Interrupted(std::string(what) + ": after the " + std::string(op.name) + " pass");
+  }
+  return round;
+}
 
 // A round's operators: the sizes changed (more than the dimension ignores), a pass stopped at
 // its bound (and named it in stopped_by).
@@ -94,8 +134,7 @@ struct RoundState {
 // The rounds. `Dim` derives from RoundState, names the point of an interrupt at the start of a
 // round `kRoundStart`, and provides (its Summary has `worst` and `mean`):
 //   Summary scan()                                      the quality before the rounds and after each;
-//   RoundResult round(uint32_t r, const Summary& last)  round r's operators in their order, the
-//                                                       interrupt polled between passes;
+//   RoundResult round(uint32_t r, const Summary& last)  round r's operators (run_operators);
 //   RoundGoal goal(const Summary& now)                  asked once after each round's scan;
 //   void finish(const Summary& before, Summary& last)   after the rounds (may change the mesh and
 //                                                       `last`): the element counts into the stats.

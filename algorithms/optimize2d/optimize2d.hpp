@@ -21,9 +21,15 @@
 
 namespace dtlab {
 
+template <class Entry>
+class Registry;  // algorithms/common/registry.hpp
+struct Optimize2dOperator;  // registry.hpp
+
 // The rounds' options (algorithms/common/optimize_strategy.hpp: at most 8 rounds, triangles with
 // Q_K > 1.4 treated one by one) and the 2D operators'.
 struct Optimize2dOptions : OptimizeRoundOptions<8, 1.4> {
+  // Where the names of `sequence` are looked up (null: optimize2d_operators(), registry.hpp).
+  const Registry<Optimize2dOperator>* operators = nullptr;
   // Boundary vertices that are neither kFixed nor corners collapsed along the boundary
   // (boundary_collapse_pass, after collapse_pass): adaptation's coarsening of the boundary.
   bool boundary_collapses = false;

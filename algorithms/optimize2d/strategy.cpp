@@ -4,7 +4,8 @@
 // relocations judged together, a "needle" by collapsing its short edge:
 // Frey and George, "Mesh Generation", §18.3), then apply each operator to the whole mesh (sizes
 // by collapse and split toward a unit mesh, swaps, relocation sweeps), and repeat while a round
-// still improves the worst or the mean quality significantly (§8.6.3's stopping criterion).
+// still improves the worst or the mean quality significantly (§8.6.3's stopping criterion). A
+// round runs the operators by name from their registry (registry.hpp), in options.sequence.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,7 +14,7 @@
 #include "algorithms/common/optimize_strategy.hpp"
 #include "algorithms/optimize2d/local.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
-#include "kernel/interrupt.hpp"
+#include "algorithms/optimize2d/registry.hpp"
 
 namespace dtlab {
 
@@ -38,11 +39,9 @@ QualitySummary2 summarize_quality(const Mesh2& mesh) {
   return s;
 }
 
-namespace {
-
 // The bad triangles, worst first: for each, the operators of its pathology until one applies.
-void treat_bad_triangles(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field,
-                         Optimize2dStats& stats) {
+OperatorResult optimize2d_detail::treat_bad_triangles(Mesh2& mesh, const Optimize2dOptions& options,
+                                                      const MetricField2& field, Optimize2dStats& stats) {
   auto quality = [&](std::uint32_t t) { return triangle_quality(mesh, t); };
   auto vertices = [&](std::uint32_t t) { return std::array{mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2)}; };
   const auto bad = optimize_detail::bad_elements(mesh, mesh.triangle_capacity(), options.bad_quality, quality, vertices);
@@ -90,7 +89,10 @@ void treat_bad_triangles(Mesh2& mesh, const Optimize2dOptions& options, const Me
     if (done || !options.collapses) continue;
     if (try_collapse(mesh, edges[2].second, options.collapse, CollapseCriterion::Improve)) ++stats.collapses;
   }
+  return {};
 }
+
+namespace {
 
 // The 2D part of the round loop (algorithms/common/optimize_strategy.hpp): a round's operators.
 struct Rounds2 : optimize_detail::RoundState<Mesh2, Optimize2dOptions, MetricField2, Optimize2dStats> {
@@ -103,62 +105,22 @@ struct Rounds2 : optimize_detail::RoundState<Mesh2, Optimize2dOptions, MetricFie
     stats.triangles_after = after.triangles;
   }
 
+  std::vector<Optimize2dOperator> sequence;  // options.sequence's operators
+
   optimize_detail::RoundResult round(std::uint32_t, const QualitySummary2&) {
-    std::uint64_t size_changes = 0;
-    bool limit = false;
-    treat_bad_triangles(mesh, options, field, stats);
-    poll_interrupt(options.interrupt, "optimize2d: after the bad triangles");
-    if (options.collapses) {
-      const std::uint64_t c = collapse_pass(mesh, options.collapse);
-      stats.collapses += c;
-      size_changes += c;
-    }
-    if (options.boundary_collapses) {
-      const std::uint64_t c = boundary_collapse_pass(mesh, options.collapse);
-      stats.boundary_collapses += c;
-      size_changes += c;
-    }
-    if (options.splits) {
-      const SplitPassResult r = split_pass(mesh, field, options.split);
-      stats.splits += r.splits;
-      stats.boundary_support_fallbacks += r.support_fallbacks;
-      stats.swaps += r.swaps;
-      size_changes += r.splits;
-      if (r.limit_reached) {
-        stats.stopped_by = "vertex_limit";
-        limit = true;
-      }
-    }
-    auto swaps = [&] {
-      if (!options.swaps) return;
-      const SwapPassResult r = swap_pass(mesh, options.swap_margin);
-      stats.swaps += r.swaps;
-      if (r.limit_reached) {
-        stats.stopped_by = "swap_limit";
-        limit = true;
-      }
-    };
-    swaps();
-    poll_interrupt(options.interrupt, "optimize2d: after the swaps");
-    if (options.relocation) {
-      for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
-        const std::uint64_t moved = relocate_sweep(mesh, field, options.relocate);
-        stats.relocations += moved;
-        if (moved == 0) break;
-      }
-    }
-    if (options.valence) {
-      stats.valence_swaps += valence_pass(mesh);
-      swaps();
-    }
-    return {size_changes != 0, limit};
+    const OperatorResult r = optimize_detail::run_operators<Optimize2dOperator>(
+        sequence, options.interrupt, "optimize2d",
+        [&](const Optimize2dOperator& op) { return op.pass(mesh, options, field, stats); });
+    return {r.size_changes != 0, r.limit};
   }
 };
 
 }  // namespace
 
 Optimize2dStats optimize2d(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field) {
-  return optimize_detail::optimize_rounds(Rounds2{{mesh, options, field}});
+  const auto& operators = options.operators ? *options.operators : optimize2d_operators();
+  auto sequence = optimize_detail::operator_sequence(operators, options.sequence);
+  return optimize_detail::optimize_rounds(Rounds2{{mesh, options, field}, std::move(sequence)});
 }
 
 }  // namespace dtlab

@@ -23,9 +23,15 @@
 
 namespace dtlab {
 
+template <class Entry>
+class Registry;  // algorithms/common/registry.hpp
+struct Optimize3dOperator;  // registry.hpp
+
 // The rounds' options (algorithms/common/optimize_strategy.hpp: at most 6 rounds, tetrahedra
 // with Q_K > 3 treated one by one) and the 3D operators'.
 struct Optimize3dOptions : OptimizeRoundOptions<6, 3.0> {
+  // Where the names of `sequence` are looked up (null: optimize3d_operators(), registry.hpp).
+  const Registry<Optimize3dOperator>* operators = nullptr;
   // A goal (0: not asked): the rounds stop after the first one whose mesh has no Q_K above
   // goal_worst_quality, no dihedral angle below goal_min_dihedral_deg and none above
   // goal_max_dihedral_deg (Euclidean, degrees), whatever the improvement.

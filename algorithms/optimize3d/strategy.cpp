@@ -2,7 +2,8 @@
 // ones worst first with the operators their pathology calls for (slivers, caps, needles, wedges:
 // swaps first, then moving their vertices, then collapsing their shortest edge), then apply each
 // operator to the whole mesh (sizes by collapse and split toward a unit mesh, the swap pass,
-// relocation sweeps), and repeat while a round still improves the worst or the mean quality.
+// relocation sweeps), and repeat while a round still improves the worst or the mean quality. A
+// round runs the operators by name from their registry (registry.hpp), in options.sequence.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,6 +16,7 @@
 #include "algorithms/common/optimize_strategy.hpp"
 #include "algorithms/optimize3d/local.hpp"
 #include "algorithms/optimize3d/optimize3d.hpp"
+#include "algorithms/optimize3d/registry.hpp"
 #include "kernel/error.hpp"
 #include "kernel/quality.hpp"
 
@@ -22,8 +24,6 @@ namespace dtlab {
 
 using optimize3d_detail::edge_length;
 using optimize3d_detail::tetrahedron_quality;
-using optimize3d_detail::QualityCache;
-using optimize3d_detail::SwapPassResult;
 
 namespace {
 
@@ -184,8 +184,11 @@ std::uint64_t polish_dihedral_angles(Mesh3& mesh, const Optimize3dOptions& o, co
 
 constexpr std::array<std::array<std::uint32_t, 2>, 6> kEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 
-void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field,
-                          Optimize3dStats& stats) {
+}  // namespace
+
+OperatorResult optimize3d_detail::treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options,
+                                                       const MetricField3& field, Optimize3dStats& stats,
+                                                       const OperatorScope3&) {
   std::vector<std::uint32_t> shell, ring, ball;  // (the interior-vertex treatment's, below)
   for (const auto& b : optimize_detail::bad_elements(mesh, mesh.tetrahedron_capacity(), options.bad_quality,
                                                      [&](std::uint32_t t) { return tetrahedron_quality(mesh, t); },
@@ -264,12 +267,16 @@ void treat_bad_tetrahedra(Mesh3& mesh, const Optimize3dOptions& options, const M
       }
     }
   }
+  return {};
 }
+
+namespace {
 
 // The 3D part of the round loop (algorithms/common/optimize_strategy.hpp): a round's operators,
 // the goal, and the dihedral step after the rounds.
 struct Rounds3 : optimize_detail::RoundState<Mesh3, Optimize3dOptions, MetricField3, Optimize3dStats> {
   static constexpr const char* kRoundStart = "optimize3d: at the start of a round";
+  std::vector<Optimize3dOperator> sequence;  // options.sequence's operators
   const Optimize3dOptions* goal_options = goal_asked(options) ? &options : nullptr;
   std::vector<std::uint8_t> flags{};  // the last scan's goal flags, by tetrahedron slot
   std::uint64_t last_misses = std::numeric_limits<std::uint64_t>::max();
@@ -299,8 +306,6 @@ struct Rounds3 : optimize_detail::RoundState<Mesh3, Optimize3dOptions, MetricFie
   }
 
   optimize_detail::RoundResult round(std::uint32_t index, const QualitySummary3& last) {
-    std::uint64_t size_changes = 0;
-    bool limit = false;
     // After the first round, with a goal and goal_rings: only around what misses it.
     std::vector<std::uint8_t> region_storage;
     if (index > 0 && options.goal_rings > 0 && goal_options)
@@ -314,49 +319,13 @@ struct Rounds3 : optimize_detail::RoundState<Mesh3, Optimize3dOptions, MetricFie
         if (region[v[0]] || region[v[1]] || region[v[2]] || region[v[3]]) seeds.push_back(t);
       }
     }
-    treat_bad_tetrahedra(mesh, options, field, stats);
-    poll_interrupt(options.interrupt, "optimize3d: after the bad tetrahedra");
-    if (options.collapses) {
-      const std::uint64_t c = optimize3d_detail::collapse_pass(mesh, options.collapse, region);
-      stats.collapses += c;
-      size_changes += c;
-    }
-    if (options.splits) {
-      Split3Options split = options.split;
-      split.margin = options.margin;
-      const SplitPass3Result r = optimize3d_detail::split_pass(mesh, field, split, region);
-      stats.splits += r.splits;
-      stats.face_swaps += r.swaps;  // counted together: split_pass3 does not tell them apart
-      size_changes += r.splits;
-      if (r.limit_reached) {
-        stats.stopped_by = "vertex_limit";
-        limit = true;
-      }
-    }
-    poll_interrupt(options.interrupt, "optimize3d: after the collapses and splits");
-    if (options.swaps) {
-      QualityCache cache;
-      const double threshold =
-          !region.empty() && options.region_swap_threshold > 0.0 ? options.region_swap_threshold : options.swap_threshold;
-      const SwapPassResult r = optimize3d_detail::swap_pass(mesh, options.margin, seeds, threshold, cache, memo);
-      stats.face_swaps += r.face_swaps;
-      stats.shell_transformations += r.shell_transformations;
-      if (r.limit_reached) {
-        stats.stopped_by = "swap_limit";
-        limit = true;
-      }
-    }
-    poll_interrupt(options.interrupt, "optimize3d: after the swaps");
-    if (options.relocation) {
-      for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
-        const std::uint64_t moved = optimize3d_detail::relocate_sweep(mesh, field, options.relocate, memo, region);
-        stats.relocations += moved;
-        if (moved == 0) break;
-      }
-    }
+    const OperatorScope3 scope{region, seeds, memo};
+    const OperatorResult r = optimize_detail::run_operators<Optimize3dOperator>(
+        sequence, options.interrupt, "optimize3d",
+        [&](const Optimize3dOperator& op) { return op.pass(mesh, options, field, stats, scope); });
     // A few collapses and splits that undo each other around a locked feature do not make a round
     // worth another: under one change per thousand vertices counts as none.
-    return {size_changes * 1000 > mesh.live_vertex_count(), limit};
+    return {r.size_changes * 1000 > mesh.live_vertex_count(), r.limit};
   }
 };
 
@@ -389,7 +358,9 @@ Optimize3dOptions optimize3d_effort(const std::string& level) {
 }
 
 Optimize3dStats optimize3d(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field) {
-  return optimize_detail::optimize_rounds(Rounds3{{mesh, options, field}});
+  const auto& operators = options.operators ? *options.operators : optimize3d_operators();
+  auto sequence = optimize_detail::operator_sequence(operators, options.sequence);
+  return optimize_detail::optimize_rounds(Rounds3{{mesh, options, field}, std::move(sequence)});
 }
 
 }  // namespace dtlab

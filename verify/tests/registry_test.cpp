@@ -4,6 +4,7 @@
 // name is refused naming the known ones, and the built-in tables are what the CLI lists.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,10 @@
 #include "algorithms/mesh2d/mesh2d.hpp"
 #include "algorithms/mesh2d/registry.hpp"
 #include "algorithms/mesh3d/registry.hpp"
+#include "algorithms/optimize2d/registry.hpp"
+#include "algorithms/optimize3d/registry.hpp"
 #include "kernel/error.hpp"
+#include "mesh/mesh2_from_data.hpp"
 #include "verify/checks2d.hpp"
 #include "verify/checks_mesh2d.hpp"
 #include "verify/generators/domains2d.hpp"
@@ -78,6 +82,56 @@ TEST(Registry, AddedFieldPointMethodRunsThroughTheMesher) {
   }
 }
 
+// A "new" optimization operator: counts its calls and changes nothing.
+int counted_passes = 0;
+OperatorResult count_passes(Mesh2&, const Optimize2dOptions&, const MetricField2&, Optimize2dStats&) {
+  ++counted_passes;
+  return {};
+}
+
+TEST(Registry, AddedOptimizationOperatorRunsOnceARoundInItsPlace) {
+  Registry<Optimize2dOperator> operators = optimize2d_operators();
+  operators.add({"count", "counts its calls, changes nothing (registry_test.cpp)", &count_passes});
+  // The unit square toward size 0.2: splits, swaps and relocations over several rounds.
+  MeshData2 square;
+  square.vertices = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  square.triangle_refs = {0, 0};
+  square.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  square.edge_refs.assign(4, 1);
+  const MetricField2 field = [](const Vec2&) { return Metric2::isotropic(0.2); };
+  const auto run = [&](const Optimize2dOptions& options, Optimize2dStats& stats) {
+    Mesh2 mesh = mesh2_from_data(square, Metric2::isotropic(0.2));
+    stats = optimize2d(mesh, options, field);
+    mesh.check();
+    return mesh.domain();
+  };
+  Optimize2dStats plain_stats, counted_stats;
+  const MeshData2 plain = run({}, plain_stats);
+
+  Optimize2dOptions options;
+  options.operators = &operators;
+  for (const Optimize2dOperator& op : optimize2d_operators()) options.sequence.emplace_back(op.name);
+  options.sequence.insert(std::find(options.sequence.begin(), options.sequence.end(), "swap"), "count");
+  counted_passes = 0;
+  const MeshData2 counted = run(options, counted_stats);
+  EXPECT_GT(counted_stats.rounds, 1u);
+  EXPECT_EQ(counted_passes, static_cast<int>(counted_stats.rounds));
+  EXPECT_EQ(counted_stats.rounds, plain_stats.rounds);
+  EXPECT_EQ(counted_stats.splits, plain_stats.splits);
+  EXPECT_TRUE(counted == plain);
+  // Without the copy the name is unknown, and the message names the known ones.
+  options.operators = nullptr;
+  try {
+    (void)run(options, counted_stats);
+    ADD_FAILURE() << "an unknown operator was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown optimization operator 'count' (known: bad, collapse"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Registry, NamesAreUniqueAndNonEmpty) {
   Registry<Delaunay2dVariant> variants = delaunay2d_variants();
   EXPECT_THROW(variants.add({"incremental", "again", &trivial_delaunay2d}), InputError);
@@ -92,6 +146,8 @@ TEST(Registry, BuiltInTablesInOrder) {
   EXPECT_EQ(constrained3d_methods().names(","), "conforming,recover,cdt");
   EXPECT_EQ(mesh2d_methods().names(","), "edge,front");
   EXPECT_EQ(mesh3d_methods().names(","), "edge");
+  EXPECT_EQ(optimize2d_operators().names(","), "bad,collapse,boundary_collapse,split,swap,relocate,valence");
+  EXPECT_EQ(optimize3d_operators().names(","), "bad,collapse,split,swap,relocate");
   EXPECT_THROW(delaunay3d_variants().at("no-such"), InputError);
 }
 
