@@ -8,7 +8,8 @@
 // moved points keep theirs and new ones interpolate), or, with neither, the mesh's own sizes
 // (each vertex: the mean length of its edges), so that mostly the shapes change. Prints the
 // quality tables (mesh/mesh_quality.hpp) before and after; --stats adds one JSON line with the
-// operation counts and both reports.
+// operation counts and both reports. --list-operators lists the operators of a round (their
+// registries, optimize2d/registry.hpp and optimize3d/registry.hpp) for MESH's dimension, or both.
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -22,8 +23,8 @@
 
 #include "algorithms/mesh2d/control_space.hpp"
 #include "algorithms/mesh3d/local_remesh.hpp"
-#include "algorithms/optimize2d/optimize2d.hpp"
-#include "algorithms/optimize3d/optimize3d.hpp"
+#include "algorithms/optimize2d/registry.hpp"
+#include "algorithms/optimize3d/registry.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
 #include "apps/subcommands.hpp"
@@ -50,7 +51,19 @@ struct OptimizeArgs {
   bool valence = false;
   bool no_remesh = false;
   bool stats = false;
+  bool list = false;
 };
+
+// The operators of a round, name tab description, for `dimension` (0: both, under headings).
+int list_operators(int dimension) {
+  if (dimension == 0) std::cout << "2D (optimize2d):\n";
+  if (dimension != 3)
+    for (const Optimize2dOperator& op : optimize2d_operators()) std::cout << op.name << "\t" << op.description << "\n";
+  if (dimension == 0) std::cout << "3D (optimize3d):\n";
+  if (dimension != 2)
+    for (const Optimize3dOperator& op : optimize3d_operators()) std::cout << op.name << "\t" << op.description << "\n";
+  return 0;
+}
 
 // The domain as a file, with the metric of each of its vertices, and the input's vertex
 // references kept for the boundary vertices (never moved or removed; the others are 0).
@@ -163,6 +176,7 @@ int run_optimize3(const OptimizeArgs& args) {
 }
 
 int run_optimize(const OptimizeArgs& args) {
+  if (args.list) return list_operators(args.input.empty() ? 0 : input_dimension(args.input));
   if (args.input.empty()) throw InputError("give a MESH file (Medit .mesh, Triangle .ele, TetGen .ele)");
   if (args.size_given && !args.metric.empty())
     throw InputError("--size " + args.size + ": give either --size or --metric");
@@ -253,6 +267,9 @@ void add_optimize(CLI::App& app) {
                 "3D: leave out the last step, which meshes again (by the generator) the regions around the "
                 "tetrahedra still below 20 degrees");
   cmd->add_flag("--stats", args->stats, "Print one JSON object with the counts and both quality reports as the last line");
+  cmd->add_flag("--list-operators", args->list,
+                "List the operators of a round in their order (name, tab, description) for MESH's dimension, or "
+                "for both without MESH, and exit");
   cmd->callback([args, size] {
     args->size_given = size->count() > 0;
     exit_code() = run_optimize(*args);

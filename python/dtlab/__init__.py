@@ -170,7 +170,8 @@ def _size(size):
 
 def variants() -> dict:
     """The registered variants and methods, ``{"delaunay2d": [(name, description), ...],
-    "delaunay3d": ..., "constrained2d": ..., "constrained3d": ...}``."""
+    "delaunay3d": ..., "constrained2d": ..., "constrained3d": ..., "optimize2d": ..., "optimize3d": ...}``
+    (the last two: the optimization operators of a round, in their order)."""
     return _dtlab.variants()
 
 

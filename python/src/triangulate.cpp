@@ -1,7 +1,8 @@
 // dtlab.delaunay and dtlab.constrain: the Delaunay variants (algorithms/delaunay2d, delaunay3d)
 // and the constrained methods (algorithms/constrained2d, constrained3d) on numpy arrays, the GIL
 // released while they run, optionally verified exactly (verify/) before the arrays are handed
-// over to numpy.
+// over to numpy; dtlab.variants: their registries' names and descriptions, and the optimization
+// operators' (algorithms/optimize2d, optimize3d registry.hpp).
 #include <pybind11/stl.h>
 
 #include "algorithms/constrained2d/constrained2d.hpp"
@@ -11,6 +12,8 @@
 #include "algorithms/delaunay2d/registry.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
+#include "algorithms/optimize2d/registry.hpp"
+#include "algorithms/optimize3d/registry.hpp"
 #include "kernel/error.hpp"
 #include "python/src/arrays.hpp"
 #include "verify/checks2d.hpp"
@@ -247,16 +250,20 @@ py::dict constrain(const py::handle& points_obj, const py::handle& constraints, 
 
 py::dict variants() {
   py::dict out;
-  py::list d2, d3, c2, c3;
+  py::list d2, d3, c2, c3, o2, o3;
   for (const Delaunay2dVariant& v : delaunay2d_variants()) d2.append(py::make_tuple(std::string(v.name), std::string(v.description)));
   for (const Delaunay3dVariant& v : delaunay3d_variants()) d3.append(py::make_tuple(std::string(v.name), std::string(v.description)));
   for (const Constrained2dMethod& v : constrained2d_methods()) c2.append(py::make_tuple(std::string(v.name), std::string(v.description)));
   for (const Constrained3dMethodInfo& v : constrained3d_method_list())
     c3.append(py::make_tuple(std::string(v.name), std::string(v.description)));
+  for (const Optimize2dOperator& v : optimize2d_operators()) o2.append(py::make_tuple(std::string(v.name), std::string(v.description)));
+  for (const Optimize3dOperator& v : optimize3d_operators()) o3.append(py::make_tuple(std::string(v.name), std::string(v.description)));
   out["delaunay2d"] = d2;
   out["delaunay3d"] = d3;
   out["constrained2d"] = c2;
   out["constrained3d"] = c3;
+  out["optimize2d"] = o2;
+  out["optimize3d"] = o3;
   return out;
 }
 

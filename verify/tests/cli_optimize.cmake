@@ -2,12 +2,13 @@
 # optimized toward a size (its boundary kept, or split with --split-boundary, references kept),
 # with its own sizes, and with a .sol metric; bad input (missing file, clockwise triangle,
 # non-manifold edge, bad --size, a .sol of the wrong count, a negative 3D tetrahedron) fails with a message
-# naming the file and the item. Each case runs cli/optimize_check.cmake in a scratch directory.
+# naming the file and the item; --list-operators lists the rounds' operators (both dimensions, or
+# the mesh's). Each case runs cli/optimize_check.cmake in a scratch directory.
 if(NOT TARGET dtlab_cli)
   return()
 endif()
 
-foreach(_dtlab_case size_keeps_boundary split_boundary own_sizes sol_metric bad_input)
+foreach(_dtlab_case size_keeps_boundary split_boundary own_sizes sol_metric bad_input list_operators)
   add_test(NAME cli_optimize_${_dtlab_case}
            COMMAND ${CMAKE_COMMAND} -DDTLAB=$<TARGET_FILE:dtlab_cli>
                    -DPOLY=${PROJECT_SOURCE_DIR}/data/square_with_hole.poly

@@ -148,6 +148,23 @@ elseif(CASE STREQUAL "bad_input")
   run(optimize tet.mesh -o y.mesh)
   expect_failure("tet\\.mesh")
 
+elseif(CASE STREQUAL "list_operators")
+  # Name, tab, description: both dimensions under their headings, or the mesh's alone, in order.
+  run(optimize --list-operators)
+  expect_success()
+  string(REGEX MATCHALL "(^|\n)[^\t\n]+\t" lines "${out}")
+  string(REGEX REPLACE "[\t\n]" "" names "${lines}")
+  if(NOT out MATCHES "^2D [^\n]*\n.*\n3D [^\n]*\n" OR
+     NOT names STREQUAL "bad;collapse;boundary_collapse;split;swap;relocate;valence;bad;collapse;split;swap;relocate")
+    fail("--list-operators: operators '${names}' (expected the 2D then the 3D ones under headings)")
+  endif()
+  make_input()
+  run(optimize x.mesh --list-operators)
+  expect_success()
+  if(NOT out MATCHES "^bad\t[^\n]*§8[^\n]*\ncollapse\t" OR out MATCHES "3D" OR NOT out MATCHES "\nvalence\t")
+    fail("--list-operators with a 2D mesh: not its operators alone, name tab description citing the book")
+  endif()
+
 else()
   message(FATAL_ERROR "unknown CASE ${CASE}")
 endif()
