@@ -170,8 +170,9 @@ def _size(size):
 
 def variants() -> dict:
     """The registered variants and methods, ``{"delaunay2d": [(name, description), ...],
-    "delaunay3d": ..., "constrained2d": ..., "constrained3d": ..., "optimize2d": ..., "optimize3d": ...}``
-    (the last two: the optimization operators of a round, in their order)."""
+    "delaunay3d": ..., "constrained2d": ..., "constrained3d": ..., "optimize2d": ..., "optimize3d": ...,
+    "mesh2d": ..., "mesh3d": ...}`` (optimize*: the optimization operators of a round, in their order;
+    mesh*: the meshers' field point methods, ``method=`` of :func:`mesh`)."""
     return _dtlab.variants()
 
 

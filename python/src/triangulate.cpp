@@ -12,6 +12,8 @@
 #include "algorithms/delaunay2d/registry.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
+#include "algorithms/mesh2d/registry.hpp"
+#include "algorithms/mesh3d/registry.hpp"
 #include "algorithms/optimize2d/registry.hpp"
 #include "algorithms/optimize3d/registry.hpp"
 #include "kernel/error.hpp"
@@ -250,7 +252,7 @@ py::dict constrain(const py::handle& points_obj, const py::handle& constraints, 
 
 py::dict variants() {
   py::dict out;
-  py::list d2, d3, c2, c3, o2, o3;
+  py::list d2, d3, c2, c3, o2, o3, m2, m3;
   for (const Delaunay2dVariant& v : delaunay2d_variants()) d2.append(py::make_tuple(std::string(v.name), std::string(v.description)));
   for (const Delaunay3dVariant& v : delaunay3d_variants()) d3.append(py::make_tuple(std::string(v.name), std::string(v.description)));
   for (const Constrained2dMethod& v : constrained2d_methods()) c2.append(py::make_tuple(std::string(v.name), std::string(v.description)));
@@ -258,12 +260,16 @@ py::dict variants() {
     c3.append(py::make_tuple(std::string(v.name), std::string(v.description)));
   for (const Optimize2dOperator& v : optimize2d_operators()) o2.append(py::make_tuple(std::string(v.name), std::string(v.description)));
   for (const Optimize3dOperator& v : optimize3d_operators()) o3.append(py::make_tuple(std::string(v.name), std::string(v.description)));
+  for (const FieldPointMethod2& v : mesh2d_methods()) m2.append(py::make_tuple(std::string(v.name), std::string(v.description)));
+  for (const FieldPointMethod3& v : mesh3d_methods()) m3.append(py::make_tuple(std::string(v.name), std::string(v.description)));
   out["delaunay2d"] = d2;
   out["delaunay3d"] = d3;
   out["constrained2d"] = c2;
   out["constrained3d"] = c3;
   out["optimize2d"] = o2;
   out["optimize3d"] = o3;
+  out["mesh2d"] = m2;  // the meshers' field point methods (method= of dtlab.mesh)
+  out["mesh3d"] = m3;
   return out;
 }
 
