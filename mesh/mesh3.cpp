@@ -115,26 +115,29 @@ Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_re
   by_facet.reserve(constrained.size() * 2);
   for (std::uint32_t i = 0; i < constrained.size(); ++i)
     by_facet.emplace(sorted({constrained[i].a, constrained[i].b, constrained[i].c}), i);
-  std::vector<std::uint8_t> found(constrained.size(), 0);
+  std::vector<std::uint32_t> facet_of(constrained.size(), kNone);
   for (std::uint32_t h = 0; h < vertices_.size(); ++h) {
     if (is_ghost(tetrahedron_of(h)) && index_in_tetrahedron(h) != 0) continue;  // holds kInfinite
     const auto it = by_facet.find(sorted(facet_vertices(h)));
-    if (it == by_facet.end()) continue;
-    facet_refs_[h] = constrained[it->second].ref;
-    found[it->second] = 1;
+    if (it != by_facet.end()) facet_of[it->second] = h;
   }
   for (std::uint32_t i = 0; i < constrained.size(); ++i) {
     const MeshTriangle3& c = constrained[i];
-    if (!found[i]) {
+    if (facet_of[i] == kNone) {
       throw InputError("Mesh3: constrained triangle " + std::to_string(i) + " (" + std::to_string(c.a) + ", " +
                            std::to_string(c.b) + ", " + std::to_string(c.c) + ") is not a facet of the tetrahedralization",
                        {i});
     }
-    for (const std::uint32_t v : {c.a, c.b, c.c}) vertex_flags_[v] |= kOnBoundary;
-    set_constrained_edge(c.a, c.b, true);
-    set_constrained_edge(c.b, c.c, true);
-    set_constrained_edge(c.c, c.a, true);
+    constrain_triangle(facet_of[i], c);
   }
+}
+
+void Mesh3::constrain_triangle(std::uint32_t h, const MeshTriangle3& c) {
+  set_facet_both(h, true, c.ref);
+  for (const std::uint32_t v : {c.a, c.b, c.c}) vertex_flags_[v] |= kOnBoundary;
+  set_constrained_edge(c.a, c.b, true);
+  set_constrained_edge(c.b, c.c, true);
+  set_constrained_edge(c.c, c.a, true);
 }
 
 std::uint32_t Mesh3::add_vertex(const Vec3& p, const Metric3& m, std::uint8_t flags) {

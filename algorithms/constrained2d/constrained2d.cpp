@@ -87,17 +87,16 @@ Constrained2dResult constrained2d(const ConstrainedInput2& input, const Constrai
     result.flips = static_cast<std::uint32_t>(mesh.flip_count());
     build_domain(run, input.holes, input.regions);
     const Triangulation2& tri = result.triangulation;
+    const auto marker = [&](std::uint32_t s) { return input.segment_markers.empty() ? 0 : input.segment_markers[s]; };
     const auto size = static_cast<std::uint32_t>(tri.vertices().size());
     for (std::uint32_t h = 0; h < size; ++h) {
       const std::uint32_t s = mesh.constraint(h);
       if (h > tri.twin(h) || s == ConstrainedMesh2::kNone) continue;
       const std::uint32_t a = tri.origin(h), b = tri.destination(h);
-      result.constrained_edges.push_back({std::min(a, b), std::max(a, b), s,
-                                          input.segment_markers.empty() ? 0 : input.segment_markers[s]});
+      result.constrained_edges.push_back({std::min(a, b), std::max(a, b), s, marker(s), h});
     }
     std::sort(result.constrained_edges.begin(), result.constrained_edges.end(),
               [](const ConstrainedEdge2& x, const ConstrainedEdge2& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
-    const auto marker = [&](std::uint32_t s) { return input.segment_markers.empty() ? 0 : input.segment_markers[s]; };
     for (const auto& [a, b, s] : mesh.shared_constraints()) result.shared_edges.push_back({a, b, s, marker(s)});
     // A dropped duplicate covers the edges of the segment kept for it.
     if (!duplicate_of.empty()) {

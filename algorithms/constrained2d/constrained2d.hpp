@@ -71,6 +71,8 @@ struct ConstrainedEdge2 {
   std::uint32_t a = 0, b = 0;  // vertex ids, a < b
   std::uint32_t segment = 0;   // the input segment it comes from (the lowest-numbered one)
   int marker = 0;              // that segment's marker (0 if no markers were given)
+  // One half-edge of it in Constrained2dResult::triangulation (kNone in shared_edges).
+  std::uint32_t half_edge = Triangulation2::kNone;
 };
 
 // A crossing Steiner point made where two constrained chains, bent by earlier rounding, cross
@@ -91,6 +93,9 @@ struct Constrained2dResult {
   // (0 outside every region seed).
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<int> triangle_region;
+  // The same per stored triangle of `triangulation`, as Mesh2 takes it: the region, or
+  // Mesh2::kExterior for ghosts and triangles outside the domain.
+  std::vector<int> slot_regions;
   // Every constrained edge once: the input segments split at vertices, crossings and (for
   // "conforming") split points.
   std::vector<ConstrainedEdge2> constrained_edges;

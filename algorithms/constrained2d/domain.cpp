@@ -8,6 +8,7 @@
 #include "algorithms/constrained2d/domain.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
+#include "mesh/mesh2.hpp"
 
 namespace dtlab {
 
@@ -96,10 +97,12 @@ void build_domain(const Constrained2dContext& context, std::span<const Vec2> hol
 
   result.triangles.clear();
   result.triangle_region.clear();
+  result.slot_regions.assign(count, Mesh2::kExterior);
   for (std::uint32_t t = 0; t < count; ++t) {
     if (tri.is_ghost(t) || removed[component[t]]) continue;
     result.triangles.push_back({tri.vertex(t, 0), tri.vertex(t, 1), tri.vertex(t, 2)});
     result.triangle_region.push_back(attribute[component[t]]);
+    result.slot_regions[t] = attribute[component[t]];
   }
 }
 

@@ -14,6 +14,7 @@
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
+#include "mesh/mesh3.hpp"
 #include "mesh/vertex_buckets.hpp"
 
 namespace dtlab {
@@ -136,15 +137,13 @@ Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrai
   r.seconds.face_recovery = c.face_seconds;
 
   phase = Clock::now();
-  std::vector<std::array<std::uint32_t, 3>> walls;
   for (std::uint32_t f = 0; f < c.facets.size(); ++f)
     for (const auto& p : c.facets[f].pieces) {
-      walls.push_back(p);
       r.triangles.push_back(p);
       r.triangle_face.push_back(f);
       r.triangle_refs.push_back(c.facets[f].ref);
     }
-  const TetrahedronComponents comp = tetrahedron_components(c.mesh, walls);
+  TetrahedronComponents comp = tetrahedron_components(c.mesh, r.triangles);
   std::vector<bool> removed(comp.count, false);
   if (!options.keep_exterior && comp.exterior != T3::kNone) removed[comp.exterior] = true;
   for (std::size_t h = 0; h < input.holes.size(); ++h) {
@@ -157,7 +156,7 @@ Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrai
   }
   if (options.remove_cavities) {
     const std::vector<bool> cavity =
-        cavity_components(c.mesh, comp, walls, r.triangle_face, surface_shells(input.triangles));
+        cavity_components(c.mesh, comp, r.triangle_face, surface_shells(input.triangles));
     std::size_t removed_cavities = 0;
     for (std::uint32_t k = 0; k < comp.count; ++k)
       if (cavity[k] && !removed[k]) removed[k] = true, ++removed_cavities;
@@ -177,6 +176,7 @@ Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrai
   }
   std::vector<int> number(comp.count, -1);
   int next = 1;
+  r.slot_regions.assign(c.mesh.tetrahedron_count(), Mesh3::kExterior);
   for (std::uint32_t t = 0; t < c.mesh.tetrahedron_count(); ++t) {
     const std::uint32_t k = comp.component[t];
     if (c.mesh.is_ghost(t) || removed[k]) continue;
@@ -186,7 +186,9 @@ Constrained3dResult constrained3d(const ConstrainedInput3& input, const Constrai
     }
     r.tetrahedra.push_back(c.mesh.records()[t].vertex);
     r.tetrahedron_regions.push_back(number[k]);
+    r.slot_regions[t] = number[k];
   }
+  r.triangle_facets = std::move(comp.wall_facet);
   r.seconds.regions = since(phase);
 
   r.vertices.assign(c.mesh.points().begin(), c.mesh.points().end());

@@ -91,11 +91,15 @@ struct Constrained3dResult {
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::uint32_t> triangle_face;
   std::vector<int> triangle_refs;
+  std::vector<std::uint32_t> triangle_facets;  // one facet handle of each in `tetrahedralization`
   // The kept tetrahedra, positive, and each one's region: with region seeds, the attribute of
   // the seed in it (0 where none); without, 1, 2, ... by first appearance; 0 for the exterior
   // when kept.
   std::vector<std::array<std::uint32_t, 4>> tetrahedra;
   std::vector<int> tetrahedron_regions;
+  // The same per stored tetrahedron of `tetrahedralization`, as Mesh3 takes it: the region, or
+  // Mesh3::kExterior for ghosts and tetrahedra outside the domain.
+  std::vector<int> slot_regions;
   std::uint32_t region_count = 0;  // bounded regions kept
   // The whole tetrahedralization of the convex hull (closed by ghosts), exterior included.
   Tetrahedralization3 tetrahedralization;

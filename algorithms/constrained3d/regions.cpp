@@ -28,14 +28,15 @@ TetrahedronComponents tetrahedron_components(const Tetrahedralization3& mesh,
     const std::uint64_t h = (FacetTable::hash(key) >> 7) & mask;
     filter[h >> 6] |= std::uint64_t{1} << (h & 63);
   }
-  const auto is_wall = [&](const FacetTable::Key& key) {
+  const auto wall_of = [&](const FacetTable::Key& key) {
     const std::uint64_t h = (FacetTable::hash(key) >> 7) & mask;
-    return (filter[h >> 6] >> (h & 63) & 1) != 0 && wall.find(key) != FacetTable::kAbsent;
+    return (filter[h >> 6] >> (h & 63) & 1) != 0 ? wall.find(key) : FacetTable::kAbsent;
   };
   // Union-find over the tetrahedra in memory order (each face once, from its lower tetrahedron:
   // the records are read in a stream, not in a search's jumps), then the components numbered in
   // the order of their lowest tetrahedron, as a search from each unvisited one in turn would.
   TetrahedronComponents c;
+  c.wall_facet.assign(walls.size(), T3::kNone);
   const auto n = static_cast<std::uint32_t>(mesh.tetrahedron_count());
   std::vector<std::uint32_t> parent(n);
   for (std::uint32_t t = 0; t < n; ++t) parent[t] = t;
@@ -48,7 +49,10 @@ TetrahedronComponents tetrahedron_components(const Tetrahedralization3& mesh,
       const std::uint32_t u = mesh.adjacent(t, i);
       if (u < t) continue;
       const auto f = mesh.facet_vertices(T3::facet(t, i));
-      if (is_wall(FacetTable::key(f[0], f[1], f[2]))) continue;
+      if (const std::uint32_t k = wall_of(FacetTable::key(f[0], f[1], f[2])); k != FacetTable::kAbsent) {
+        c.wall_facet[k] = T3::facet(t, i);
+        continue;
+      }
       const std::uint32_t a = root(t), b = root(u);
       if (a != b) parent[std::max(a, b)] = std::min(a, b);  // a root is its component's lowest
     }
@@ -85,27 +89,19 @@ std::vector<std::uint32_t> surface_shells(std::span<const std::array<std::uint32
 }
 
 std::vector<bool> cavity_components(const Tetrahedralization3& mesh, const TetrahedronComponents& components,
-                                    std::span<const std::array<std::uint32_t, 3>> walls,
                                     std::span<const std::uint32_t> wall_triangle, std::span<const std::uint32_t> shell) {
-  std::map<std::array<std::uint32_t, 3>, std::uint32_t> wall_shell;
-  for (std::size_t k = 0; k < walls.size(); ++k) {
-    auto w = walls[k];
-    std::sort(w.begin(), w.end());
-    wall_shell.emplace(w, shell[wall_triangle[k]]);
-  }
   const std::uint32_t shells = shell.empty() ? 0 : *std::max_element(shell.begin(), shell.end()) + 1;
   std::vector<bool> outer(shells, false);  // touches the exterior
   std::vector<std::vector<std::uint32_t>> bounded_by(components.count);
-  for (std::uint32_t t = 0; t < mesh.tetrahedron_count(); ++t)
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      auto f = mesh.facet_vertices(T3::facet(t, i));
-      std::sort(f.begin(), f.end());
-      const auto it = wall_shell.find(f);
-      if (it == wall_shell.end()) continue;
-      const std::uint32_t k = components.component[t];
-      if (k == components.exterior) outer[it->second] = true;
-      bounded_by[k].push_back(it->second);
+  for (std::size_t w = 0; w < wall_triangle.size(); ++w) {
+    const std::uint32_t h = components.wall_facet[w], s = shell[wall_triangle[w]];
+    if (h == T3::kNone) continue;
+    for (const std::uint32_t side : {h, mesh.twin(h)}) {
+      const std::uint32_t k = components.component[T3::tetrahedron_of(side)];
+      if (k == components.exterior) outer[s] = true;
+      bounded_by[k].push_back(s);
     }
+  }
   std::vector<bool> cavity(components.count, false);
   for (std::uint32_t k = 0; k < components.count; ++k)
     cavity[k] = k != components.exterior &&

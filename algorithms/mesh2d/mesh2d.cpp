@@ -45,10 +45,8 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
     // Segments with no piece beside the domain are not meshed: say so, naming them.
     std::vector<std::uint8_t> inside(segments.size(), 0);
     for (const ConstrainedEdge2& e : cdt.constrained_edges) {
-      const std::uint32_t h = mesh.find_half_edge(e.a, e.b);
-      if (h != Mesh2::kNone && (mesh.in_domain(Mesh2::triangle_of(h)) || mesh.in_domain(Mesh2::triangle_of(mesh.twin(h))))) {
-        inside[e.segment] = 1;
-      }
+      const std::uint32_t h = e.half_edge;
+      if (mesh.in_domain(Mesh2::triangle_of(h)) || mesh.in_domain(Mesh2::triangle_of(mesh.twin(h)))) inside[e.segment] = 1;
     }
     std::string outside;
     std::size_t count = 0;
