@@ -13,6 +13,7 @@
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/perturbation.hpp"
 #include "kernel/rounding.hpp"
+#include "mesh/mesh2.hpp"
 
 namespace dtlab {
 
@@ -227,6 +228,17 @@ ConstrainedCheckReport2 check_constrained_validity2(const ConstrainedInput2& inp
   base.merge(check_unreferenced(P, all, duplicates));
   r.merge(base);
   if (!r.ok) return r;
+  // The domain slot by slot (what Mesh2 takes): the listed triangles and regions, in slot order.
+  std::size_t listed = 0;
+  bool slots_ok = result.slot_regions.size() == tri.triangle_count();
+  for (std::uint32_t t = 0; slots_ok && t < tri.triangle_count(); ++t) {
+    if (result.slot_regions[t] == Mesh2::kExterior) continue;
+    slots_ok = listed < result.triangles.size() && result.triangle_region[listed] == result.slot_regions[t] &&
+               result.triangles[listed] == std::array{tri.vertex(t, 0), tri.vertex(t, 1), tri.vertex(t, 2)};
+    ++listed;
+  }
+  if (!slots_ok || listed != result.triangles.size())
+    r.add_problem("domain: slot_regions are not the listed triangles' regions, slot by slot");
 
   // Constrained edges: mesh edges, once each, from a valid segment with its marker.
   const std::vector<std::uint64_t> mesh_edges = mesh_edge_keys(tri);
@@ -238,6 +250,9 @@ ConstrainedCheckReport2 check_constrained_validity2(const ConstrainedInput2& inp
     }
     if (!contains(mesh_edges, edge_key(e.a, e.b)))
       r.add_problem("constrained edges: " + name.edge(e.a, e.b) + " is not an edge of the triangulation");
+    else if (const std::uint32_t h = e.half_edge;
+             h >= tri.vertices().size() || edge_key(tri.origin(h), tri.destination(h)) != edge_key(e.a, e.b))
+      r.add_problem("constrained edges: " + name.edge(e.a, e.b) + " has a half-edge elsewhere");
     seen.push_back(edge_key(e.a, e.b));
     if (e.segment >= input.segments.size()) {
       r.add_problem("constrained edges: " + name.edge(e.a, e.b) + " comes from " + name.segment(e.segment) +

@@ -92,7 +92,7 @@ bool Checker::check_records() {
   if (r_.rounding_checks_failed != 0)
     rep_.add_problem(std::to_string(r_.rounding_checks_failed) + " Steiner points failed the method's rounding check");
   if (r_.triangle_face.size() != r_.triangles.size() || r_.triangle_refs.size() != r_.triangles.size() ||
-      r_.tetrahedron_regions.size() != r_.tetrahedra.size()) {
+      r_.triangle_facets.size() != r_.triangles.size() || r_.tetrahedron_regions.size() != r_.tetrahedra.size()) {
     rep_.add_problem("the result's arrays differ in length");
     return false;
   }
@@ -170,6 +170,7 @@ void Checker::check_regions() {
   }
   if (found != kept.size())
     rep_.add_problem(std::to_string(kept.size() - found) + " kept tetrahedra are no tetrahedra of the tetrahedralization");
+  if (r_.slot_regions != label) rep_.add_problem("slot_regions are not the kept tetrahedra's regions, slot by slot");
   std::unordered_set<Ids3, IdsHash> pieces;
   for (const auto& p : r_.triangles) pieces.insert(sorted(p));
   std::size_t reported = 0;
@@ -238,6 +239,10 @@ void Checker::check_faces() {
     const int ref = in_.triangle_refs.empty() ? 0 : in_.triangle_refs[f];
     if (r_.triangle_refs[k] != ref) rep_.add_problem(name + " does not carry the reference of triangle " + n(f));
     if (!mesh_faces_.count(sorted(r_.triangles[k]))) rep_.add_problem(name + " of triangle " + n(f) + " is no mesh face");
+    const std::uint32_t h = r_.triangle_facets[k];
+    if (h / 4 >= r_.tetrahedralization.tetrahedron_count() ||
+        sorted(r_.tetrahedralization.facet_vertices(h)) != sorted(r_.triangles[k]))
+      rep_.add_problem(name + "'s facet handle is not that face");
     by_face[f].push_back(k);
   }
   rep_.pieces = r_.triangles.size();

@@ -311,6 +311,16 @@ TEST(Constrained2dChecks, RejectAWrongMarkerAndAnUnknownSegment) {
   EXPECT_NE(problems_of(b, r, "swap").find("segment 17, which does not exist"), std::string::npos);
 }
 
+TEST(Constrained2dChecks, RejectAWrongSlotRegionAndHalfEdge) {
+  const Broken b;
+  auto r = b.result("cdt");
+  r.slot_regions[r.constrained_edges[0].half_edge / 3] = 5;
+  EXPECT_NE(problems_of(b, r, "cdt").find("slot_regions are not"), std::string::npos);
+  r = b.result("cdt");
+  r.constrained_edges[0].half_edge = r.constrained_edges[1].half_edge;
+  EXPECT_NE(problems_of(b, r, "cdt").find("has a half-edge elsewhere"), std::string::npos);
+}
+
 TEST(Constrained2dChecks, RejectAMovedSteinerPoint) {
   // The crossing point moved by two ulps in x and y: still a valid triangulation, but off its
   // rounding bound.

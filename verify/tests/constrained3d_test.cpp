@@ -595,7 +595,7 @@ TEST(ConstrainedChecks3, CatchDamagedResults) {
     EXPECT_EQ(to_text(report).rfind(std::to_string(report.problem_count) + " problems:", 0), 0u);
   };
   fails("a piece dropped", [](Constrained3dResult& r) {
-    r.triangles.pop_back(), r.triangle_face.pop_back(), r.triangle_refs.pop_back();
+    r.triangles.pop_back(), r.triangle_face.pop_back(), r.triangle_refs.pop_back(), r.triangle_facets.pop_back();
   });
   fails("a piece turned", [](Constrained3dResult& r) { std::swap(r.triangles[0][1], r.triangles[0][2]); });
   fails("a piece given to another triangle", [](Constrained3dResult& r) {
@@ -610,6 +610,8 @@ TEST(ConstrainedChecks3, CatchDamagedResults) {
     r.tetrahedra.pop_back(), r.tetrahedron_regions.pop_back();
   });
   fails("a tetrahedron in another region", [](Constrained3dResult& r) { r.tetrahedron_regions[0] = 5; });
+  fails("a slot in another region", [](Constrained3dResult& r) { r.slot_regions[r.triangle_facets[0] / 4] = 5; });
+  fails("a piece on another facet", [](Constrained3dResult& r) { r.triangle_facets[0] = r.triangle_facets[1]; });
   fails("a tetrahedron turned", [](Constrained3dResult& r) { std::swap(r.tetrahedra[0][0], r.tetrahedra[0][1]); });
   fails("an input point moved", [](Constrained3dResult& r) { r.vertices[0].x += 1; });
 }
