@@ -54,7 +54,9 @@ void report_facets(const SurfaceProblem& problem, bool merge) {
 }  // namespace
 
 int run_constrain3d(const Constrain3dCliArgs& args) {
-  const SurfaceProblem problem = read_surface_problem(args.input, {.merge_coplanar = args.merge_coplanar});
+  FacetTriangulationOptions facet_options;
+  facet_options.merge_coplanar = args.merge_coplanar;
+  const SurfaceProblem problem = read_surface_problem(args.input, facet_options);
   const SurfaceInput& in = problem.surface;
   const FacetTriangulation& facets = problem.facets;
   report_facets(problem, args.merge_coplanar);

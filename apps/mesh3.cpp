@@ -73,8 +73,9 @@ int run_mesh3(const MeshCliArgs& args) {
   if (args.resample_boundary)
     throw InputError("--resample-boundary is for 2D domains: a surface is meshed as given");
 
-  const SurfaceProblem problem =
-      read_surface_problem(args.input, {.triangulate_nonplanar = args.triangulate_nonplanar});
+  FacetTriangulationOptions facet_options;
+  facet_options.triangulate_nonplanar = args.triangulate_nonplanar;
+  const SurfaceProblem problem = read_surface_problem(args.input, facet_options);
   for (const std::string& m : problem.messages) std::cerr << "dtlab: " << m << "\n";
   const Mesh3dInput input = problem.input();
   Mesh3dOptions options;
