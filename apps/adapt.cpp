@@ -22,6 +22,7 @@
 #include "apps/adapt_request.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/element_edges.hpp"
@@ -60,7 +61,7 @@ MeshData2 adapted_data(const Mesh2& mesh, const MeshData2& input, std::vector<Me
 
 // --method reconstruct (algorithms/adapt/reconstruct2d.hpp): the mesh generated anew.
 int run_reconstruct2(const AdaptRequest& request, const MeshData2& input, const ControlSpace2& control,
-                     std::span<const Metric2> metrics) {
+                     std::span<const Metric2> metrics, StagedOutputs& outputs) {
   if (request.keep_boundary) throw InputError("--keep-boundary: the reconstruction cuts the boundary anew (use --method local)");
   Reconstruct2dOptions options;
   options.ridge_angle = request.ridge_angle;
@@ -73,8 +74,10 @@ int run_reconstruct2(const AdaptRequest& request, const MeshData2& input, const 
   }
   const MeshData2& out = r.generated.output;
   const QualityReport after = measure_quality(out.vertices, out.triangles, r.generated.output_metrics);
-  if (!request.output.empty()) write_mesh2(request.output, out);
-  if (!request.output_metric.empty()) write_medit_sol(request.output_metric, sol_from_metrics(r.generated.output_metrics));
+  outputs.write(request.output, [&](const std::string& path) { write_mesh2(path, out); });
+  outputs.write(request.output_metric,
+                [&](const std::string& path) { write_medit_sol(path, sol_from_metrics(r.generated.output_metrics)); });
+  outputs.commit();
   const Mesh2dStats& s = r.generated.stats;
   std::cout << "before:\n" << quality_table(before) << "after:\n" << quality_table(after);
   std::cout << "reconstruction: " << r.segments << " segments (" << r.merged_chains << " straight chains merged), "
@@ -96,6 +99,7 @@ int run_reconstruct2(const AdaptRequest& request, const MeshData2& input, const 
 }
 
 int run_adapt2(const AdaptRequest& request) {
+  StagedOutputs outputs({request.output, request.output_metric});
   const MeshData2 input = read_mesh2(request.mesh);
   std::vector<Metric2> metrics = read_metrics<Metric2>(request.metric, input.vertices.size());
   if (request.hgrad) apply_gradation(input.vertices, element_edges(std::span<const std::array<std::uint32_t, 3>>(input.triangles)), metrics, *request.hgrad);
@@ -106,7 +110,7 @@ int run_adapt2(const AdaptRequest& request) {
     throw InputError(request.mesh + ": " + e.what(), e.items());
   }
   const ControlSpace2 control(input, metrics);
-  if (request.method == "reconstruct") return run_reconstruct2(request, input, control, metrics);
+  if (request.method == "reconstruct") return run_reconstruct2(request, input, control, metrics, outputs);
 
   Adapt2dOptions options;
   options.max_rounds = request.max_rounds;
@@ -117,8 +121,9 @@ int run_adapt2(const AdaptRequest& request) {
 
   std::vector<Metric2> out_metrics;
   const MeshData2 out = adapted_data(mesh, input, out_metrics);
-  if (!request.output.empty()) write_mesh2(request.output, out);
-  if (!request.output_metric.empty()) write_medit_sol(request.output_metric, sol_from_metrics(out_metrics));
+  outputs.write(request.output, [&](const std::string& path) { write_mesh2(path, out); });
+  outputs.write(request.output_metric, [&](const std::string& path) { write_medit_sol(path, sol_from_metrics(out_metrics)); });
+  outputs.commit();
 
   const Optimize2dStats& ops = stats.operations;
   std::cout << "before:\n" << quality_table(stats.before) << "after:\n" << quality_table(stats.after);

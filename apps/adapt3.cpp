@@ -12,6 +12,7 @@
 #include "algorithms/adapt/adapt3d.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "kernel/error.hpp"
 #include "mesh/element_edges.hpp"
 #include "mesh/io/medit_sol.hpp"
@@ -50,6 +51,7 @@ int run_adapt3(const AdaptRequest& request) {
   if (request.method != "local") throw InputError("--method " + request.method + ": give local or reconstruct");
   if (request.max_rounds == 0 || request.max_rounds > 1000)
     throw InputError("--rounds " + std::to_string(request.max_rounds) + ": give 1 to 1000 rounds");
+  StagedOutputs outputs({request.output});
   const MeshData3 input = read_mesh3(request.mesh);
   if (input.tetrahedra.empty()) throw InputError(request.mesh + ": no Tetrahedra (a 3D mesh is needed)");
   std::vector<Metric3> metrics = read_metrics<Metric3>(request.metric, input.vertices.size());
@@ -75,7 +77,8 @@ int run_adapt3(const AdaptRequest& request) {
   Adapt3dOptions options;
   options.max_rounds = request.max_rounds;
   const Adapt3dStats stats = adapt3d(mesh, control, options);
-  if (!request.output.empty()) write_mesh3(request.output, output_data(mesh, input));
+  outputs.write(request.output, [&](const std::string& path) { write_mesh3(path, output_data(mesh, input)); });
+  outputs.commit();
 
   std::cout << "before:\n" << quality_table(stats.before) << "after:\n" << quality_table(stats.after);
   std::cout << "operations: " << stats.collapses << " collapses, " << stats.splits << " splits, " << stats.boundary_splits << " boundary splits, " << stats.face_swaps

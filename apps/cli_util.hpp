@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "kernel/error.hpp"
+#include "mesh/io/any_format.hpp"  // extension_of
 #include "verify/problem_report.hpp"  // json_string
 
 namespace dtlab::cli {
@@ -39,6 +40,21 @@ inline double parse_size(const std::string& text) {
   if (end == text.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(h) || !(h > 0.0))
     throw InputError("--size " + text + ": give a positive finite size H (the metric H^-2 I)");
   return h;
+}
+
+// The mesh file a command that measures or draws a mesh (`dtlab quality`, `dtlab plot`) reads:
+// a .mesh/.meshb/.msh, a .ele or .node, or the base name of a .node/.ele pair; a surface or a
+// .poly/.vtu refused by name.
+inline std::string mesh_input_path(const std::string& given, const std::string& command) {
+  const std::string ext = extension_of(given);
+  if (ext == "mesh" || ext == "meshb" || ext == "msh" || ext == "ele" || ext == "node") return given;
+  if (ext == "off" || ext == "stl" || ext == "obj")
+    throw InputError(given + ": ." + ext + " holds a surface; dtlab " + command +
+                     " reads 2D triangle and 3D tetrahedron meshes (.mesh, .meshb, .msh, .ele/.node)");
+  if (ext == "poly" || ext == "vtu")
+    throw InputError(given + ": ." + ext + " is not a mesh dtlab " + command +
+                     " reads (mesh it first, e.g. `dtlab mesh` or `dtlab constrain`)");
+  return given + ".ele";
 }
 
 // A validator for an integer option in [lo, hi]. CLI11 reads "-5" into an unsigned option as a

@@ -16,6 +16,7 @@
 #include "algorithms/constrained3d/constrained3d.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "apps/constrain3d.hpp"
 #include "apps/graph_input.hpp"
 #include "apps/subcommands.hpp"
@@ -68,6 +69,7 @@ int run_constrain(ConstrainArgs args) {
   if (args.steiner_limit != ConstrainArgs::kNotGiven)
     throw InputError("--steiner-limit applies to 3D input (surfaces), not to " + args.input);
   if (args.method.empty()) args.method = "cdt";
+  StagedOutputs outputs({args.output});
   const GraphInput graph = read_graph(args.input, true);
   const PolyData2& poly = graph.poly;
   const std::vector<RegionSeed2>& regions = graph.regions;
@@ -104,7 +106,8 @@ int run_constrain(ConstrainArgs args) {
     }
     mesh.triangles = result.triangles;
     mesh.triangle_refs = result.triangle_region;
-    write_medit2(args.output, mesh);
+    outputs.write(args.output, [&](const std::string& path) { write_medit2(path, mesh); });
+    outputs.commit();
   }
   bool verified_ok = true;
   if (args.verify) {

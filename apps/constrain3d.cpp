@@ -13,6 +13,7 @@
 #include "algorithms/constrained3d/surface_problem.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit3.hpp"
 #include "verify/checks_constrained3d.hpp"
@@ -54,6 +55,7 @@ void report_facets(const SurfaceProblem& problem, bool merge) {
 }  // namespace
 
 int run_constrain3d(const Constrain3dCliArgs& args) {
+  StagedOutputs outputs({args.output});
   FacetTriangulationOptions facet_options;
   facet_options.merge_coplanar = args.merge_coplanar;
   const SurfaceProblem problem = read_surface_problem(args.input, facet_options);
@@ -82,7 +84,8 @@ int run_constrain3d(const Constrain3dCliArgs& args) {
     mesh.triangle_refs = result.triangle_refs;
     mesh.tetrahedra = result.tetrahedra;
     mesh.tetrahedron_refs = result.tetrahedron_regions;
-    write_mesh3(args.output, mesh);
+    outputs.write(args.output, [&](const std::string& path) { write_mesh3(path, mesh); });
+    outputs.commit();
   }
   bool ok = true;
   if (args.verify) {

@@ -5,10 +5,8 @@
 // Medit, references in OFF/STL, edges in Triangle's .ele, ...) is named on stderr as a warning.
 // Bad input exits 1 with the reader's message naming the item, and writes nothing: the output is
 // written beside its place and renamed only once complete.
-#include <unistd.h>
 
 #include <cmath>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <set>
@@ -31,12 +29,11 @@
 #include "mesh/io/triangle_format.hpp"
 #include "mesh/io/vtu_format.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 
 namespace dtlab::cli {
 
 namespace {
-
-namespace fs = std::filesystem;
 
 struct ConvertArgs {
   std::string in;
@@ -231,28 +228,11 @@ void write_any(const std::string& path, const AnyMesh& m, const ConvertArgs& arg
                    "(Triangle, TetGen), .off, .stl");
 }
 
-// Writes into a fresh folder beside the output, then moves every file written into place: a
-// writer that throws leaves nothing behind.
-void write_atomically(const ConvertArgs& args, const AnyMesh& m) {
-  const fs::path out(args.out);
-  const fs::path dir = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  const fs::path scratch = dir / (".dtlab-convert-" + std::to_string(::getpid()));
-  fs::remove_all(scratch);
-  fs::create_directory(scratch);
-  try {
-    write_any((scratch / out.filename()).string(), m, args);
-    for (const auto& entry : fs::directory_iterator(scratch)) fs::rename(entry.path(), dir / entry.path().filename());
-  } catch (...) {
-    std::error_code ignored;
-    fs::remove_all(scratch, ignored);
-    throw;
-  }
-  fs::remove_all(scratch);
-}
-
 void run_convert(const ConvertArgs& args) {
+  StagedOutputs outputs({args.out});
   const AnyMesh m = read_any(args.in);
-  write_atomically(args, m);
+  outputs.write(args.out, [&](const std::string& path) { write_any(path, m, args); });
+  outputs.commit();
 }
 
 }  // namespace

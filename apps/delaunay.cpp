@@ -10,6 +10,7 @@
 #include "apps/cli_util.hpp"
 #include "apps/delaunay3d.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/triangulation2.hpp"
@@ -65,6 +66,7 @@ int run_delaunay(const DelaunayArgs& args) {
   }
   if (args.dim != 2) throw InputError("--dim must be 2 or 3, not " + std::to_string(args.dim));
   if (args.threads != 1) throw InputError("--threads: the 2D variants are sequential (give --threads 1 or leave it out)");
+  StagedOutputs outputs({args.output});
   const std::string source = args.input.empty()
                                  ? "random " + args.distribution + " n=" + std::to_string(args.random) +
                                        " seed=" + std::to_string(args.seed)
@@ -102,7 +104,8 @@ int run_delaunay(const DelaunayArgs& args) {
     mesh.vertex_refs.assign(points.size(), 0);
     mesh.triangles = triangles;
     mesh.triangle_refs.assign(triangles.size(), 0);
-    write_mesh2(args.output, mesh);
+    outputs.write(args.output, [&](const std::string& path) { write_mesh2(path, mesh); });
+    outputs.commit();  // before --verify: a failed check (exit 3) leaves the output to look at
   }
 
   bool verified_ok = true;

@@ -11,6 +11,7 @@
 #include "algorithms/delaunay3d/registry.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "kernel/error.hpp"
 #include "mesh/tetrahedralization3.hpp"
 #include "verify/checks3d.hpp"
@@ -28,6 +29,7 @@ int run_delaunay3d(const Delaunay3dCliArgs& args) {
   if (args.random > Tetrahedralization3::kMaxPoints)
     throw InputError("--random: " + std::to_string(args.random) + " points exceed the 3D limit of " +
                      std::to_string(Tetrahedralization3::kMaxPoints));
+  StagedOutputs outputs({args.output});
   const std::string source = args.input.empty() ? "random " + args.distribution + " n=" + std::to_string(args.random) +
                                                       " seed=" + std::to_string(args.seed)
                                                 : args.input;
@@ -54,7 +56,8 @@ int run_delaunay3d(const Delaunay3dCliArgs& args) {
     MeshData3 mesh;
     mesh.vertices.assign(tet.points().begin(), tet.points().end());
     mesh.tetrahedra = canonical_tetrahedron_set(tet);
-    write_mesh3(args.output, mesh);
+    outputs.write(args.output, [&](const std::string& path) { write_mesh3(path, mesh); });
+    outputs.commit();  // before --verify: a failed check (exit 3) leaves the output to look at
   }
 
   bool ok = true;

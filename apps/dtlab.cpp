@@ -1,6 +1,7 @@
 // The `dtlab` command: one binary, one subcommand per capability as it lands.
 #include <exception>
 #include <iostream>
+#include <new>
 
 #include "apps/subcommands.hpp"
 #include "dtlab/build_info.hpp"
@@ -25,16 +26,22 @@ int main(int argc, char** argv) {
   dtlab::cli::add_plot(app);
   dtlab::cli::add_transfer(app);
   dtlab::cli::add_selfcheck(app);
+  // Exit codes (docs/cli.md): 0 done, 1 refused (bad input or options, an unwritable output,
+  // out of memory, an internal error: the message says which), 3 a --verify check failed;
+  // nothing else. CLI11's own codes (105, 106, 109, ...) are folded into 1.
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    return app.exit(e) == 0 ? 0 : 1;  // --help and --version exit 0
   } catch (const dtlab::Error& e) {
     std::cerr << "dtlab: " << e.what() << "\n";
     return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "dtlab: out of memory\n";
+    return 1;
   } catch (const std::exception& e) {
-    std::cerr << "dtlab: " << e.what() << "\n";
-    return 2;
+    std::cerr << "dtlab: internal error: " << e.what() << "\n";
+    return 1;
   }
   if (app.get_subcommands().empty()) {
     std::cout << app.help();

@@ -17,6 +17,7 @@
 #include "algorithms/mesh3d/registry.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "apps/constrain3d.hpp"
 #include "apps/graph_input.hpp"
 #include "apps/mesh_args.hpp"
@@ -63,6 +64,7 @@ int run_mesh(const MeshCliArgs& args) {
   if (given > 1) throw InputError("give one of --size, --size-map, --metric");
   if (!args.background.empty() && args.size_map.empty() && args.metric.empty())
     throw InputError("--background needs --size-map or --metric (the file of values at its vertices)");
+  StagedOutputs outputs({args.output, args.output_metric});
   const GraphInput graph = read_graph(args.input, false);
   const PolyData2& poly = graph.poly;
   if (poly.points.empty()) throw InputError(args.input + ": no vertices");
@@ -113,8 +115,10 @@ int run_mesh(const MeshCliArgs& args) {
     std::cout << to_text(report);
     ok = report.ok;
   }
-  if (!args.output.empty()) write_medit2(args.output, result.output);
-  if (!args.output_metric.empty()) write_medit_sol(args.output_metric, sol_from_metrics(result.output_metrics));
+  outputs.write(args.output, [&](const std::string& path) { write_medit2(path, result.output); });
+  outputs.write(args.output_metric,
+                [&](const std::string& path) { write_medit_sol(path, sol_from_metrics(result.output_metrics)); });
+  outputs.commit();
   if (args.stats) {
     const QualityReport quality = measure_quality(result.output.vertices, result.output.triangles, result.output_metrics);
     std::cout << quality_table(quality);

@@ -19,6 +19,7 @@
 #include "algorithms/mesh3d/mesh3d.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "kernel/error.hpp"
 #include "kernel/quality.hpp"
 #include "mesh/io/medit3.hpp"
@@ -73,6 +74,7 @@ int run_mesh3(const MeshCliArgs& args) {
   if (args.resample_boundary)
     throw InputError("--resample-boundary is for 2D domains: a surface is meshed as given");
 
+  StagedOutputs outputs({args.output, args.output_metric});
   FacetTriangulationOptions facet_options;
   facet_options.triangulate_nonplanar = args.triangulate_nonplanar;
   const SurfaceProblem problem = read_surface_problem(args.input, facet_options);
@@ -117,8 +119,10 @@ int run_mesh3(const MeshCliArgs& args) {
     std::cout << to_text(report);
     ok = report.ok;
   }
-  if (!args.output.empty()) write_mesh3(args.output, result.output);
-  if (!args.output_metric.empty()) write_medit_sol(args.output_metric, sol_from_metrics(result.output_metrics));
+  outputs.write(args.output, [&](const std::string& path) { write_mesh3(path, result.output); });
+  outputs.write(args.output_metric,
+                [&](const std::string& path) { write_medit_sol(path, sol_from_metrics(result.output_metrics)); });
+  outputs.commit();
   if (args.stats) {
     const QualityReport quality = measure_quality(result.output.vertices, result.output.tetrahedra, result.output_metrics);
     const Mesh3dStats& s = result.stats;

@@ -17,6 +17,7 @@
 #include "algorithms/adapt/metric_from_solution.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit_sol.hpp"
@@ -89,20 +90,22 @@ int run_metric(const MetricArgs& args) {
   if (args.complexity && !(*args.complexity > 0.0))
     throw InputError("--complexity " + std::to_string(*args.complexity) + ": give a positive number of vertices");
   const SolutionMetricOptions options = options_of(args);
+  StagedOutputs outputs({args.output});
   SolutionMetricStats stats;
   if (input_dimension(args.mesh) == 3) {
     const MeshData3 mesh = read_mesh3(args.mesh);
     const auto fields = read_fields(args, mesh.vertices.size(), 3);
     const auto metrics = metric_from_solutions(mesh.vertices, mesh.tetrahedra, fields, options, &stats);
-    write_medit_sol(args.output, sol_from_metrics(metrics));
+    outputs.write(args.output, [&](const std::string& path) { write_medit_sol(path, sol_from_metrics(metrics)); });
     report(args, stats, mesh.vertices.size());
   } else {
     const MeshData2 mesh = read_mesh2(args.mesh);
     const auto fields = read_fields(args, mesh.vertices.size(), 2);
     const auto metrics = metric_from_solutions(mesh.vertices, mesh.triangles, fields, options, &stats);
-    write_medit_sol(args.output, sol_from_metrics(metrics));
+    outputs.write(args.output, [&](const std::string& path) { write_medit_sol(path, sol_from_metrics(metrics)); });
     report(args, stats, mesh.vertices.size());
   }
+  outputs.commit();
   return 0;
 }
 

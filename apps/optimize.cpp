@@ -27,6 +27,7 @@
 #include "algorithms/optimize3d/registry.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/implied_metrics.hpp"
@@ -110,6 +111,7 @@ Snapshot3 snapshot3(const Mesh3& mesh, const MeshData3& input) {
 }
 
 int run_optimize3(const OptimizeArgs& args) {
+  StagedOutputs outputs({args.output});
   const MeshData3 input = read_mesh3(args.input);
   std::vector<Metric3> metrics;
   if (args.size_given) {
@@ -146,7 +148,8 @@ int run_optimize3(const OptimizeArgs& args) {
   const double remesh_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - remesh_start).count();
   const Snapshot3 after = snapshot3(mesh, input);
   const QualityReport report_after = measure_quality(after.data.vertices, after.data.tetrahedra, after.metrics);
-  if (!args.output.empty()) write_mesh3(args.output, after.data);
+  outputs.write(args.output, [&](const std::string& path) { write_mesh3(path, after.data); });
+  outputs.commit();
 
   std::cout << "before:\n" << quality_table(report_before) << "after:\n" << quality_table(report_after);
   std::cout << "operations: " << stats.face_swaps << " face swaps, " << stats.shell_transformations
@@ -181,6 +184,7 @@ int run_optimize(const OptimizeArgs& args) {
   if (args.size_given && !args.metric.empty())
     throw InputError("--size " + args.size + ": give either --size or --metric");
   if (input_dimension(args.input) == 3) return run_optimize3(args);
+  StagedOutputs outputs({args.output});
   const MeshData2 input = read_mesh2(args.input);
   std::vector<Metric2> metrics;
   if (args.size_given) {
@@ -221,7 +225,8 @@ int run_optimize(const OptimizeArgs& args) {
   const Optimize2dStats stats = optimize2d(mesh, options, field);
   const Snapshot after = snapshot(mesh, input);
   const QualityReport report_after = measure_quality(after.data.vertices, after.data.triangles, after.metrics);
-  if (!args.output.empty()) write_mesh2(args.output, after.data);
+  outputs.write(args.output, [&](const std::string& path) { write_mesh2(path, after.data); });
+  outputs.commit();
 
   std::cout << "before:\n" << quality_table(report_before) << "after:\n" << quality_table(report_after);
   std::cout << "operations: " << stats.swaps << " swaps, " << stats.relocations << " relocations, " << stats.collapses

@@ -27,6 +27,7 @@
 #include "algorithms/mesh2d/control_space.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "apps/subcommands.hpp"
 #include "apps/svg_canvas.hpp"
 #include "kernel/error.hpp"
@@ -51,20 +52,6 @@ struct PlotArgs {
 };
 
 std::string base_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
-
-// As `dtlab quality`: a .mesh/.meshb/.msh, a .ele or .node, or the base name of a .node/.ele pair.
-std::string mesh_path(const std::string& given) {
-  const std::string ext = extension_of(given);
-  if (ext == "mesh" || ext == "meshb" || ext == "msh" || ext == "ele" || ext == "node") return given;
-  if (ext == "off" || ext == "stl" || ext == "obj")
-    throw InputError("cannot plot '" + given + "': ." + ext +
-                     " holds a surface; plot reads 2D triangle and 3D tetrahedron meshes (.mesh, .meshb, .msh, "
-                     ".ele/.node)");
-  if (ext == "poly" || ext == "vtu")
-    throw InputError("cannot plot '" + given + "': ." + ext +
-                     " is not a mesh dtlab reads (mesh it first, e.g. `dtlab mesh` or `dtlab constrain`)");
-  return given + ".ele";
-}
 
 // The vertex metrics of a 2D mesh: none, a .sol at its vertices, or a .sol on a background
 // mesh interpolated at the vertices the triangles use (as `dtlab quality` does).
@@ -401,11 +388,15 @@ void write_png(const std::string& path, const SvgCanvas& canvas) {
   if (status != 0) throw InputError("cannot write '" + path + "': " + script + " exited with status " + std::to_string(status));
 }
 
-void write_picture(const std::string& path, const SvgCanvas& canvas) {
-  if (extension_of(path) == "svg")
-    write_text(path, canvas.svg());
-  else
-    write_png(path, canvas);
+void write_picture(const std::string& target, const SvgCanvas& canvas) {
+  StagedOutputs outputs;
+  outputs.write(target, [&](const std::string& path) {
+    if (extension_of(path) == "svg")
+      write_text(path, canvas.svg());
+    else
+      write_png(path, canvas);
+  });
+  outputs.commit();
 }
 
 // ---- the command ------------------------------------------------------------------------
@@ -414,11 +405,12 @@ int run_plot(const PlotArgs& args) {
   const std::string out_ext = extension_of(args.out);
   if (out_ext != "svg" && out_ext != "png")
     throw InputError("-o " + args.out + ": give an .svg or .png output");
+  check_output_target(args.out);
   if (args.color != "quality" && args.color != "reference")
     throw InputError("--color " + args.color + ": give quality or reference");
   if (!args.background.empty() && args.metric.empty())
     throw InputError("--background " + args.background + " needs --metric, the metric at its vertices");
-  const std::string path = mesh_path(args.mesh);
+  const std::string path = mesh_input_path(args.mesh, "plot");
 
   if (input_dimension(path) == 3) {
     if (!args.background.empty())

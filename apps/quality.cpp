@@ -19,6 +19,7 @@
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit_sol.hpp"
+#include "mesh/io/planar_mesh.hpp"
 #include "mesh/mesh_quality.hpp"
 
 namespace dtlab::cli {
@@ -33,14 +34,6 @@ struct QualityArgs {
   bool size_given = false;
   bool json = false;
 };
-
-// A mesh given by its .ele (or .node) path, a Medit .mesh, or the base name of a .node/.ele pair.
-std::string mesh_path(const std::string& given) {
-  const std::string ext = extension_of(given);
-  if (ext == "mesh" || ext == "ele" || ext == "node") return given;
-  return given + ".ele";
-}
-
 
 template <class Cells>
 std::vector<char> used_vertices(std::size_t count, const Cells& cells) {
@@ -58,8 +51,9 @@ void print(const QualityReport& report, bool json) {
     std::cout << quality_table(report);
 }
 
-int run_quality2(const QualityArgs& args, const std::string& path, std::optional<double> size) {
-  const MeshData2 mesh = read_mesh2(path);
+int run_quality2(const QualityArgs& args, const MeshData2& mesh, const std::string& path, std::optional<double> size) {
+  if (mesh.triangles.empty())
+    throw InputError(path + ": no triangles (" + std::to_string(mesh.vertices.size()) + " vertices): nothing to measure");
   std::vector<Metric2> metrics;
   if (size) {
     metrics.assign(mesh.vertices.size(), Metric2::isotropic(*size));
@@ -86,10 +80,20 @@ int run_quality2(const QualityArgs& args, const std::string& path, std::optional
 }
 
 int run_quality3(const QualityArgs& args, const std::string& path, std::optional<double> size) {
+  const MeshData3 mesh = read_mesh3(path);
+  if (mesh.tetrahedra.empty()) {
+    // A 2D mesh in a 3D file (Gmsh writes Medit's Dimension 3 with every z = 0): measured as 2D.
+    if (!mesh.triangles.empty() && is_planar(mesh)) return run_quality2(args, planar_to_mesh2(mesh, path), path, size);
+    if (mesh.triangles.empty())
+      throw InputError(path + ": no tetrahedra and no triangles (" + std::to_string(mesh.vertices.size()) +
+                       " vertices): nothing to measure");
+    throw InputError(path + ": no tetrahedra, and its " + std::to_string(mesh.triangles.size()) +
+                     " triangles are not all at z = 0: dtlab quality measures tetrahedron meshes and triangle "
+                     "meshes in the plane");
+  }
   if (!args.background.empty())
     throw InputError("--background " + args.background + ": a background mesh is supported for 2D meshes only, and " +
                      path + " is 3D (give --metric at its vertices, or --size)");
-  const MeshData3 mesh = read_mesh3(path);
   std::vector<Metric3> metrics;
   if (size)
     metrics.assign(mesh.vertices.size(), Metric3::isotropic(*size));
@@ -105,8 +109,8 @@ int run_quality(const QualityArgs& args) {
     throw InputError("--size " + args.size + ": give either --size or --metric (with or without --background)");
   if (!args.background.empty() && args.metric.empty())
     throw InputError("--background " + args.background + " needs --metric, the metric at its vertices");
-  const std::string path = mesh_path(args.mesh);
-  return input_dimension(path) == 3 ? run_quality3(args, path, size) : run_quality2(args, path, size);
+  const std::string path = mesh_input_path(args.mesh, "quality");
+  return input_dimension(path) == 3 ? run_quality3(args, path, size) : run_quality2(args, read_mesh2(path), path, size);
 }
 
 }  // namespace

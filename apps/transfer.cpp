@@ -12,6 +12,7 @@
 #include "algorithms/adapt/transfer.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "apps/subcommands.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/medit_sol.hpp"
@@ -65,6 +66,7 @@ int run_transfer(const TransferArgs& args) {
   if (input_dimension(args.new_mesh) != dimension) {
     throw InputError(args.old_mesh + " is a " + std::to_string(dimension) + "D mesh but " + args.new_mesh + " is not");
   }
+  StagedOutputs outputs({args.output});
   const SolData sol = read_medit_sol(args.sol);
   if (sol.dimension != dimension) {
     throw InputError(args.sol + ": a " + std::to_string(sol.dimension) + "D solution for " + std::to_string(dimension) +
@@ -74,7 +76,8 @@ int run_transfer(const TransferArgs& args) {
   std::size_t new_vertices = 0;
   const SolData out = dimension == 3 ? transfer_sol<3>(args, sol, stats, new_vertices)
                                      : transfer_sol<2>(args, sol, stats, new_vertices);
-  write_medit_sol(args.output, out);
+  outputs.write(args.output, [&](const std::string& path) { write_medit_sol(path, out); });
+  outputs.commit();
   if (args.stats) {
     std::cout << "{\"vertices\": " << new_vertices << ", \"located\": " << stats.located
               << ", \"snapped\": " << stats.snapped << ", \"rescanned\": " << stats.rescanned

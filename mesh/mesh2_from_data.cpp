@@ -19,6 +19,8 @@ std::uint64_t directed(std::uint32_t a, std::uint32_t b) { return (static_cast<s
 Mesh2 mesh2_from_data(const MeshData2& data, const Metric2& metric) {
   const std::uint32_t n = static_cast<std::uint32_t>(data.vertices.size());
   const std::uint32_t nt = static_cast<std::uint32_t>(data.triangles.size());
+  // An empty mesh would reach the algorithms as one with no domain (no boundary, no metric).
+  if (nt == 0) throw InputError("no triangles (" + std::to_string(n) + " vertices): a mesh needs at least one");
   Triangulation2 tri(data.vertices);
   std::vector<std::uint32_t>& V = tri.mutable_vertices();
   std::vector<std::uint32_t>& N = tri.mutable_neighbours();

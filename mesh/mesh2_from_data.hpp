@@ -15,11 +15,11 @@
 
 namespace dtlab {
 
-// Vertex v of `data` is vertex v of the mesh, triangle t slot t; every vertex gets `metric`.
-// Throws InputError (numbered from 1) for a vertex number out of range, a triangle that is not
-// strictly counter-clockwise (exact orient2d), an edge in two triangles with the same
-// orientation or in more than two, a boundary passing twice through a vertex, an Edges entry
-// that is not an edge of the triangles.
+// Vertex v of `data` is vertex v of the mesh, triangle t slot t; every vertex gets `metric`. Throws
+// InputError (numbered from 1) for a mesh without triangles, a vertex number out of range, a
+// triangle that is not strictly counter-clockwise (exact orient2d), an edge in two triangles with
+// the same orientation or in more than two, a boundary passing twice through a vertex, an Edges
+// entry that is not an edge of the triangles.
 Mesh2 mesh2_from_data(const MeshData2& data, const Metric2& metric = {});
 
 }  // namespace dtlab

@@ -62,6 +62,8 @@ void check_vertex_balls(const T3& tet) {
 Mesh3 mesh3_from_data(const MeshData3& data, const Metric3& metric) {
   const std::size_t n = data.vertices.size();
   const std::size_t nt = data.tetrahedra.size();
+  // An empty mesh would reach the algorithms as one with no domain (no boundary, no metric).
+  if (nt == 0) throw InputError("no tetrahedra (" + std::to_string(n) + " vertices): a mesh needs at least one");
   for (std::size_t t = 0; t < nt; ++t) {
     const auto& v = data.tetrahedra[t];
     for (const std::uint32_t x : v)

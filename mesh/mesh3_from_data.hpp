@@ -20,12 +20,12 @@
 namespace dtlab {
 
 // Vertex v of `data` is vertex v of the mesh, tetrahedron t slot t; every vertex gets `metric`.
-// Throws InputError naming the item (numbered from 1) for a vertex number out of range, a
-// tetrahedron that is not positive (exact orient3d: flat or negative), a facet in more than two
-// tetrahedra or in two on the same side, a boundary that is not a closed 2-manifold (an edge on
-// other than two boundary facets, a vertex where the boundary pinches: its tetrahedra not
-// connected across facets), a Triangles entry that is not a facet of the tetrahedra, an Edges
-// entry that is not an edge of them.
+// Throws InputError naming the item (numbered from 1) for a mesh without tetrahedra, a vertex
+// number out of range, a tetrahedron that is not positive (exact orient3d: flat or negative), a
+// facet in more than two tetrahedra or in two on the same side, a boundary that is not a closed
+// 2-manifold (an edge on other than two boundary facets, a vertex where the boundary pinches: its
+// tetrahedra not connected across facets), a Triangles entry that is not a facet of the tetrahedra,
+// an Edges entry that is not an edge of them.
 Mesh3 mesh3_from_data(const MeshData3& data, const Metric3& metric = {});
 
 }  // namespace dtlab

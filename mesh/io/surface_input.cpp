@@ -62,7 +62,9 @@ Plc3 plc_from_triangles(const MeshData3& mesh) {
   return plc;
 }
 
-SurfaceInput read_surface(const std::string& path) {
+namespace {
+
+SurfaceInput read_by_extension(const std::string& path) {
   const std::string ext = lower_case(std::filesystem::path(path).extension().string());
   if (ext == ".off") return {read_off_surface(path), {{0, "face", 0}}, 0};
   if (ext == ".obj") return {read_obj_surface(path), {{0, "facet", 1}}, 1};
@@ -78,6 +80,18 @@ SurfaceInput read_surface(const std::string& path) {
   for (std::size_t i = 0; i < kExtensions.size(); ++i) list += (i > 0 ? ", " : "") + std::string(kExtensions[i]);
   throw InputError(path + ": unknown surface file extension " + (ext.empty() ? std::string("(none)") : "'" + ext + "'") +
                    "; supported: " + list);
+}
+
+}  // namespace
+
+SurfaceInput read_surface(const std::string& path) {
+  SurfaceInput in = read_by_extension(path);
+  // Every format can say "no facets" (OFF 0 0 0, an STL solid without facet, a Medit file
+  // without Triangles): refused here, by file, before any mesher is handed an empty domain.
+  if (in.plc.facets.empty())
+    throw InputError(path + ": no facets (" + std::to_string(in.plc.vertices.size()) +
+                     " vertices): an empty surface bounds no volume");
+  return in;
 }
 
 }  // namespace dtlab

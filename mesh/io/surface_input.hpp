@@ -55,6 +55,8 @@ struct SurfaceInput {
 // ".off", ".obj", ".stl", ".poly", ".smesh", ".mesh".
 std::span<const std::string_view> surface_extensions();
 
+// The surface of `path` by its extension; an InputError naming the file for an unknown
+// extension or a surface with no facets.
 SurfaceInput read_surface(const std::string& path);
 
 // A triangle surface (MeshData3, as read_stl gives it) as a PLC: each triangle a facet of one

@@ -183,7 +183,12 @@ py::dict optimize(const py::handle& points_obj, const py::handle& cells_obj, con
     metrics = metrics_at(size, metric, points.shape(0));
     if (metrics.empty()) metrics = implied_metrics(input);
   }
-  Mesh2 mesh = mesh2_from_data(input);
+  Mesh2 mesh;
+  try {
+    mesh = mesh2_from_data(input);
+  } catch (const InputError& e) {  // the arguments' names, as a file's name on the command line
+    throw InputError(std::string("cells: ") + e.what(), e.items());
+  }
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v)
     if (!mesh.is_dead_vertex(v)) mesh.set_metric(v, metrics[v]);
   MetricField2 field;

@@ -142,3 +142,12 @@ def test_optimize_same_as_cli(cli, tmp_path):
     assert (tmp_path / "py.mesh").read_bytes() == (tmp_path / "cli.mesh").read_bytes()
     assert m.stats["worst_after"] < m.stats["worst_before"]
     assert dtlab.quality(m)["inverted"] == 0 and dtlab.quality(m)["area"] == pytest.approx(1.0)
+
+
+@pytest.mark.parametrize("size", [0.1, None])
+@pytest.mark.parametrize("points", [np.zeros((0, 2)), np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])],
+                         ids=["no_points", "no_triangles"])
+def test_optimize_empty_mesh_is_refused(points, size):
+    # Killed the interpreter (an empty vector's front()); now refused by argument name.
+    with pytest.raises(dtlab.InputError, match=r"^cells: no triangles"):
+        dtlab.optimize(points, np.zeros((0, 3), int), size=size)

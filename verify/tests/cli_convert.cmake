@@ -3,7 +3,8 @@
 # began with, byte for byte; Gmsh's names carried from .msh to .msh; warnings naming what a target
 # cannot hold (names in Medit, references and tetrahedra in OFF/STL, edges in Triangle's .ele);
 # .vtu output with the quality field; bad input (quadrangles, second order, a malformed file, an
-# unknown extension) refused with exit 1, a message naming the item, and nothing written;
+# unknown extension, an output folder that is missing or a file) refused with exit 1, a message
+# naming the item, and nothing written;
 # --help. Each case runs cli/convert_check.cmake in a scratch directory of its own. The files
 # written are also read by meshio and Gmsh (cli/convert_external_check.py), skipped, not
 # failed, where they are not installed.
@@ -12,7 +13,7 @@ if(NOT TARGET dtlab_cli)
 endif()
 
 foreach(_dtlab_case chain_3d chain_2d names_kept warn_names warn_surface warn_edges vtu bad_elements
-                    bad_file bad_extension help)
+                    bad_file bad_extension unwritable_output help)
   add_test(NAME cli_convert_${_dtlab_case}
            COMMAND ${CMAKE_COMMAND} -DDTLAB=$<TARGET_FILE:dtlab_cli> -DDATA=${PROJECT_SOURCE_DIR}/data/gmsh
                    -DWORK=${PROJECT_BINARY_DIR}/cli-convert-test/${_dtlab_case} -DCASE=${_dtlab_case}

@@ -4,6 +4,9 @@
 #   fail(<what>)                FATAL_ERROR with the command, its exit code, stdout and stderr
 #   expect_success()            exit code 0
 #   expect_failure(<regex...>)  non-zero exit code, stderr matching every regex
+#   expect_input_error(<regex...>)  exit code 1 (refused input), stderr matching every regex and
+#                               holding no C++ library text (std::, filesystem error, terminate)
+#   expect_no_output(<file...>) none of the files in WORK, and no scratch folder (.dtlab-partial-*)
 #   medit_section(file name count_var refs_var)  a Medit section's count and distinct references
 #   expect_number(what value op bound)  a JSON number compared with a bound (python3)
 #   run_mesh_verified(key <args...>)  dtlab mesh --verify --stats: the ok line, `quality` and
@@ -53,6 +56,32 @@ macro(expect_failure)
     endif()
   endforeach()
 endmacro()
+
+macro(expect_input_error)
+  if(NOT rc EQUAL 1)
+    fail("expected exit code 1 (refused input)")
+  endif()
+  foreach(regex ${ARGN})
+    if(NOT err MATCHES "${regex}")
+      fail("stderr does not match '${regex}'")
+    endif()
+  endforeach()
+  if(err MATCHES "std::|filesystem error|terminate called")
+    fail("stderr holds C++ library text")
+  endif()
+endmacro()
+
+function(expect_no_output)
+  foreach(name ${ARGN})
+    if(EXISTS "${WORK}/${name}")
+      fail("${name} was written by a command that failed")
+    endif()
+  endforeach()
+  file(GLOB scratch LIST_DIRECTORIES true RELATIVE "${WORK}" "${WORK}/.dtlab-partial-*" "${WORK}/*/.dtlab-partial-*")
+  if(scratch)
+    fail("scratch folders left behind: ${scratch}")
+  endif()
+endfunction()
 
 # The entries of section `name` (Edges, Triangles) of a Medit file: their count and the sorted
 # distinct references (the last number of each entry line).

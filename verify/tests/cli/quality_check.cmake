@@ -255,6 +255,40 @@ elseif(CASE STREQUAL "inverted")
     fail("the table does not count the inverted triangle")
   endif()
 
+elseif(CASE STREQUAL "gmsh_and_planar")
+  # Gmsh .msh is read as convert, optimize and plot read it (it looked for sq.msh.node); a 2D
+  # mesh in a Dimension 3 Medit file (Gmsh's, every z = 0, triangles only) is measured as 2D.
+  constrain_square()
+  quality_json(json 2 sq.mesh)
+  run(convert sq.mesh sq.msh)
+  expect_success()
+  quality_json(msh 2 sq.msh)
+  if(NOT msh STREQUAL json)
+    fail("sq.msh measures differently from sq.mesh")
+  endif()
+  file(WRITE "${WORK}/flat.mesh"
+       "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n1 1 0 0\n"
+       "Triangles\n2\n1 2 3 1\n2 4 3 1\nEnd\n")
+  quality_json(flat 2 flat.mesh)
+  expect_member("${flat}" dimension 2)
+  expect_member("${flat}" elements 2)
+  expect_member("${flat}" area 1)
+
+elseif(CASE STREQUAL "empty_mesh")
+  # No elements (2D, 3D), or triangles off the plane and no tetrahedra: refused by name, where
+  # it printed "elements 0" and exited 0.
+  file(WRITE "${WORK}/v0.mesh" "MeshVersionFormatted 2\nDimension 2\nVertices\n0\nEnd\n")
+  run(quality v0.mesh)
+  expect_input_error("v0\\.mesh: no triangles")
+  file(WRITE "${WORK}/e3.mesh" "MeshVersionFormatted 2\nDimension 3\nEnd\n")
+  run(quality e3.mesh)
+  expect_input_error("e3\\.mesh: no tetrahedra and no triangles")
+  file(WRITE "${WORK}/surface.mesh"
+       "MeshVersionFormatted 2\nDimension 3\nVertices\n3\n0 0 0 0\n1 0 0 0\n0 1 1 0\n"
+       "Triangles\n1\n1 2 3 1\nEnd\n")
+  run(quality surface.mesh)
+  expect_input_error("surface\\.mesh: no tetrahedra" "not all at z = 0")
+
 elseif(CASE STREQUAL "missing_file")
   run(quality nothere.mesh)
   expect_failure("nothere\\.mesh")
