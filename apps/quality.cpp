@@ -80,7 +80,7 @@ int run_quality2(const QualityArgs& args, const MeshData2& mesh, const std::stri
 }
 
 int run_quality3(const QualityArgs& args, const std::string& path, std::optional<double> size) {
-  const MeshData3 mesh = read_mesh3(path);
+  const MeshData3 mesh = read_mesh3(path, NonPositiveTetrahedra::Keep);  // inverted ones counted
   if (mesh.tetrahedra.empty()) {
     // A 2D mesh in a 3D file (Gmsh writes Medit's Dimension 3 with every z = 0): measured as 2D.
     if (!mesh.triangles.empty() && is_planar(mesh)) return run_quality2(args, planar_to_mesh2(mesh, path), path, size);

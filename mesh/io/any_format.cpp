@@ -35,7 +35,7 @@ int input_dimension(const std::string& path) {
   const std::string ext = extension_of(path);
   if (ext == "ele") return input_dimension(without_extension(path) + ".node");  // Triangle's or TetGen's
   if (ext == "meshb") return medit_binary_dimension(path);
-  if (ext == "msh") return is_planar(read_gmsh(path).mesh) ? 2 : 3;
+  if (ext == "msh") return is_planar(read_gmsh(path, NonPositiveTetrahedra::Keep).mesh) ? 2 : 3;  // orientation aside
   if (ext != "node" && ext != "mesh" && ext != "poly") return point_file_dimension(path);
   std::ifstream in(path);
   if (!in) throw InputError("cannot open '" + path + "'");
@@ -98,11 +98,11 @@ std::vector<Vec3> read_points3(const std::string& path) {
   return read_point_file3(path);
 }
 
-MeshData3 read_mesh3(const std::string& path) {
+MeshData3 read_mesh3(const std::string& path, NonPositiveTetrahedra tetrahedra) {
   const std::string ext = extension_of(path);
-  if (ext == "mesh") return read_medit3(path);
-  if (ext == "meshb") return read_meshb3(path);
-  if (ext == "msh") return read_gmsh(path).mesh;
+  if (ext == "mesh") return read_medit3(path, nullptr, tetrahedra);
+  if (ext == "meshb") return read_meshb3(path, tetrahedra);
+  if (ext == "msh") return read_gmsh(path, tetrahedra).mesh;
   if (ext == "ele" || ext == "node") return read_tetgen_mesh(without_extension(path));
   throw InputError("cannot read a 3D mesh from '" + path + "': supported are .mesh, .meshb (Medit), .msh (Gmsh) and .ele (TetGen)");
 }

@@ -10,6 +10,7 @@
 #include "kernel/vec.hpp"
 #include "mesh/io/mesh_data.hpp"
 #include "mesh/io/mesh_data3.hpp"
+#include "mesh/io/tetrahedron_orientation.hpp"
 
 namespace dtlab {
 
@@ -41,8 +42,10 @@ void write_mesh2(const std::string& path, const MeshData2& mesh);
 // The 3D counterparts: points of a Medit .mesh (its Vertices), a TetGen .node or a plain
 // "x y z" file; a 3D mesh from a Medit .mesh or a TetGen .ele (with the .node beside it); Medit
 // .mesh or TetGen .node + .ele output.
+// `tetrahedra`: Keep reads negative and flat tetrahedra of a Medit or Gmsh file as written (for
+// `dtlab quality` to count them); a TetGen .ele is read with one orientation for the file.
 std::vector<Vec3> read_points3(const std::string& path);
-MeshData3 read_mesh3(const std::string& path);
+MeshData3 read_mesh3(const std::string& path, NonPositiveTetrahedra tetrahedra = NonPositiveTetrahedra::Refuse);
 void write_mesh3(const std::string& path, const MeshData3& mesh);
 
 }  // namespace dtlab

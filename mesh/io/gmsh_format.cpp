@@ -267,7 +267,8 @@ struct Tagged {
 
 class GmshReader {
  public:
-  GmshReader(std::string_view bytes, const std::string& name) : in_(bytes, name) {}
+  GmshReader(std::string_view bytes, const std::string& name, NonPositiveTetrahedra tetrahedra)
+      : in_(bytes, name), orientation_(tetrahedra) {}
 
   GmshMesh read() {
     std::string_view t = in_.token();
@@ -513,7 +514,9 @@ class GmshReader {
       case kTriangle: triangles_.push_back({tag, {v[0], v[1], v[2]}, ref}); break;
       default: {
         const auto& p = out_.mesh.vertices;
-        const Sign s = uncounted::orient3d(p[v[0]], p[v[1]], p[v[2]], p[v[3]]);
+        const Sign s = orientation_ == NonPositiveTetrahedra::Keep
+                           ? Sign::Positive
+                           : uncounted::orient3d(p[v[0]], p[v[1]], p[v[2]], p[v[3]]);
         if (s == Sign::Negative) {
           in_.fail("tetrahedron " + std::to_string(tag) + " is negatively oriented (Gmsh's tetrahedra have orient3d > 0)");
         }
@@ -616,6 +619,7 @@ class GmshReader {
   static constexpr const char* kEntityNames[4] = {"point", "curve", "surface", "volume"};
 
   MshInput in_;
+  NonPositiveTetrahedra orientation_;
   bool v41_ = true;
   bool parametric_noted_ = false;
   bool point_conflict_noted_ = false;
@@ -704,15 +708,15 @@ void check_positive_refs(const std::vector<int>& refs, const char* noun) {
 
 }  // namespace
 
-GmshMesh read_gmsh(std::istream& in, const std::string& file_name) {
+GmshMesh read_gmsh(std::istream& in, const std::string& file_name, NonPositiveTetrahedra tetrahedra) {
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw ParseError(file_name, 0, "read error");
-  return GmshReader(bytes, file_name).read();
+  return GmshReader(bytes, file_name, tetrahedra).read();
 }
 
-GmshMesh read_gmsh(const std::string& path) {
+GmshMesh read_gmsh(const std::string& path, NonPositiveTetrahedra tetrahedra) {
   std::ifstream in = io::open_for_reading(path);
-  return read_gmsh(in, path);
+  return read_gmsh(in, path, tetrahedra);
 }
 
 void write_gmsh(std::ostream& out, const MeshData3& mesh, std::span<const PhysicalName> names, GmshEncoding encoding) {

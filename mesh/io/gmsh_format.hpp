@@ -35,6 +35,7 @@
 
 #include "mesh/io/mesh_data3.hpp"
 #include "mesh/io/physical_names.hpp"
+#include "mesh/io/tetrahedron_orientation.hpp"
 
 namespace dtlab {
 
@@ -46,9 +47,11 @@ struct GmshMesh {
 
 enum class GmshEncoding : std::uint8_t { Ascii, Binary };
 
-// Either version and encoding, told by $MeshFormat; `file_name` names the input in messages.
-GmshMesh read_gmsh(std::istream& in, const std::string& file_name);
-GmshMesh read_gmsh(const std::string& path);
+// Either version and encoding, told by $MeshFormat; `file_name` names the input in messages;
+// `tetrahedra`: Keep reads negative and flat tetrahedra as written.
+GmshMesh read_gmsh(std::istream& in, const std::string& file_name,
+                   NonPositiveTetrahedra tetrahedra = NonPositiveTetrahedra::Refuse);
+GmshMesh read_gmsh(const std::string& path, NonPositiveTetrahedra tetrahedra = NonPositiveTetrahedra::Refuse);
 
 // MSH 4.1. One entity per (dimension, reference) pair, whose physical tag is the reference (none
 // for 0), and one point entity per vertex with a reference other than 0, holding a point

@@ -23,8 +23,9 @@ constexpr std::array<std::string_view, 5> kSurfaceKeywords = {"Vertices", "Edges
 class Medit3Reader {
  public:
   // quadrilaterals: read the Quadrilaterals section (read_medit3_surface) rather than refuse it.
-  Medit3Reader(std::istream& in, const std::string& name, bool quadrilaterals = false)
-      : in_(in, name), quadrilaterals_(quadrilaterals) {}
+  Medit3Reader(std::istream& in, const std::string& name, bool quadrilaterals = false,
+               NonPositiveTetrahedra tetrahedra = NonPositiveTetrahedra::Refuse)
+      : in_(in, name), quadrilaterals_(quadrilaterals), tetrahedra_(tetrahedra) {}
 
   const std::vector<std::array<std::uint32_t, 4>>& quads() const noexcept { return quads_; }
   const std::vector<int>& quad_refs() const noexcept { return quad_refs_; }
@@ -126,7 +127,7 @@ class Medit3Reader {
       std::array<std::uint32_t, N> cell{};
       for (std::size_t k = 0; k < N; ++k) cell[k] = io::vertex_number(in_, k, 1, nv, what);
       if constexpr (N == 4) {
-        if (noun == "tetrahedron") check_positive(cell, what);
+        if (noun == "tetrahedron" && tetrahedra_ == NonPositiveTetrahedra::Refuse) check_positive(cell, what);
       }
       cells.push_back(cell);
       refs.push_back(io::int_field(in_, N, what + " reference"));
@@ -147,6 +148,7 @@ class Medit3Reader {
   LineTokenizer in_;
   io::MeditSkippedSections skipped_{3};
   bool quadrilaterals_ = false;
+  NonPositiveTetrahedra tetrahedra_ = NonPositiveTetrahedra::Refuse;
   MeshData3 mesh_;
   std::vector<std::array<std::uint32_t, 4>> quads_;
   std::vector<int> quad_refs_;
@@ -154,16 +156,17 @@ class Medit3Reader {
 
 }  // namespace
 
-MeshData3 read_medit3(std::istream& in, const std::string& file_name, std::vector<std::string>* notes) {
-  Medit3Reader reader(in, file_name);
+MeshData3 read_medit3(std::istream& in, const std::string& file_name, std::vector<std::string>* notes,
+                      NonPositiveTetrahedra tetrahedra) {
+  Medit3Reader reader(in, file_name, false, tetrahedra);
   MeshData3 mesh = reader.read();
   io::deliver_notes(reader.notes(), file_name, notes);
   return mesh;
 }
 
-MeshData3 read_medit3(const std::string& path, std::vector<std::string>* notes) {
+MeshData3 read_medit3(const std::string& path, std::vector<std::string>* notes, NonPositiveTetrahedra tetrahedra) {
   std::ifstream in = io::open_for_reading(path);
-  return read_medit3(in, path, notes);
+  return read_medit3(in, path, notes, tetrahedra);
 }
 
 Plc3 read_medit3_surface(std::istream& in, const std::string& file_name, std::vector<std::string>* notes) {

@@ -28,14 +28,17 @@
 #include <vector>
 
 #include "mesh/io/mesh_data3.hpp"
+#include "mesh/io/tetrahedron_orientation.hpp"
 #include "mesh/io/tetgen_poly.hpp"
 
 namespace dtlab {
 
 // `file_name` names the input in error messages; `notes` as in read_medit2 (null: warnings on
-// std::cerr).
-MeshData3 read_medit3(std::istream& in, const std::string& file_name, std::vector<std::string>* notes = nullptr);
-MeshData3 read_medit3(const std::string& path, std::vector<std::string>* notes = nullptr);
+// std::cerr); `tetrahedra`: Keep reads negative and flat tetrahedra as written.
+MeshData3 read_medit3(std::istream& in, const std::string& file_name, std::vector<std::string>* notes = nullptr,
+                      NonPositiveTetrahedra tetrahedra = NonPositiveTetrahedra::Refuse);
+MeshData3 read_medit3(const std::string& path, std::vector<std::string>* notes = nullptr,
+                      NonPositiveTetrahedra tetrahedra = NonPositiveTetrahedra::Refuse);
 
 // A surface as a PLC (mesh/io/tetgen_poly.hpp): the same layout, with Quadrilaterals read too;
 // one facet of one polygon per element, triangles first, then quadrilaterals, then edges (2-corner

@@ -59,7 +59,9 @@ class MeshbReader {
  public:
   static constexpr int kDim = std::is_same_v<Mesh, MeshData3> ? 3 : 2;
 
-  MeshbReader(std::string_view bytes, const std::string& name) : in_(bytes, name) {}
+  MeshbReader(std::string_view bytes, const std::string& name,
+              NonPositiveTetrahedra tetrahedra = NonPositiveTetrahedra::Refuse)
+      : in_(bytes, name), tetrahedra_(tetrahedra) {}
 
   // Reads the header and stops after the Dimension keyword (only_dimension) or reads it all.
   Mesh read(int* dimension_only = nullptr) {
@@ -203,7 +205,9 @@ class MeshbReader {
       if constexpr (N == 4 && kDim == 3) {
         const auto& p = mesh_.vertices;
         const auto& t = cells[i];
-        const Sign s = uncounted::orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]);
+        const Sign s = tetrahedra_ == NonPositiveTetrahedra::Keep
+                           ? Sign::Positive
+                           : uncounted::orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]);
         if (s == Sign::Negative) {
           in_.fail(at, what + " is negatively oriented (Medit's tetrahedra have orient3d(v1, v2, v3, v4) > 0)");
         }
@@ -216,6 +220,7 @@ class MeshbReader {
   }
 
   io::BinaryInput in_;
+  NonPositiveTetrahedra tetrahedra_ = NonPositiveTetrahedra::Refuse;
   Layout lay_;
   Mesh mesh_;
 };
@@ -361,14 +366,14 @@ MeshData2 read_meshb2(const std::string& path) {
   return MeshbReader<MeshData2>(bytes, path).read();
 }
 
-MeshData3 read_meshb3(std::istream& in, const std::string& file_name) {
+MeshData3 read_meshb3(std::istream& in, const std::string& file_name, NonPositiveTetrahedra tetrahedra) {
   const std::string bytes = slurp(in, file_name);
-  return MeshbReader<MeshData3>(bytes, file_name).read();
+  return MeshbReader<MeshData3>(bytes, file_name, tetrahedra).read();
 }
 
-MeshData3 read_meshb3(const std::string& path) {
+MeshData3 read_meshb3(const std::string& path, NonPositiveTetrahedra tetrahedra) {
   const std::string bytes = slurp_file(path);
-  return MeshbReader<MeshData3>(bytes, path).read();
+  return MeshbReader<MeshData3>(bytes, path, tetrahedra).read();
 }
 
 void write_meshb2(std::ostream& out, const MeshData2& mesh, int version) { write_meshb(out, mesh, version); }

@@ -29,6 +29,7 @@
 
 #include "mesh/io/mesh_data.hpp"
 #include "mesh/io/mesh_data3.hpp"
+#include "mesh/io/tetrahedron_orientation.hpp"
 
 namespace dtlab {
 
@@ -43,8 +44,10 @@ int medit_binary_dimension(const std::string& path);
 // `file_name` names the input in error messages.
 MeshData2 read_meshb2(std::istream& in, const std::string& file_name);
 MeshData2 read_meshb2(const std::string& path);
-MeshData3 read_meshb3(std::istream& in, const std::string& file_name);
-MeshData3 read_meshb3(const std::string& path);
+// `tetrahedra`: Keep reads negative and flat tetrahedra as written.
+MeshData3 read_meshb3(std::istream& in, const std::string& file_name,
+                      NonPositiveTetrahedra tetrahedra = NonPositiveTetrahedra::Refuse);
+MeshData3 read_meshb3(const std::string& path, NonPositiveTetrahedra tetrahedra = NonPositiveTetrahedra::Refuse);
 
 // Writes `version` 2, 3 or 4 (doubles, little-endian), so that a write/read cycle keeps every
 // bit. InputError naming the element if a vertex number is out of range, a refs vector is neither

@@ -3,7 +3,7 @@
 # Triangle and TetGen .node/.ele pairs (by the .ele path and by the base name), Gmsh .msh, a 2D
 # mesh in a Dimension 3 Medit file (measured as 2D); the metric from
 # --size, from a .sol at the vertices, and from a .sol on a --background mesh; an inverted
-# triangle measured and counted; bad input (missing or malformed files, a .sol of the wrong
+# triangle, inverted and flat tetrahedra (Medit, Gmsh) measured and counted; bad input (missing or malformed files, a .sol of the wrong
 # count, a bad --size, options that do not go together, a mesh without elements) refused with a message naming the file,
 # line or option. Each case runs cli/quality_check.cmake in a scratch directory of its own.
 if(NOT TARGET dtlab_cli)
