@@ -51,7 +51,7 @@ void print(const QualityReport& report, bool json) {
     std::cout << quality_table(report);
 }
 
-int run_quality2(const QualityArgs& args, const MeshData2& mesh, const std::string& path, std::optional<double> size) {
+int run_quality2(const QualityArgs& args, const MeshData2& mesh, const std::string& path, const std::optional<double>& size) {
   if (mesh.triangles.empty())
     throw InputError(path + ": no triangles (" + std::to_string(mesh.vertices.size()) + " vertices): nothing to measure");
   std::vector<Metric2> metrics;
@@ -79,7 +79,7 @@ int run_quality2(const QualityArgs& args, const MeshData2& mesh, const std::stri
   return 0;
 }
 
-int run_quality3(const QualityArgs& args, const std::string& path, std::optional<double> size) {
+int run_quality3(const QualityArgs& args, const std::string& path, const std::optional<double>& size) {
   const MeshData3 mesh = read_mesh3(path, NonPositiveTetrahedra::Keep);  // inverted ones counted
   if (mesh.tetrahedra.empty()) {
     // A 2D mesh in a 3D file (Gmsh writes Medit's Dimension 3 with every z = 0): measured as 2D.

@@ -7,6 +7,7 @@
 #include "kernel/quality.hpp"
 #include "mesh/io/medit.hpp"
 #include "mesh/io/medit3.hpp"
+#include "mesh/io/staged_outputs.hpp"
 #include "mesh/mesh_quality.hpp"
 #include "mesh/tetrahedralization3_build.hpp"
 #include "python/src/arrays.hpp"
@@ -135,7 +136,9 @@ void write_medit(const std::string& path, const py::handle& points_obj, const py
     d.edges = cell_vector<2>(boundary, "boundary_cells");
     d.edge_refs = refs_or_zeros(boundary_refs, d.edges.size(), "boundary_refs");
     py::gil_scoped_release nogil;
-    write_medit2(path, d);
+    StagedOutputs outputs({path});  // as the command line: a folder that is missing is named
+    outputs.write(path, [&](const std::string& to) { write_medit2(to, d); });
+    outputs.commit();
   } else {
     MeshData3 d;
     const auto p = as_points<Vec3>(points);
@@ -146,7 +149,9 @@ void write_medit(const std::string& path, const py::handle& points_obj, const py
     d.triangles = cell_vector<3>(boundary, "boundary_cells");
     d.triangle_refs = refs_or_zeros(boundary_refs, d.triangles.size(), "boundary_refs");
     py::gil_scoped_release nogil;
-    write_medit3(path, d);
+    StagedOutputs outputs({path});
+    outputs.write(path, [&](const std::string& to) { write_medit3(to, d); });
+    outputs.commit();
   }
 }
 

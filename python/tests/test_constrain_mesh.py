@@ -151,3 +151,12 @@ def test_optimize_empty_mesh_is_refused(points, size):
     # Killed the interpreter (an empty vector's front()); now refused by argument name.
     with pytest.raises(dtlab.InputError, match=r"^cells: no triangles"):
         dtlab.optimize(points, np.zeros((0, 3), int), size=size)
+
+
+def test_write_to_a_missing_folder_is_refused(tmp_path):
+    # The library's staged outputs, as on the command line: the path named, nothing left behind.
+    m = dtlab.constrain(POINTS, SEGMENTS, markers=MARKERS, holes=HOLES, regions=REGIONS)
+    with pytest.raises(dtlab.InputError, match=r"cannot write '.*nodir/m\.mesh': no folder"):
+        m.write(str(tmp_path / "nodir" / "m.mesh"))
+    m.write(str(tmp_path / "m.mesh"))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["m.mesh"]
