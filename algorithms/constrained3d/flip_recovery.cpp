@@ -110,15 +110,31 @@ void FlipRecovery::ball_of(std::uint32_t u, std::vector<std::uint32_t>& out) {
 }
 
 std::uint32_t FlipRecovery::tetrahedron_with(std::uint32_t u, std::uint32_t v, std::uint32_t w) {
-  // The search of ball_of, ending at the first tetrahedron that holds v (and w).
+  // The search of ball_of (nav3::search_ball's breadth-first order), ending at the first
+  // tetrahedron that holds v (and w). Written out, not through nav3::search_ball: the hot loop of
+  // the 3D constrained methods (16 % of `constrain --method cdt`'s instructions), 15 % more
+  // instructions through the generic search (callgrind, 2026-12-07).
   if (u >= vertex_tet_.size() || vertex_tet_[u] == kNone) return kNone;
-  return search_ball_of(u, walk_, [&](std::uint32_t t) {
-    const auto& x = records_[t].vertex;
-    if (x[0] == kInf) return false;
-    const bool has_v = x[0] == v || x[1] == v || x[2] == v || x[3] == v;
-    const bool has_w = w == kNone || x[0] == w || x[1] == w || x[2] == w || x[3] == w;
-    return has_v && has_w;
-  });
+  if (mark_.size() < records_.size()) mark_.resize(records_.size(), 0);
+  ++stamp_;
+  walk_.assign(1, vertex_tet_[u]);
+  mark_[walk_[0]] = stamp_;
+  for (std::size_t k = 0; k < walk_.size(); ++k) {
+    const auto& rec = records_[walk_[k]];
+    const auto& x = rec.vertex;
+    if (x[0] != kInf) {
+      const bool has_v = x[0] == v || x[1] == v || x[2] == v || x[3] == v;
+      const bool has_w = w == kNone || x[0] == w || x[1] == w || x[2] == w || x[3] == w;
+      if (has_v && has_w) return walk_[k];
+    }
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (x[i] == u) continue;
+      const std::uint32_t n = rec.neighbour[i] >> 2;
+      if (mark_[n] != stamp_) mark_[n] = stamp_, walk_.push_back(n);
+    }
+  }
+  if (walk_.size() > records_.size()) throw InternalError("flip recovery: a vertex ball exceeded the mesh");
+  return kNone;
 }
 
 bool FlipRecovery::has_edge(std::uint32_t u, std::uint32_t v) { return tetrahedron_with(u, v) != kNone; }
