@@ -111,7 +111,7 @@ int run_mesh(const MeshCliArgs& args) {
 
   bool ok = true;
   if (args.verify) {
-    const MeshCheckReport2 report = check_mesh2d(input, result.output, graph.first_number);
+    const MeshCheckReport2 report = check_mesh2d(input, constrained2d(input), result.output, graph.first_number);
     std::cout << to_text(report);
     ok = report.ok;
   }

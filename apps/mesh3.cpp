@@ -115,7 +115,8 @@ int run_mesh3(const MeshCliArgs& args) {
 
   bool ok = true;
   if (args.verify) {
-    const MeshCheckReport3 report = check_mesh3d(input, result.output, result.output_metrics, {.remove_cavities = args.remove_cavities});
+    const MeshCheckReport3 report = check_mesh3d(input, recover_domain(input, args.remove_cavities), result.output,
+                                                         result.output_metrics, {.remove_cavities = args.remove_cavities});
     std::cout << to_text(report);
     ok = report.ok;
   }

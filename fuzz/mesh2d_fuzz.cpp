@@ -122,7 +122,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const std::exception& e) {
       fail(c, std::string(method) + ": Mesh2::check: " + e.what());
     }
-    const dtlab::MeshCheckReport2 report = dtlab::check_mesh2d(input, result.output);
+    const dtlab::MeshCheckReport2 report = dtlab::check_mesh2d(input, dtlab::constrained2d(input), result.output);
     if (!report.ok) fail(c, std::string(method) + ": check_mesh2d: " + dtlab::to_text(report));
   }
   return 0;

@@ -93,7 +93,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fail(text, std::string("Mesh3::check: ") + e.what());
   }
   const dtlab::MeshCheckReport3 report =
-      dtlab::check_mesh3d(input, result.output, result.output_metrics, {.remove_cavities = options.remove_cavities});
+      dtlab::check_mesh3d(input, dtlab::recover_domain(input, options.remove_cavities), result.output,
+                          result.output_metrics, {.remove_cavities = options.remove_cavities});
   if (!report.ok) fail(text, "check_mesh3d: " + dtlab::to_text(report));
   return 0;
 }

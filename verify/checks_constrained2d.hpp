@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/constrained2d/constrained2d.hpp"
+#include "mesh/problems/constrained2.hpp"
 #include "verify/checks2d.hpp"
 #include "verify/problem_report.hpp"
 

@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/constrained3d/constrained3d.hpp"
+#include "mesh/problems/constrained3.hpp"
 #include "kernel/exact_rational.hpp"
 #include "verify/problem_report.hpp"
 

@@ -8,6 +8,7 @@
 
 #include "kernel/constructions.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/mesh2.hpp"
 
 namespace dtlab {
 
@@ -56,7 +57,8 @@ std::uint32_t triangle_beside(const Mesh2& empty, const Vec2& a, const Vec2& b, 
 
 }  // namespace
 
-MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, std::uint32_t first_number) {
+MeshCheckReport2 check_mesh2d(const ConstrainedInput2& input, const Constrained2dResult& cdt, const MeshData2& out,
+                              std::uint32_t first_number) {
   MeshCheckReport2 r;
   r.vertices = out.vertices.size();
   r.triangles = out.triangles.size();
@@ -113,19 +115,13 @@ MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& out, st
     }
   }
   // Regions, coverage and constraints, against the input's constrained Delaunay triangulation.
-  Constrained2dResult cdt = constrained2d({.points = input.points,
-                                           .segments = input.segments,
-                                           .segment_markers = input.segment_markers,
-                                           .holes = input.holes,
-                                           .regions = input.regions},
-                                          {});
   const auto cdt_points = cdt.triangulation.points();
   for (const auto& t : cdt.triangles) r.domain_area += signed_area(cdt_points[t[0]], cdt_points[t[1]], cdt_points[t[2]]);
   if (cdt.triangles.empty()) {
     if (!out.triangles.empty()) r.add_problem("the output has triangles but the input's domain has none");
     return r;
   }
-  const Mesh2 empty = empty_mesh(cdt);
+  const Mesh2 empty(cdt.triangulation, cdt.slot_regions, {});  // the regions per slot; no constraint marks needed
   // Constraints: every piece of an input segment in the empty mesh (split at input vertices and
   // crossings) with the domain on a side is a chain of output Edges, each step forward along the
   // piece, carrying the marker of one of the segments along it; pieces outside the domain are

@@ -19,7 +19,8 @@
 
 #include <string>
 
-#include "algorithms/mesh2d/mesh2d.hpp"
+#include "mesh/io/mesh_data.hpp"
+#include "mesh/problems/constrained2.hpp"
 #include "verify/problem_report.hpp"
 
 namespace dtlab {
@@ -30,7 +31,10 @@ struct MeshCheckReport2 : ProblemReport {
   double area = 0.0, domain_area = 0.0;
 };
 
-MeshCheckReport2 check_mesh2d(const Mesh2dInput& input, const MeshData2& output, std::uint32_t first_number = 0);
+// `cdt`: the input's constrained Delaunay triangulation (constrained2d(input), method "cdt"): the
+// reference of the regions, the coverage and the constraints.
+MeshCheckReport2 check_mesh2d(const ConstrainedInput2& input, const Constrained2dResult& cdt, const MeshData2& output,
+                              std::uint32_t first_number = 0);
 
 std::string to_json(const MeshCheckReport2& report);
 std::string to_text(const MeshCheckReport2& report);

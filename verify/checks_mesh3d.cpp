@@ -56,7 +56,8 @@ bool less_points(const PointTriple& x, const PointTriple& y) {
 
 }  // namespace
 
-MeshCheckReport3 check_mesh3d(const Mesh3dInput& input, const MeshData3& out, std::span<const Metric3> metrics,
+MeshCheckReport3 check_mesh3d(const ConstrainedInput3& input, const Constrained3dResult& recovered, const MeshData3& out,
+                              std::span<const Metric3> metrics,
                               const MeshCheckOptions3& options) {
   const std::uint32_t first_number = options.first_number;
   MeshCheckReport3 r;
@@ -150,17 +151,7 @@ MeshCheckReport3 check_mesh3d(const Mesh3dInput& input, const MeshData3& out, st
 
   // The recovered tetrahedralization of the input, itself checked exactly (its pieces an exact
   // subdivision of the input triangles, its Steiner points within their rounding bounds).
-  Constrained3dResult cdt;
-  try {
-    Constrained3dOptions recovery;
-    recovery.method = "recover";
-    recovery.remove_cavities = options.remove_cavities;
-    cdt = constrained3d(input, recovery);
-  } catch (const InputError& e) {
-    r.add_problem(std::string("the input's recovered tetrahedralization failed: ") + e.what());
-    r.ok = false;
-    return r;
-  }
+  const Constrained3dResult& cdt = recovered;
   {
     const ConstrainedCheckReport3 c =
         check_constrained3d(input, cdt, {.method = "recover", .first_number = first_number});

@@ -20,7 +20,7 @@
 #include <span>
 #include <string>
 
-#include "algorithms/mesh3d/mesh3d.hpp"
+#include "mesh/problems/constrained3.hpp"
 #include "mesh/mesh_quality.hpp"
 #include "verify/problem_report.hpp"
 
@@ -40,8 +40,12 @@ struct MeshCheckOptions3 {
   std::uint32_t first_number = 1;  // how messages number items (Medit: 1)
 };
 
-// `metrics`: empty, or one per output vertex (the quality is then measured in them).
-MeshCheckReport3 check_mesh3d(const Mesh3dInput& input, const MeshData3& output, std::span<const Metric3> metrics = {},
+// `recovered`: the input's boundary recovery (constrained3d with method "recover", as
+// recover_domain in algorithms/mesh3d/mesh3d.hpp makes it), itself checked exactly here and the
+// reference of the output's boundary. `metrics`: empty, or one per output vertex (the quality is
+// then measured in them).
+MeshCheckReport3 check_mesh3d(const ConstrainedInput3& input, const Constrained3dResult& recovered,
+                              const MeshData3& output, std::span<const Metric3> metrics = {},
                               const MeshCheckOptions3& options = {});
 
 std::string to_json(const MeshCheckReport3& report);

@@ -30,13 +30,9 @@
 
 namespace dtlab {
 
-struct Mesh2dInput {
-  std::span<const Vec2> points;
-  std::span<const std::array<std::uint32_t, 2>> segments;  // the boundary discretisation
-  std::span<const int> segment_markers;                    // empty, or one per segment
-  std::span<const Vec2> holes;
-  std::span<const RegionSeed2> regions;
-};
+// The input: a planar straight line graph whose segments are the boundary discretisation, as
+// constrained2d takes it (mesh/problems/constrained2.hpp).
+using Mesh2dInput = ConstrainedInput2;
 
 template <class Entry>
 class Registry;  // algorithms/common/registry.hpp

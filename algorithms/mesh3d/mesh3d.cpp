@@ -15,6 +15,15 @@ namespace dtlab {
 
 using mesh_pipeline::seconds_since;
 
+Constrained3dResult recover_domain(const Mesh3dInput& input, bool remove_cavities, std::uint32_t steiner_limit_factor) {
+  Constrained3dOptions recovery;
+  recovery.method = "recover";
+  recovery.keep_exterior = false;  // the exterior is told apart by what is not kept
+  recovery.remove_cavities = remove_cavities;
+  recovery.steiner_limit_factor = steiner_limit_factor;
+  return constrained3d(input, recovery);
+}
+
 Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   const auto start = mesh_pipeline::Clock::now();
   if (options.method == "front") {
@@ -32,12 +41,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   //    comes back in `tetrahedralization`, the domain's tetrahedra with their regions.
   auto phase = mesh_pipeline::Clock::now();
   {
-    Constrained3dOptions recovery;
-    recovery.method = "recover";
-    recovery.keep_exterior = false;  // the exterior is told apart by what is not kept
-    recovery.remove_cavities = options.remove_cavities;
-    recovery.steiner_limit_factor = options.steiner_limit_factor;
-    const Constrained3dResult r = constrained3d(input, recovery);
+    const Constrained3dResult r = recover_domain(input, options.remove_cavities, options.steiner_limit_factor);
     result.messages = r.messages;
     if (r.tetrahedra.empty()) {
       throw InputError("mesh3d: the domain has no tetrahedron: the surface encloses no region, or the holes remove "

@@ -119,6 +119,12 @@ struct Mesh3dResult {
 // by name), a domain with no tetrahedron, an unknown method, or a bound reached (named).
 Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options = {});
 
+// Step 1's boundary recovery: constrained3d with method "recover" (fewest Steiner points), the
+// exterior not kept; the reference that check_mesh3d (verify/checks_mesh3d.hpp) checks an output
+// against.
+Constrained3dResult recover_domain(const Mesh3dInput& input, bool remove_cavities = false,
+                                   std::uint32_t steiner_limit_factor = 200);
+
 // The pieces, for tests and for other meshers.
 // 1. The empty mesh: every tetrahedron of the recovered tetrahedralization, the domain's with
 //    their region, the others kExterior; the input triangles' pieces as constrained facets with

@@ -132,7 +132,7 @@ py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, cons
   {
     py::gil_scoped_release nogil;
     r = mesh2d(input, options);
-    if (verify) report = to_json(check_mesh2d(input, r.output));
+    if (verify) report = to_json(check_mesh2d(input, constrained2d(input), r.output));
   }
   py::dict stats;
   const Mesh2dStats& s = r.stats;

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "algorithms/mesh2d/mesh2d.hpp"
+#include "mesh/problems/constrained2.hpp"
 
 namespace dtlab::gen {
 
@@ -16,7 +16,7 @@ struct Domain2 {
   std::vector<int> markers;
   std::vector<Vec2> holes;
   std::vector<RegionSeed2> regions;
-  Mesh2dInput input() const { return {points, segments, markers, holes, regions}; }
+  ConstrainedInput2 input() const { return {points, segments, markers, holes, regions}; }
 };
 
 // Appends the closed polygon `loop` (its vertices in order) as segments with `marker`.

@@ -41,7 +41,7 @@ Mesh2dOptions front_options(const ControlSpace2* control) {
 
 void expect_valid(const Domain& d, const Mesh2dResult& r) {
   r.mesh.check();
-  const MeshCheckReport2 report = check_mesh2d(d.input(), r.output);
+  const MeshCheckReport2 report = check_mesh2d(d.input(), constrained2d(d.input()), r.output);
   EXPECT_TRUE(report.ok) << to_text(report);
 }
 
@@ -158,7 +158,7 @@ RC_GTEST_PROP(Mesh2dFrontProperty, RandomPolygonsWithHolesMeshValidly, ()) {
   const ControlSpace2 control = uniform_control(-2, 2, Metric2::isotropic(h));
   const Mesh2dResult r = mesh2d(d.input(), front_options(&control));
   r.mesh.check();
-  const MeshCheckReport2 report = check_mesh2d(d.input(), r.output);
+  const MeshCheckReport2 report = check_mesh2d(d.input(), constrained2d(d.input()), r.output);
   RC_ASSERT(report.ok);
   RC_ASSERT(r.output.vertices.size() < 20 * (4.0 / (h * h)) + 200);
 }

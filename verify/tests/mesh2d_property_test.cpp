@@ -167,7 +167,7 @@ Mesh2dResult mesh_and_check_once(const Case& c, const Mesh2dOptions& options) {
   } catch (const std::exception& e) {
     RC_FAIL(std::string("Mesh2::check: ") + e.what() + "\n  " + where);
   }
-  const MeshCheckReport2 report = check_mesh2d(c.domain.input(), r.output);
+  const MeshCheckReport2 report = check_mesh2d(c.domain.input(), constrained2d(c.domain.input()), r.output);
   if (!report.ok) RC_FAIL("check_mesh2d: " + to_text(report) + "\n  " + where);
   if (r.output.triangles.empty()) RC_FAIL("no triangles\n  " + where);
   const double units = metric_area(r), perimeter = metric_perimeter(r);
@@ -294,7 +294,7 @@ TEST(Mesh2dProperty, OneDegreeSpike) {
     const MeshCheckReport2 report = [&] {
       const Mesh2dResult r = mesh2d(c.domain.input(), options);
       r.mesh.check();
-      return check_mesh2d(c.domain.input(), r.output);
+      return check_mesh2d(c.domain.input(), constrained2d(c.domain.input()), r.output);
     }();
     EXPECT_TRUE(report.ok) << method << ": " << to_text(report);
   }

@@ -37,7 +37,7 @@ using Domain = gen::Domain2;
 
 void expect_valid(const Domain& d, const Mesh2dResult& r) {
   r.mesh.check();
-  const MeshCheckReport2 report = check_mesh2d(d.input(), r.output);
+  const MeshCheckReport2 report = check_mesh2d(d.input(), constrained2d(d.input()), r.output);
   EXPECT_TRUE(report.ok) << to_text(report);
 }
 
@@ -301,7 +301,7 @@ RC_GTEST_PROP(Mesh2dProperty, RandomPolygonsWithHolesMeshValidly, ()) {
   options.control = &control;
   const Mesh2dResult r = mesh2d(d.input(), options);
   r.mesh.check();
-  const MeshCheckReport2 report = check_mesh2d(d.input(), r.output);
+  const MeshCheckReport2 report = check_mesh2d(d.input(), constrained2d(d.input()), r.output);
   RC_ASSERT(report.ok);
   // Bounded: no more vertices than the domain's area over the smallest equilateral cell, with room.
   RC_ASSERT(r.output.vertices.size() < 20 * (4.0 / (h * h)) + 200);

@@ -247,7 +247,8 @@ void mesh_and_check(const Surface& s, const SizeField& f, bool remove_cavities) 
   options.insertion_region_points = 32;
   RC_TAG(f.name.substr(0, f.name.find(' ')));
   const Mesh3dResult a = mesh3d(s.input(), options);
-  const MeshCheckReport3 report = check_mesh3d(s.input(), a.output, a.output_metrics, {.remove_cavities = remove_cavities});
+  const MeshCheckReport3 report = check_mesh3d(s.input(), recover_domain(s.input(), remove_cavities), a.output,
+                                                 a.output_metrics, {.remove_cavities = remove_cavities});
   RC_LOG() << f.name << (options.optimize ? ", optimized" : ", not optimized") << ": " << a.output.tetrahedra.size()
            << " tetrahedra\n";
   if (!report.ok) RC_FAIL(to_text(report));

@@ -75,7 +75,8 @@ Surface cube_minus_ball(int n, int levels, bool hole) {
 }
 
 MeshCheckReport3 expect_valid(const Mesh3dInput& input, const Mesh3dResult& r, bool remove_cavities = false) {
-  const MeshCheckReport3 c = check_mesh3d(input, r.output, r.output_metrics, {.remove_cavities = remove_cavities});
+  const MeshCheckReport3 c = check_mesh3d(input, recover_domain(input, remove_cavities), r.output, r.output_metrics,
+                                              {.remove_cavities = remove_cavities});
   EXPECT_TRUE(c.ok) << to_text(c);
   EXPECT_EQ(c.vertices, r.output.vertices.size());
   EXPECT_EQ(c.tetrahedra, r.output.tetrahedra.size());
