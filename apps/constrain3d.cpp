@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
-#include "algorithms/constrained3d/surface_problem.hpp"
+#include "algorithms/constrained3d/plc/surface_problem.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"
 #include "mesh/io/staged_outputs.hpp"

@@ -15,7 +15,7 @@
 #include <optional>
 #include <sstream>
 
-#include "algorithms/constrained3d/surface_problem.hpp"
+#include "algorithms/constrained3d/plc/surface_problem.hpp"
 #include "algorithms/mesh3d/mesh3d.hpp"
 #include "apps/cli_util.hpp"
 #include "mesh/io/any_format.hpp"

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/constrained3d/facet_triangulation.hpp"
+#include "algorithms/constrained3d/plc/facet_triangulation.hpp"
 #include "algorithms/mesh3d/mesh3d.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/off_format.hpp"

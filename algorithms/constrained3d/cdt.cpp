@@ -41,8 +41,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/constrained3d/flip_recovery.hpp"
-#include "algorithms/constrained3d/recovery.hpp"
+#include "algorithms/constrained3d/recovery/flip_recovery.hpp"
+#include "algorithms/constrained3d/recovery/recovery.hpp"
 #include "algorithms/constrained3d/regions.hpp"
 #include "kernel/error.hpp"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/constrained3d/recovery.hpp"
+#include "algorithms/constrained3d/recovery/recovery.hpp"
 #include "kernel/error.hpp"
 
 namespace dtlab {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "algorithms/constrained3d/context.hpp"
-#include "algorithms/constrained3d/plc_checks.hpp"
+#include "algorithms/constrained3d/plc/plc_checks.hpp"
 #include "algorithms/constrained3d/regions.hpp"
 #include "algorithms/constrained3d/registry.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"

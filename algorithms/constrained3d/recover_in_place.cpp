@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/constrained3d/flip_recovery.hpp"
-#include "algorithms/constrained3d/recovery.hpp"
+#include "algorithms/constrained3d/recovery/flip_recovery.hpp"
+#include "algorithms/constrained3d/recovery/recovery.hpp"
 #include "kernel/error.hpp"
 #include "kernel/rounding.hpp"
 #include "mesh/element_sets3.hpp"

@@ -75,7 +75,7 @@ class CavityKernel {
   // The first tetrahedron (a, b, c, d), positive, and its four ghosts, into empty records.
   void start(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d);
 
-  // For a caller that appends points one at a time (algorithms/constrained3d/insert_point.hpp):
+  // For a caller that appends points one at a time (algorithms/constrained3d/recovery/insert_point.hpp):
   // the points' array after it moved.
   void set_points(const Vec3* points) noexcept { p_ = points; }
   // Static filter bounds valid for every point the kernel will see (static_filter.hpp); none by

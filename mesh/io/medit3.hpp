@@ -44,7 +44,7 @@ MeshData3 read_medit3(const std::string& path, std::vector<std::string>* notes =
 // one facet of one polygon per element, triangles first, then quadrilaterals, then edges (2-corner
 // polygons), each with its reference as marker; vertex_markers = the vertex references. Planarity
 // and simplicity of a quadrilateral are decided later, exactly
-// (algorithms/constrained3d/facet_triangulation.hpp). A file with Tetrahedra is an InputError (a
+// (algorithms/constrained3d/plc/facet_triangulation.hpp). A file with Tetrahedra is an InputError (a
 // volume mesh, not a surface).
 Plc3 read_medit3_surface(std::istream& in, const std::string& file_name, std::vector<std::string>* notes = nullptr);
 Plc3 read_medit3_surface(const std::string& path, std::vector<std::string>* notes = nullptr);

@@ -17,7 +17,7 @@
 // a line continued with '\', a vertex number 0 or out of range (positive ones are checked once
 // the file is read: a face may name a vertex given after it), a face of fewer than 3 corners, a
 // coordinate outside kernel/coordinate_range.hpp, a w other than 1. Planarity and simplicity of
-// a face are decided later, exactly (algorithms/constrained3d/facet_triangulation.hpp).
+// a face are decided later, exactly (algorithms/constrained3d/plc/facet_triangulation.hpp).
 #pragma once
 
 #include <istream>

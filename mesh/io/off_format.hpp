@@ -14,7 +14,7 @@
 // vertices: a face with more is a polygon, refused by name with a ParseError. read_off_surface
 // reads every face of 3 or more vertices as a PLC facet of one polygon (mesh/io/tetgen_poly.hpp:
 // facet i is face i, corners in file order, marker 0); whether a polygon is planar and simple is
-// not the reader's business (algorithms/constrained3d/facet_triangulation.hpp decides it
+// not the reader's business (algorithms/constrained3d/plc/facet_triangulation.hpp decides it
 // exactly). Refused by name in both: the
 // 4OFF (4D) and nOFF (n-dimensional) variants, binary OFF ("OFF BINARY"), an unknown header.
 // Every other deviation is a ParseError naming the file and line: counts that do not match the

@@ -16,8 +16,8 @@
 //                  polygon); a file with Tetrahedra is refused (a volume mesh, not a surface)
 //
 // The readers carry polygons; they do not triangulate them. Planarity and simplicity of a facet,
-// its triangulation in its plane (algorithms/constrained3d/facet_triangulation.hpp), duplicate
-// vertices, intersecting facets and open surfaces (algorithms/constrained3d/plc_checks.hpp) are
+// its triangulation in its plane (algorithms/constrained3d/plc/facet_triangulation.hpp), duplicate
+// vertices, intersecting facets and open surfaces (algorithms/constrained3d/plc/plc_checks.hpp) are
 // decided later, exactly, and named. Another extension is an InputError listing the supported
 // ones; a malformed file is the reader's ParseError.
 #pragma once

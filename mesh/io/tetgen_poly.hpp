@@ -85,7 +85,7 @@ void write_tetgen_smesh(std::ostream& out, const Plc3& plc);
 void write_tetgen_smesh(const std::string& path, const Plc3& plc);
 
 // mesh/io's own split of the facets, kept for writers and the reader fuzz target: `dtlab
-// constrain` triangulates facets with algorithms/constrained3d/facet_triangulation.hpp instead
+// constrain` triangulates facets with algorithms/constrained3d/plc/facet_triangulation.hpp instead
 // (any simple planar polygon, holes, exact checks, the constrained Delaunay triangulation).
 // The PLC's facets as a triangle surface: vertices and vertex_refs = vertex_markers; each
 // triangle polygon becomes a triangle, each 2-corner polygon an edge, both with their facet's

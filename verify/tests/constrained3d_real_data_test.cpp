@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
-#include "algorithms/constrained3d/facet_triangulation.hpp"
+#include "algorithms/constrained3d/plc/facet_triangulation.hpp"
 #include "mesh/io/surface_input.hpp"
 #include "verify/checks_constrained3d.hpp"
 

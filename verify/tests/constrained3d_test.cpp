@@ -15,14 +15,14 @@
 #include <tuple>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
-#include "algorithms/constrained3d/recovery.hpp"
+#include "algorithms/constrained3d/recovery/recovery.hpp"
 #include "algorithms/constrained3d/registry.hpp"
 #include "verify/exhaustive_tetrahedralization.hpp"
-#include "algorithms/constrained3d/flip_recovery.hpp"
-#include "algorithms/constrained3d/insert_point.hpp"
+#include "algorithms/constrained3d/recovery/flip_recovery.hpp"
+#include "algorithms/constrained3d/recovery/insert_point.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "algorithms/delaunay3d/flip_mesh.hpp"
-#include "algorithms/constrained3d/plc_checks.hpp"
+#include "algorithms/constrained3d/plc/plc_checks.hpp"
 #include "verify/generators/schonhardt.hpp"
 #include "kernel/error.hpp"
 #include "mesh/element_sets3.hpp"

@@ -1,4 +1,4 @@
-// Tests of the facet triangulation (algorithms/constrained3d/facet_triangulation.hpp): polygon
+// Tests of the facet triangulation (algorithms/constrained3d/plc/facet_triangulation.hpp): polygon
 // facets (OFF quadrilaterals, TetGen facets of several polygons with holes, Medit
 // Quadrilaterals) become triangles in their planes, turned like their polygons, with their
 // references; non-planar facets are refused naming the farthest vertex, non-simple polygons and
@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
-#include "algorithms/constrained3d/facet_triangulation.hpp"
+#include "algorithms/constrained3d/plc/facet_triangulation.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/io/surface_input.hpp"

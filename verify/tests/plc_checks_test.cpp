@@ -1,5 +1,5 @@
 // Tests of the exact intersection tests (kernel/intersections.hpp) and of the PLC input checks
-// (algorithms/constrained3d/plc_checks.hpp): closed surfaces pass; open, self-intersecting,
+// (algorithms/constrained3d/plc/plc_checks.hpp): closed surfaces pass; open, self-intersecting,
 // duplicated and degenerate ones are refused naming their items; every touching case of two
 // faces (shared edge, shared vertex, coplanar overlap, a vertex on another face) is decided
 // exactly; the grid search finds the same pairs as all pairs.
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithms/constrained3d/plc_checks.hpp"
+#include "algorithms/constrained3d/plc/plc_checks.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "kernel/error.hpp"
 #include "kernel/intersections.hpp"

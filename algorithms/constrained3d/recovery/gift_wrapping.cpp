@@ -1,10 +1,10 @@
 // Gift-wrapping of a cavity (gift_wrapping.hpp).
-#include "algorithms/constrained3d/gift_wrapping.hpp"
+#include "algorithms/constrained3d/recovery/gift_wrapping.hpp"
 
 #include <algorithm>
 #include <set>
 
-#include "algorithms/constrained3d/plc_checks.hpp"
+#include "algorithms/constrained3d/plc/plc_checks.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/perturbation.hpp"

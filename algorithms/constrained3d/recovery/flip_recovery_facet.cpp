@@ -7,8 +7,8 @@
 #include <map>
 #include <unordered_set>
 
-#include "algorithms/constrained3d/flip_recovery.hpp"
-#include "algorithms/constrained3d/gift_wrapping.hpp"
+#include "algorithms/constrained3d/recovery/flip_recovery.hpp"
+#include "algorithms/constrained3d/recovery/gift_wrapping.hpp"
 #include "kernel/error.hpp"
 #include "kernel/intersections.hpp"
 #include "kernel/predicates.hpp"

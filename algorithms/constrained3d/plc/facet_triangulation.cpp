@@ -2,7 +2,7 @@
 // then the constrained Delaunay triangulation of each facet in its plane (book §3.4, §3.5;
 // algorithms/constrained2d), and the optional merging of coplanar neighbour facets (TetGen's
 // default, TetGen 1.5 manual §4.2.1, -M).
-#include "algorithms/constrained3d/facet_triangulation.hpp"
+#include "algorithms/constrained3d/plc/facet_triangulation.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "algorithms/constrained3d/plc_checks.hpp"
+#include "algorithms/constrained3d/plc/plc_checks.hpp"
 
 #include <algorithm>
 #include <cmath>

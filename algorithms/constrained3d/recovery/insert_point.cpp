@@ -1,6 +1,6 @@
 // Delaunay insertion into an existing tetrahedralization through the shared cavity kernel
 // (insert_point.hpp).
-#include "algorithms/constrained3d/insert_point.hpp"
+#include "algorithms/constrained3d/recovery/insert_point.hpp"
 
 #include <string>
 #include <vector>

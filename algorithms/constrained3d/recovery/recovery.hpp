@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "algorithms/constrained3d/context.hpp"
-#include "algorithms/constrained3d/insert_point.hpp"
+#include "algorithms/constrained3d/recovery/insert_point.hpp"
 #include "kernel/exact_rational.hpp"
 
 namespace dtlab {

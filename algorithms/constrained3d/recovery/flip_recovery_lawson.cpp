@@ -11,7 +11,7 @@
 // backs that up.
 #include <algorithm>
 
-#include "algorithms/constrained3d/flip_recovery.hpp"
+#include "algorithms/constrained3d/recovery/flip_recovery.hpp"
 #include "kernel/predicates.hpp"
 
 namespace dtlab {

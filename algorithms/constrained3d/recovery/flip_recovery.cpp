@@ -1,5 +1,5 @@
 // Edge and triangle recovery by flips and edge removals (flip_recovery.hpp).
-#include "algorithms/constrained3d/flip_recovery.hpp"
+#include "algorithms/constrained3d/recovery/flip_recovery.hpp"
 
 #include <algorithm>
 #include <unordered_set>

@@ -1,6 +1,6 @@
 // Shared steps of boundary recovery (recovery.hpp; book §3.5.3, Ruppert 1995 and Shewchuk 2000
 // for the split rules).
-#include "algorithms/constrained3d/recovery.hpp"
+#include "algorithms/constrained3d/recovery/recovery.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <set>
 #include <string>
 
-#include "algorithms/constrained3d/flip_recovery.hpp"
+#include "algorithms/constrained3d/recovery/flip_recovery.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
 #include "kernel/rounding.hpp"

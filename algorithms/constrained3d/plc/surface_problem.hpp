@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "algorithms/constrained3d/constrained3d.hpp"
-#include "algorithms/constrained3d/facet_triangulation.hpp"
+#include "algorithms/constrained3d/plc/facet_triangulation.hpp"
 #include "mesh/io/surface_input.hpp"
 
 namespace dtlab {

@@ -4,7 +4,7 @@
 // an edge in its own plane, which the walks of flip_recovery.cpp cannot flip away (on the hull
 // no flip can) and which crossing_edge, looking for edges through a triangle's plane, does not
 // see; recover_in_place.cpp then places the triangle's point where this edge crosses.
-#include "algorithms/constrained3d/flip_recovery.hpp"
+#include "algorithms/constrained3d/recovery/flip_recovery.hpp"
 
 #include "kernel/predicates.hpp"
 

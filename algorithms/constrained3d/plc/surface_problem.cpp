@@ -1,4 +1,4 @@
-#include "algorithms/constrained3d/surface_problem.hpp"
+#include "algorithms/constrained3d/plc/surface_problem.hpp"
 
 #include <sstream>
 
