@@ -130,11 +130,11 @@ void verify(const std::vector<Vec2>& points, const Run& r) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::vector<Vec2> points = decode(data, size);
-  const auto variants = dtlab::delaunay2d_variants();
+  const auto& variants = dtlab::delaunay2d_variants();
   const Run reference = run(std::string(variants.front().name), points);
   verify(points, reference);
   const std::vector<dtlab::TriangleIds> expected = dtlab::canonical_triangle_set(reference.triangles);
-  for (const dtlab::Delaunay2dVariant& v : variants.subspan(1)) {
+  for (const dtlab::Delaunay2dVariant& v : variants.entries().subspan(1)) {
     const Run r = run(std::string(v.name), points);
     // Equal triangle sets are equally valid; a differing one is verified to say who is wrong.
     if (r.result.degenerate_message != reference.result.degenerate_message ||

@@ -20,13 +20,14 @@ namespace dtlab {
 
 // What the rounds read in every dimension, with the dimension's defaults of max_rounds and
 // bad_quality; Optimize2dOptions and Optimize3dOptions add their operators' options.
-template <std::uint32_t kMaxRounds, double kBadQuality>
+template <class Defaults>  // Defaults::kMaxRounds, Defaults::kBadQuality (a double template
+                           // argument would need clang 18)
 struct OptimizeRoundOptions {
-  std::uint32_t max_rounds = kMaxRounds;
+  std::uint32_t max_rounds = Defaults::kMaxRounds;
   // Another round while the worst or the mean Q_K drops by more than this, relative.
   double round_improvement = 1e-3;
   // Elements worse than this are treated one by one, worst first, at the start of each round.
-  double bad_quality = kBadQuality;
+  double bad_quality = Defaults::kBadQuality;
   bool swaps = true;
   bool relocation = true;
   std::uint32_t relocation_sweeps = 2;  // per round

@@ -27,7 +27,11 @@ struct Optimize2dOperator;  // registry.hpp
 
 // The rounds' options (algorithms/common/optimize_strategy.hpp: at most 8 rounds, triangles with
 // Q_K > 1.4 treated one by one) and the 2D operators'.
-struct Optimize2dOptions : OptimizeRoundOptions<8, 1.4> {
+struct Optimize2dRoundDefaults {
+  static constexpr std::uint32_t kMaxRounds = 8;
+  static constexpr double kBadQuality = 1.4;
+};
+struct Optimize2dOptions : OptimizeRoundOptions<Optimize2dRoundDefaults> {
   // Where the names of `sequence` are looked up (null: optimize2d_operators(), registry.hpp).
   const Registry<Optimize2dOperator>* operators = nullptr;
   // Boundary vertices that are neither kFixed nor corners collapsed along the boundary

@@ -29,7 +29,11 @@ struct Optimize3dOperator;  // registry.hpp
 
 // The rounds' options (algorithms/common/optimize_strategy.hpp: at most 6 rounds, tetrahedra
 // with Q_K > 3 treated one by one) and the 3D operators'.
-struct Optimize3dOptions : OptimizeRoundOptions<6, 3.0> {
+struct Optimize3dRoundDefaults {
+  static constexpr std::uint32_t kMaxRounds = 6;
+  static constexpr double kBadQuality = 3.0;
+};
+struct Optimize3dOptions : OptimizeRoundOptions<Optimize3dRoundDefaults> {
   // Where the names of `sequence` are looked up (null: optimize3d_operators(), registry.hpp).
   const Registry<Optimize3dOperator>* operators = nullptr;
   // A goal (0: not asked): the rounds stop after the first one whose mesh has no Q_K above
