@@ -60,6 +60,15 @@ int run_mesh(const MeshCliArgs& args) {
   if (args.threads != 1) throw InputError("--threads: the 2D mesher is sequential (give --threads 1 or leave it out)");
   if (args.insertion_regions != 1)
     throw InputError("--insertion-regions: the 2D mesher inserts one point after the other (give 1 or leave it out)");
+  // Options of the 3D mesher have no effect on a planar domain: refused by name, not ignored.
+  for (const auto& [given, name] : {std::pair{args.remove_cavities, "--remove-cavities"},
+                                    std::pair{args.no_remesh, "--no-remesh"},
+                                    std::pair{args.triangulate_nonplanar, "--triangulate-nonplanar"},
+                                    std::pair{args.optimize_given, "--optimize"}}) {
+    if (given)
+      throw InputError(std::string(name) + ": an option for closed surfaces; " + args.input +
+                       " is a planar domain (in 2D: --no-optimize, or dtlab optimize for its options)");
+  }
   const int given = args.sizes_given();
   if (given > 1) throw InputError("give one of --size, --size-map, --metric");
   if (!args.background.empty() && args.size_map.empty() && args.metric.empty())
@@ -184,7 +193,7 @@ void add_mesh(CLI::App& app) {
   cmd->add_flag("--triangulate-nonplanar", args->triangulate_nonplanar,
                 "Closed surfaces: triangulate a polygonal face whose corners are not in one plane in its projection "
                 "(each triangle a boundary face with the face's marker) instead of refusing it; counted on stderr");
-  cmd->add_option("--optimize", args->optimize,
+  CLI::Option* optimize = cmd->add_option("--optimize", args->optimize,
                   "Closed surfaces: the optimization effort: light (one round), standard (rounds until Q_K <= 3 and "
                   "dihedral angles in [20, 150] deg and 97 % of Q_K in [1, 2], or no more gain; the default), thorough (two relocation sweeps "
                   "a round, rounds until no gain, then vertices moved for dihedral angles of at least 25 deg)")
@@ -194,8 +203,9 @@ void add_mesh(CLI::App& app) {
   cmd->add_flag("--stats", args->stats, "Print the quality table and one JSON object (counts, phases, quality) last");
   cmd->add_flag("--verify", args->verify,
                 "Check the output exactly (validity, segments as chains, regions, area); exit 3 if it fails");
-  cmd->callback([args, size] {
+  cmd->callback([args, size, optimize] {
     args->size_given = size->count() > 0;
+    args->optimize_given = optimize->count() > 0;
     exit_code() = run_mesh(*args);
   });
 }

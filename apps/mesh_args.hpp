@@ -25,6 +25,7 @@ struct MeshCliArgs {
   bool triangulate_nonplanar = false;   // surfaces: FacetTriangulationOptions::triangulate_nonplanar
   unsigned threads = 1;                 // surfaces: Mesh3dOptions::threads
   std::uint32_t insertion_regions = 1;  // surfaces: Mesh3dOptions::insertion_regions
+  bool optimize_given = false;          // --optimize was given (surfaces only)
 
   // How many of --size, --size-map, --metric were given.
   int sizes_given() const { return size_given + !size_map.empty() + !metric.empty(); }

@@ -32,6 +32,7 @@ struct MetricArgs {
   std::string output;
   std::string norm = "inf";
   double p = 2.0;
+  bool p_given = false;  // --p was given (with --norm Lp only)
   std::optional<double> complexity, error, relative, hmin, hmax, hgrad;
   std::string hessian = "lsq";
   bool stats = false;
@@ -84,6 +85,9 @@ void report(const MetricArgs& args, const SolutionMetricStats& s, std::size_t ve
 
 int run_metric(const MetricArgs& args) {
   if (args.solutions.empty()) throw InputError("give --solution U.sol (a scalar field at the mesh's vertices)");
+  if (args.norm == "Lp" && !args.p_given) throw InputError("--norm Lp needs --p P (p >= 1), the exponent of the norm");
+  if (args.norm != "Lp" && args.p_given)
+    throw InputError("--p goes with --norm Lp; --norm " + args.norm + " has its own exponent");
   if (args.norm == "Lp" && !(args.p >= 1.0)) throw InputError("--p " + std::to_string(args.p) + ": give p >= 1");
   if (args.complexity.has_value() == args.error.has_value())
     throw InputError("give either --complexity N (about the vertex count wanted) or --error EPS (L-infinity only)");
@@ -123,7 +127,7 @@ void add_metric(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "Write the metric (Medit tensor .sol / .solb)")->required();
   cmd->add_option("--norm", args->norm, "inf (L-infinity, the default), L2, or Lp with --p")
       ->check(CLI::IsMember({"inf", "L2", "Lp"}));
-  cmd->add_option("--p", args->p, "p of the Lp norm (with --norm Lp)");
+  CLI::Option* p = cmd->add_option("--p", args->p, "p of the Lp norm (with --norm Lp, required there)");
   cmd->add_option("--complexity", args->complexity, "Target complexity N: about the number of vertices wanted");
   cmd->add_option("--error", args->error, "Target L-infinity interpolation error (instead of --complexity)");
   cmd->add_option("--relative", args->relative, "Relative error: |H| / max(|u|, CUTOFF max|u|)");
@@ -133,7 +137,10 @@ void add_metric(CLI::App& app) {
   cmd->add_option("--hmax", args->hmax, "Largest size (default the diagonal)");
   cmd->add_option("--hgrad", args->hgrad, "Gradation: bound the size ratio along a unit edge by G >= 1");
   cmd->add_flag("--stats", args->stats, "Print one JSON object with the complexity and the sizes last");
-  cmd->callback([args] { exit_code() = run_metric(*args); });
+  cmd->callback([args, p] {
+    args->p_given = p->count() > 0;
+    exit_code() = run_metric(*args);
+  });
 }
 
 }  // namespace dtlab::cli

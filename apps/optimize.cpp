@@ -111,6 +111,9 @@ Snapshot3 snapshot3(const Mesh3& mesh, const MeshData3& input) {
 }
 
 int run_optimize3(const OptimizeArgs& args) {
+  if (args.boundary_splits)
+    throw InputError("--split-boundary: " + args.input + " is 3D; the 3D optimization keeps its boundary (2D meshes only)");
+  if (args.valence) throw InputError("--valence: " + args.input + " is 3D; valence relaxation is for 2D meshes only");
   StagedOutputs outputs({args.output});
   const MeshData3 input = read_mesh3(args.input);
   std::vector<Metric3> metrics;
@@ -184,6 +187,8 @@ int run_optimize(const OptimizeArgs& args) {
   if (args.size_given && !args.metric.empty())
     throw InputError("--size " + args.size + ": give either --size or --metric");
   if (input_dimension(args.input) == 3) return run_optimize3(args);
+  if (args.no_remesh)
+    throw InputError("--no-remesh: " + args.input + " is 2D; the local remeshing after the rounds is 3D only");
   StagedOutputs outputs({args.output});
   const MeshData2 input = read_mesh2(args.input);
   std::vector<Metric2> metrics;

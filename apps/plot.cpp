@@ -413,6 +413,8 @@ int run_plot(const PlotArgs& args) {
   const std::string path = mesh_input_path(args.mesh, "plot");
 
   if (input_dimension(path) == 3) {
+    if (args.color == "reference")
+      throw InputError("--color reference: " + path + " is 3D; its tetrahedra are coloured by quality only");
     if (!args.background.empty())
       throw InputError("--background " + args.background + ": a background mesh is supported for 2D meshes only, and " +
                        path + " is 3D (give --metric at its vertices)");
