@@ -62,11 +62,13 @@ int run_adapt3(const AdaptRequest& request) {
                     *request.hgrad);
   }
   Mesh3 mesh;
+  std::vector<std::string> messages;
   try {
-    mesh = mesh3_from_data(input);
+    mesh = mesh3_from_data(input, {}, &messages);
   } catch (const InputError& e) {
     throw InputError(request.mesh + ": " + e.what(), e.items());
   }
+  for (const std::string& m : messages) std::cerr << "dtlab: " << request.mesh << ": " << m << "\n";
   ControlSpace3 control = [&] {
     try {
       return ControlSpace3(input, metrics);

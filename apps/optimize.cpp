@@ -125,11 +125,13 @@ int run_optimize3(const OptimizeArgs& args) {
     metrics = implied_metrics(input);
   }
   Mesh3 mesh;
+  std::vector<std::string> messages;
   try {
-    mesh = mesh3_from_data(input);
+    mesh = mesh3_from_data(input, {}, &messages);
   } catch (const InputError& e) {
     throw InputError(args.input + ": " + e.what(), e.items());
   }
+  for (const std::string& m : messages) std::cerr << "dtlab: " << args.input << ": " << m << "\n";
   for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v)
     if (!mesh.is_dead_vertex(v)) mesh.set_metric(v, metrics[v]);
   MetricField3 field;

@@ -59,7 +59,7 @@ void check_vertex_balls(const T3& tet) {
 
 }  // namespace
 
-Mesh3 mesh3_from_data(const MeshData3& data, const Metric3& metric) {
+Mesh3 mesh3_from_data(const MeshData3& data, const Metric3& metric, std::vector<std::string>* messages) {
   const std::size_t n = data.vertices.size();
   const std::size_t nt = data.tetrahedra.size();
   // An empty mesh would reach the algorithms as one with no domain (no boundary, no metric).
@@ -86,6 +86,7 @@ Mesh3 mesh3_from_data(const MeshData3& data, const Metric3& metric) {
   std::unordered_map<std::array<std::uint32_t, 3>, std::uint32_t, TripleHash> listed;
   listed.reserve(2 * data.triangles.size() + 16);
   std::vector<MeshTriangle3> constrained;
+  std::vector<std::uint32_t> constrained_listing;  // the Triangles entry of each listed constraint
   std::vector<std::uint8_t> found;
   for (std::size_t i = 0; i < data.triangles.size(); ++i) {
     const auto& f = data.triangles[i];
@@ -96,18 +97,24 @@ Mesh3 mesh3_from_data(const MeshData3& data, const Metric3& metric) {
                          {i});
     if (!listed.emplace(sorted(f), static_cast<std::uint32_t>(i)).second) continue;
     constrained.push_back({f[0], f[1], f[2], data.triangle_refs.empty() ? 0 : data.triangle_refs[i]});
+    constrained_listing.push_back(static_cast<std::uint32_t>(i));
   }
   found.assign(data.triangles.size(), 0);
+  std::vector<std::uint8_t> interior(data.triangles.size(), 0);  // listed, one region on both sides
+  std::size_t interior_facets = 0, interior_listed = 0;
   for (std::uint32_t t = 0; t < nt; ++t)
     for (std::uint32_t i = 0; i < 4; ++i) {
       const std::uint32_t h = T3::facet(t, i);
       const auto f = tet.facet_vertices(h);
+      const std::uint32_t u = T3::tetrahedron_of(tet.twin(h));
+      const bool same_region_inside = !tet.is_ghost(u) && refs[u] == refs[t];
+      if (same_region_inside && t < u) ++interior_facets;
       const auto it = listed.find(sorted(f));
       if (it != listed.end()) {
         found[it->second] = 1;
+        if (same_region_inside && t < u) interior[it->second] = 1, ++interior_listed;
         continue;
       }
-      const std::uint32_t u = T3::tetrahedron_of(tet.twin(h));
       if (tet.is_ghost(u) || (refs[u] != refs[t] && t < u)) constrained.push_back({f[0], f[1], f[2], 0});
     }
   for (std::size_t i = 0; i < data.triangles.size(); ++i) {
@@ -118,6 +125,24 @@ Mesh3 mesh3_from_data(const MeshData3& data, const Metric3& metric) {
                        {i});
   }
 
+  // Interior faces listed as Triangles with one region on both sides: internal constraints when
+  // some are listed; when every interior face is (TetGen's -g output lists every face), none is a
+  // constraint, else nothing could move. Either way it is said, never silent.
+  if (interior_listed > 0) {
+    const bool all = interior_listed == interior_facets;
+    if (all) {
+      std::size_t k = 0;
+      for (std::size_t c = 0; c < constrained.size(); ++c)
+        if (c >= constrained_listing.size() || !interior[constrained_listing[c]]) constrained[k++] = constrained[c];
+      constrained.resize(k);
+    }
+    if (messages)
+      messages->push_back(std::to_string(interior_listed) + " Triangles entr" + (interior_listed == 1 ? "y is" : "ies are") +
+                          " interior face" + (interior_listed == 1 ? "" : "s") + " with one region on both sides" +
+                          (all ? ": every interior face is listed (as TetGen's -g writes them), so none is kept as a "
+                                 "constraint"
+                               : ", kept as internal constraints (never moved or swapped)"));
+  }
   Mesh3 mesh(tet, refs, constrained, metric);
   for (std::size_t e = 0; e < data.edges.size(); ++e) {
     const auto [a, b] = data.edges[e];

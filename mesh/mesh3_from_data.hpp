@@ -8,10 +8,16 @@
 // edges (the input need not be convex: ghosts close holes, cavities and concavities directly).
 // Constrained facets: every Triangles entry (with its reference), every boundary facet not
 // listed and every facet between tetrahedra of different references not listed (reference 0).
+// Triangles entries that are interior faces with one region on both sides are internal
+// constraints, unless every interior face is listed (TetGen's -g output): then none of them is;
+// `messages` (when given) says which, with the count.
 // Constrained edges: the edges of the constrained facets and every Edges entry. Vertices on a
 // constrained facet or edge are kFixed | kOnBoundary, the others free (flags 0); vertices no
 // tetrahedron uses are dead slots.
 #pragma once
+
+#include <string>
+#include <vector>
 
 #include "kernel/metric.hpp"
 #include "mesh/io/mesh_data3.hpp"
@@ -26,6 +32,6 @@ namespace dtlab {
 // 2-manifold (an edge on other than two boundary facets, a vertex where the boundary pinches: its
 // tetrahedra not connected across facets), a Triangles entry that is not a facet of the tetrahedra,
 // an Edges entry that is not an edge of them.
-Mesh3 mesh3_from_data(const MeshData3& data, const Metric3& metric = {});
+Mesh3 mesh3_from_data(const MeshData3& data, const Metric3& metric = {}, std::vector<std::string>* messages = nullptr);
 
 }  // namespace dtlab

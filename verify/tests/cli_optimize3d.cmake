@@ -8,7 +8,7 @@ if(NOT TARGET dtlab_cli)
 endif()
 find_program(DTLAB_TETGEN tetgen)
 
-foreach(_dtlab_case tetgen_ele medit_input bad_input)
+foreach(_dtlab_case tetgen_ele medit_input tetgen_every_face bad_input)
   if(NOT DTLAB_TETGEN AND NOT _dtlab_case STREQUAL "bad_input")
     continue()
   endif()

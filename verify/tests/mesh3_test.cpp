@@ -260,6 +260,47 @@ TEST(Mesh3FromData, NonConvexMesh) {
     EXPECT_EQ(m.flags(v), Mesh3::kFixed | Mesh3::kOnBoundary);
 }
 
+// Interior faces listed as Triangles with one region on both sides (issue 42, item 11): some of
+// them are internal constraints; all of them (TetGen's -g output lists every face) none; said
+// either way.
+TEST(Mesh3FromData, InteriorFacesListedAsTriangles) {
+  MeshData3 d = cubes({{0, 0, 0}, {1, 0, 0}});
+  std::map<std::array<std::uint32_t, 3>, int> faces;
+  for (const auto& t : d.tetrahedra)
+    for (int i = 0; i < 4; ++i) {
+      std::array<std::uint32_t, 3> f{t[(i + 1) % 4], t[(i + 2) % 4], t[(i + 3) % 4]};
+      std::sort(f.begin(), f.end());
+      ++faces[f];
+    }
+  std::vector<std::array<std::uint32_t, 3>> interior;
+  for (const auto& [f, n] : faces)
+    if (n == 2) interior.push_back(f);
+  ASSERT_GT(interior.size(), 1u);
+
+  MeshData3 some = d;
+  some.triangles = {interior.front()};
+  some.triangle_refs = {7};
+  std::vector<std::string> messages;
+  const Mesh3 kept = mesh3_from_data(some, {}, &messages);
+  kept.check();
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_NE(messages[0].find("1 Triangles entry is interior face with one region on both sides, kept as internal"),
+            std::string::npos)
+      << messages[0];
+  EXPECT_EQ(kept.domain().triangles.size(), 20u + 1u);  // 10 boundary squares and the listed face
+
+  MeshData3 all = d;
+  all.triangles = interior;
+  all.triangle_refs.assign(interior.size(), 7);
+  messages.clear();
+  const Mesh3 none = mesh3_from_data(all, {}, &messages);
+  none.check();
+  ASSERT_EQ(messages.size(), 1u);
+  EXPECT_NE(messages[0].find(std::to_string(interior.size()) + " Triangles entries are interior faces"), std::string::npos);
+  EXPECT_NE(messages[0].find("every interior face is listed"), std::string::npos);
+  EXPECT_EQ(none.domain().triangles.size(), 20u);  // the boundary only
+}
+
 TEST(Mesh3FromData, InterfacesBetweenReferencesAreConstrained) {
   const MeshData3 d = cubes({{0, 0, 0}, {1, 0, 0}}, 5);
   const Mesh3 m = mesh3_from_data(d);

@@ -129,6 +129,25 @@ elseif(CASE STREQUAL "medit_input")
   expect_success()
   optimize_ok(x.mesh x.mesh)
 
+elseif(CASE STREQUAL "tetgen_every_face")
+  # TetGen's -g Medit output lists every face of the mesh as a Triangles entry (issue 42, item
+  # 11): interior faces with one region on both sides are then no constraints, and it is said;
+  # the optimizer works as on the .ele of the same mesh.
+  file(COPY_FILE "${SURFACE}" "${WORK}/x.off")
+  execute_process(COMMAND "${TETGEN}" -pq1.414a0.02gQ x.off WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE rc
+                  OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(last_command "tetgen -pq1.414a0.02gQ x.off")
+  expect_success()
+  run(optimize x.1.mesh -o g.mesh --stats)
+  expect_success()
+  if(NOT err MATCHES "x\\.1\\.mesh: [0-9]+ Triangles entries are interior faces with one region on both sides: every interior face is listed")
+    fail("the interior faces listed as Triangles were not named")
+  endif()
+  string(REGEX MATCH "operations: ([0-9]+) face swaps, ([0-9]+) shell transformations, ([0-9]+) relocations" ops "${out}")
+  if(NOT ops OR CMAKE_MATCH_3 EQUAL 0)
+    fail("no relocation on TetGen's -g mesh: its interior faces were kept as constraints")
+  endif()
+
 elseif(CASE STREQUAL "bad_input")
   set(head "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 -1 0\n")
   # A facet in three tetrahedra (the third overlapping the first).
