@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "algorithms/adapt/boundary_split3.hpp"
+#include "algorithms/optimize3d/boundary_split.hpp"
 #include "kernel/error.hpp"
 
 namespace dtlab {

@@ -5,7 +5,7 @@
 // transformations and relocations, all with the operators of algorithms/optimize3d, repeated in
 // rounds until the metric edge lengths stop changing.
 //
-// Scope of this version: the interior, and the split of boundary edges (boundary_split3.hpp,
+// Scope of this version: the interior, and the split of boundary edges (algorithms/optimize3d/boundary_split.hpp,
 // linear metric midpoint, references kept). Boundary collapse and the curved surface support are
 // not written yet (issue 18): boundary vertices are never removed and new ones lie on the
 // input's facets.
@@ -28,7 +28,7 @@ struct Adapt3dOptions {
   double share_tolerance = 1e-3;
   std::uint32_t relocation_sweeps = 2;  // per round
   std::uint64_t max_vertices = 20'000'000;
-  bool boundary = true;  // split constrained edges longer than sqrt2 (boundary_split3.hpp)
+  bool boundary = true;  // split constrained edges longer than sqrt2 (algorithms/optimize3d/boundary_split.hpp)
 };
 
 struct Adapt3dStats {

@@ -1,12 +1,14 @@
 // Split of constrained edges for 3D adaptation (book §9.3.1, the edge split of §8.3.6 carried to
 // the boundary): both halves of each boundary facet keep its reference, the new vertex lies on the
 // boundary. Linear midpoint in the metric (the curved support is not written yet).
-#include "algorithms/adapt/boundary_split3.hpp"
+#include "algorithms/optimize3d/boundary_split.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <queue>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "algorithms/optimize3d/local.hpp"
@@ -17,6 +19,10 @@ namespace dtlab {
 using namespace optimize3d_detail;
 
 namespace {
+
+// Six times the volume under which a tetrahedron counts as flat, per cubed longest edge (a
+// regular one has 0.7; 1e-5 is a dihedral angle of about 1e-5 rad).
+constexpr double kFlatVolume = 1e-5;
 
 double length_of(const Mesh3& mesh, std::uint32_t a, std::uint32_t b) {
   return dtlab::edge_length(mesh.point(a), mesh.metric(a), mesh.point(b), mesh.metric(b));
@@ -42,13 +48,54 @@ std::uint32_t try_boundary_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b,
   if (a == Mesh3::kInfinite || b == Mesh3::kInfinite || !mesh.is_constrained_edge(a, b)) return Mesh3::kNone;
   std::vector<std::uint32_t> shell, ring;
   if (!mesh.shell(a, b, shell, &ring)) return Mesh3::kNone;
-  const Vec3 pm = metric_midpoint3(mesh.point(a), mesh.metric(a), mesh.point(b), mesh.metric(b));
-  if (pm == mesh.point(a) || pm == mesh.point(b)) return Mesh3::kNone;
+  // m before it exists: a number no vertex has, Mesh3::kInfinite and kNone excluded (this was
+  // kInfinite itself, so the orientation test below took every new tetrahedron for a ghost).
+  constexpr std::uint32_t kProbe = 0xFFFFFFFDu;
+  static_assert(kProbe != Mesh3::kInfinite && kProbe != Mesh3::kNone);
+  // A shell holding a flat tetrahedron (two boundary facets coplanar up to rounding: the two
+  // triangles of a rotated box's face) is not split: every piece would be as flat, and field
+  // points would follow on its edges in the facets' plane; the optimization removes the one
+  // tetrahedron, not its pieces.
+  for (const std::uint32_t t : shell) {
+    if (!mesh.in_domain(t)) continue;
+    const auto v = mesh.tetrahedron(t);
+    const Vec3 &p0 = mesh.point(v[0]), &p1 = mesh.point(v[1]), &p2 = mesh.point(v[2]), &p3 = mesh.point(v[3]);
+    double longest = 0;
+    for (const auto& [x, y] : {std::pair{p0, p1}, {p0, p2}, {p0, p3}, {p1, p2}, {p1, p3}, {p2, p3}})
+      longest = std::max(longest, norm(y - x));
+    if (std::fabs(dot(p1 - p0, cross(p2 - p0, p3 - p0))) < kFlatVolume * longest * longest * longest) return Mesh3::kNone;
+  }
+  const Vec3 midpoint = metric_midpoint3(mesh.point(a), mesh.metric(a), mesh.point(b), mesh.metric(b));
+  if (midpoint == mesh.point(a) || midpoint == mesh.point(b)) return Mesh3::kNone;
+  // The rounded midpoint lies off the line ab by up to an ulp; where ab is an edge of a nearly
+  // flat tetrahedron (two boundary facets coplanar up to rounding) one of its halves can then be
+  // negative. The points one ulp away in each coordinate are tried next: the first whose halves
+  // are all positive (exact orient3d) is m.
+  const auto all_positive = [&](const Vec3& p) {
+    for (const std::uint32_t t : shell) {
+      const auto v = mesh.tetrahedron(t);
+      if (!positive(mesh, substitute(v, b, kProbe), kProbe, p) || !positive(mesh, substitute(v, a, kProbe), kProbe, p))
+        return false;
+    }
+    return true;
+  };
+  Vec3 pm = midpoint;
+  if (!all_positive(pm)) {
+    bool found = false;
+    for (int k = 1; k < 27 && !found; ++k) {
+      const auto nudge = [](double x, int step) {
+        return step == 0 ? x : std::nextafter(x, step > 0 ? HUGE_VAL : -HUGE_VAL);
+      };
+      const Vec3 p{nudge(midpoint.x, k % 3 - 1), nudge(midpoint.y, k / 3 % 3 - 1), nudge(midpoint.z, k / 9 - 1)};
+      if (p == midpoint || p == mesh.point(a) || p == mesh.point(b)) continue;
+      if (all_positive(p)) pm = p, found = true;
+    }
+    if (!found) return Mesh3::kNone;
+  }
   const Metric3 mm = field ? field(pm) : interpolate(mesh.metric(a), mesh.metric(b), 0.5);
   // The constrained facets (a, b, c) of the shell, by their third vertex c.
   std::vector<std::pair<std::uint32_t, int>> facets;  // third vertex, reference
   std::vector<std::uint32_t> domain_old;
-  constexpr std::uint32_t kProbe = 0xFFFFFFFEu;  // m before it exists
   std::vector<NewTetrahedron> fresh;
   double after = 0.0;
   for (const std::uint32_t t : shell) {
@@ -66,7 +113,6 @@ std::uint32_t try_boundary_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b,
         facets.emplace_back(d, mesh.facet_ref(h));
     }
     const auto h1 = substitute(v, b, kProbe), h2 = substitute(v, a, kProbe);
-    if (!positive(mesh, h1, kProbe, pm) || !positive(mesh, h2, kProbe, pm)) return Mesh3::kNone;
     if (mesh.in_domain(t)) {
       domain_old.push_back(t);
       for (const auto w : v)
@@ -81,6 +127,12 @@ std::uint32_t try_boundary_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b,
       after = std::max({after, q(h1), q(h2)});
     }
   }
+  // Longest-edge bisection (Rivara): ab is split only where it is the longest edge of each
+  // constrained facet beside it, so that no facet is cut across its shorter sides into needles
+  // (boundary_split_pass3 comes back to ab once the longer edge is split).
+  const double ab = length_of(mesh, a, b);
+  for (const auto& [d, ref] : facets)
+    if (d != Mesh3::kInfinite && std::max(length_of(mesh, a, d), length_of(mesh, b, d)) > ab) return Mesh3::kNone;
   if (!domain_old.empty() && after > std::max(worst_quality(mesh, domain_old), options.quality_limit))
     return Mesh3::kNone;
   const std::uint32_t m = mesh.add_vertex(pm, mm, static_cast<std::uint8_t>(Mesh3::kOnBoundary | Mesh3::kFixed));
@@ -116,6 +168,21 @@ std::uint32_t try_boundary_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b,
   return m;
 }
 
+std::uint64_t long_constrained_edges(const Mesh3& mesh, double long_length) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (std::uint32_t t = 0; t < mesh.tetrahedron_capacity(); ++t) {
+    if (!mesh.in_domain(t)) continue;
+    const auto v = mesh.tetrahedron(t);
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const auto [a, b] = std::minmax(v[i], v[j]);
+        if (mesh.is_constrained_edge(a, b) && length_of(mesh, a, b) > long_length) edges.emplace_back(a, b);
+      }
+  }
+  std::sort(edges.begin(), edges.end());
+  return static_cast<std::uint64_t>(std::unique(edges.begin(), edges.end()) - edges.begin());
+}
+
 std::uint64_t boundary_split_pass3(Mesh3& mesh, const MetricField3& field, const Split3Options& options) {
   using Item = std::tuple<double, std::uint32_t, std::uint32_t>;
   std::priority_queue<Item, std::vector<Item>, std::less<>> queue;
@@ -132,6 +199,7 @@ std::uint64_t boundary_split_pass3(Mesh3& mesh, const MetricField3& field, const
       for (int j = i + 1; j < 4; ++j) consider(v[i], v[j]);
   }
   std::uint64_t splits = 0;
+  std::vector<std::uint32_t> ball;
   while (!queue.empty()) {  // bounded: each split adds a vertex, max_vertices stops it
     const auto [l, a, b] = queue.top();
     queue.pop();
@@ -141,10 +209,18 @@ std::uint64_t boundary_split_pass3(Mesh3& mesh, const MetricField3& field, const
     const std::uint32_t m = try_boundary_split3(mesh, a, b, field, options);
     if (m == Mesh3::kNone) continue;
     ++splits;
-    consider(a, m);
-    consider(m, b);
+    // The halves, the edges that cut the facets of ab (m to each facet's third vertex), and the
+    // facets' other edges (refused before while ab, longer, was not split).
+    mesh.ball(m, ball);
+    for (const std::uint32_t t : ball) {
+      const auto v = mesh.tetrahedron(t);
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+          if (v[i] != Mesh3::kInfinite && v[j] != Mesh3::kInfinite) consider(v[i], v[j]);
+    }
   }
   return splits;
 }
 
 }  // namespace dtlab
+

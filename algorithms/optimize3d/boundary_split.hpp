@@ -1,4 +1,5 @@
-// Split of a constrained edge (book §9.3.1 with §8.3.6): the boundary part of 3D adaptation.
+// Split of a constrained edge (book §9.3.1 with §8.3.6): the boundary part of 3D adaptation, and
+// the boundary cut in the size by the 3D mesher (algorithms/mesh3d, Mesh3dOptions::keep_boundary).
 #pragma once
 
 #include <cstdint>
@@ -19,8 +20,11 @@ namespace dtlab {
 std::uint32_t try_boundary_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const MetricField3& field,
                                   const Split3Options& options = {});
 
-// Splits every constrained edge longer than long_length, longest first; halves still too long
-// are queued again. At most max_vertices live vertices. Returns the number of splits.
+// Splits every constrained edge longer than long_length, longest first; the halves and the new
+// edges across the split facets, when too long, are queued in turn. At most max_vertices live vertices. Returns the number of splits.
 std::uint64_t boundary_split_pass3(Mesh3& mesh, const MetricField3& field, const Split3Options& options = {});
+
+// The constrained edges of the domain longer than long_length in the metric of their ends.
+std::uint64_t long_constrained_edges(const Mesh3& mesh, double long_length);
 
 }  // namespace dtlab
