@@ -51,12 +51,18 @@ std::vector<Metric> read_size_file(const MeshCliArgs& args, std::size_t vertex_c
 template std::vector<Metric2> read_size_file<Metric2>(const MeshCliArgs&, std::size_t, const std::string&);
 template std::vector<Metric3> read_size_file<Metric3>(const MeshCliArgs&, std::size_t, const std::string&);
 
+void throw_resample_boundary_refused() {
+  throw InputError("--resample-boundary: the boundary is now cut in the size or metric by default (pieces longer than "
+                   "sqrt 2 in it); leave the option out, or give --keep-boundary to keep the input's");
+}
+
 namespace {
 
 int run_mesh(const MeshCliArgs& args) {
   if (is_surface_input(args.input)) {  // a closed surface: the 3D mesher (apps/mesh3.cpp)
     return run_mesh3(args);
   }
+  if (args.resample_boundary) throw_resample_boundary_refused();
   if (args.threads != 1) throw InputError("--threads: the 2D mesher is sequential (give --threads 1 or leave it out)");
   if (args.insertion_regions != 1)
     throw InputError("--insertion-regions: the 2D mesher inserts one point after the other (give 1 or leave it out)");
@@ -86,10 +92,11 @@ int run_mesh(const MeshCliArgs& args) {
   Mesh2dOptions options;
   options.method = args.method;
   options.optimize = !args.no_optimize;
-  options.resample_boundary = args.resample_boundary;
-  if (args.resample_boundary && given == 0)
-    throw InputError("--resample-boundary needs a size (--size, --size-map or --metric): the classical sizes come from the "
-                     "boundary itself");
+  options.keep_boundary = args.keep_boundary;
+  options.max_elements = args.max_elements;
+  if (args.keep_boundary && given == 0)
+    throw InputError("--keep-boundary needs a size (--size, --size-map or --metric): with the classical sizes, which come "
+                     "from the boundary itself, it is always kept");
   options.first_number = graph.first_number;
   options.interpolation = args.interpolation == "log-euclidean" ? MetricInterpolation::LogEuclidean : MetricInterpolation::Sizes;
   std::optional<ControlSpace2> control;
@@ -137,7 +144,8 @@ int run_mesh(const MeshCliArgs& args) {
     json << "{\"input\":" << json_string(args.input) << ",\"method\":" << json_string(args.method)
          << ",\"points\":" << s.input_points << ",\"segments\":" << s.segments
          << ",\"vertices\":" << result.output.vertices.size() << ",\"triangles\":" << result.output.triangles.size()
-         << ",\"boundary_points\":" << s.boundary_points << ",\"field_points\":" << s.field_points << ",\"filtered\":" << s.filtered
+         << ",\"boundary_points\":" << s.boundary_points << ",\"long_boundary_segments\":" << s.long_boundary_segments
+         << ",\"estimated_triangles\":" << json_number(s.estimated_triangles) << ",\"field_points\":" << s.field_points << ",\"filtered\":" << s.filtered
          << ",\"not_inserted\":" << s.not_inserted << ",\"passes\":" << s.passes
          << ",\"cavity_corrections\":" << s.cavity_corrections << ",\"swaps\":" << s.swaps
          << ",\"relocations\":" << s.relocations << ",\"collapses\":" << s.collapses << ",\"splits\":" << s.splits
@@ -176,8 +184,15 @@ void add_mesh(CLI::App& app) {
   cmd->add_option("--interpolation", args->interpolation, "Metric interpolation: sizes (default) or log-euclidean")
       ->check(CLI::IsMember({"sizes", "log-euclidean"}));
   cmd->add_option("--output-metric", args->output_metric, "Write the metric at the output vertices (Medit .sol)");
-  cmd->add_flag("--resample-boundary", args->resample_boundary,
-                "Cut the input segments anew in the size or metric given (default: they are the boundary discretisation)");
+  cmd->add_flag("--keep-boundary", args->keep_boundary,
+                "Keep the input segments (2D) or surface triangles (3D) as given; by default, with a size or metric, "
+                "those longer than sqrt 2 in it are cut (the count of those kept long is said on stderr)");
+  cmd->add_flag("--resample-boundary", args->resample_boundary, "Former option: the boundary is now cut by default")
+      ->group("");
+  cmd->add_option("--max-elements", args->max_elements,
+                  "Refuse, before any work, a size or metric that asks for more elements than this (estimated from "
+                  "the metric's complexity; default: half this machine's memory at the bytes an element costs)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 48));
   cmd->add_flag("--no-optimize", args->no_optimize, "Skip the optimization step");
   cmd->add_flag("--no-remesh", args->no_remesh,
                 "Surfaces: after the optimization, do not mesh again the regions around the tetrahedra still below "

@@ -71,8 +71,10 @@ int run_mesh3(const MeshCliArgs& args) {
   if ((!args.size_map.empty() || !args.metric.empty()) && args.background.empty())
     throw InputError("for a volume, --size-map and --metric need --background B.mesh (a tetrahedral mesh holding their "
                      "vertices)");
-  if (args.resample_boundary)
-    throw InputError("--resample-boundary is for 2D domains: a surface is meshed as given");
+  if (args.resample_boundary) throw_resample_boundary_refused();
+  if (args.keep_boundary && given == 0)
+    throw InputError("--keep-boundary needs a size (--size, --size-map or --metric): with the classical sizes, which come "
+                     "from the surface itself, it is always kept");
 
   StagedOutputs outputs({args.output, args.output_metric});
   FacetTriangulationOptions facet_options;
@@ -88,6 +90,8 @@ int run_mesh3(const MeshCliArgs& args) {
   options.insertion_regions = args.insertion_regions;
   options.optimization = optimize3d_effort(args.optimize);
   options.remove_cavities = args.remove_cavities;
+  options.keep_boundary = args.keep_boundary;
+  options.max_elements = args.max_elements;
   const MetricInterpolation mode =
       args.interpolation == "log-euclidean" ? MetricInterpolation::LogEuclidean : MetricInterpolation::Sizes;
   std::optional<ControlSpace3> control;
@@ -143,6 +147,8 @@ int run_mesh3(const MeshCliArgs& args) {
     json << "{\"input\":" << json_string(args.input) << ",\"dim\":3,\"method\":" << json_string(args.method)
          << ",\"points\":" << s.input_points << ",\"input_triangles\":" << s.input_triangles
          << ",\"steiner_points\":" << s.steiner_points << ",\"empty_mesh_tetrahedra\":" << s.empty_mesh_tetrahedra
+         << ",\"boundary_points\":" << s.boundary_points << ",\"long_boundary_edges\":" << s.long_boundary_edges
+         << ",\"estimated_tetrahedra\":" << json_number(s.estimated_tetrahedra)
          << ",\"vertices\":" << result.output.vertices.size() << ",\"tetrahedra\":" << result.output.tetrahedra.size()
          << ",\"triangles\":" << result.output.triangles.size() << ",\"field_points\":" << s.field_points
          << ",\"filtered\":" << s.filtered << ",\"not_inserted\":" << s.not_inserted << ",\"passes\":" << s.passes

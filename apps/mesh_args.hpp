@@ -18,7 +18,10 @@ struct MeshCliArgs {
   std::string size_map, metric, background;
   std::string method = "edge";
   std::string interpolation = "sizes";
-  bool no_optimize = false, stats = false, verify = false, resample_boundary = false;
+  bool no_optimize = false, stats = false, verify = false;
+  bool keep_boundary = false;      // Mesh2dOptions / Mesh3dOptions::keep_boundary
+  bool resample_boundary = false;  // the former option, now the default: refused with a hint
+  std::uint64_t max_elements = 0;  // Mesh2dOptions / Mesh3dOptions::max_elements (0: from the memory)
   bool no_remesh = false;               // surfaces: Mesh3dOptions::local_remesh off
   bool remove_cavities = false;         // surfaces: Mesh3dOptions::remove_cavities
   std::string optimize = "standard";    // surfaces: the effort, optimize3d_effort (optimize3d.hpp)
@@ -35,6 +38,9 @@ struct MeshCliArgs {
 // checked to be of that kind and dimension. Metric2 or Metric3.
 template <class Metric>
 std::vector<Metric> read_size_file(const MeshCliArgs& args, std::size_t vertex_count, const std::string& against);
+
+// --resample-boundary, given: the InputError that says it is the default now.
+[[noreturn]] void throw_resample_boundary_refused();
 
 // The 3D path: returns the exit status (0 success, 3 --verify failed); InputError for bad input.
 int run_mesh3(const MeshCliArgs& args);

@@ -41,7 +41,7 @@ Two tables, and optionally a third:
            there (the table says so).
   aniso    (--aniso) dtlab on the analytic fields of data/make_mesh2d_examples.py (UGAWG's linear
            and polar-1 layers, h0 = 10^-3) given on data/unit_square_bg.mesh, with
-           --resample-boundary; FreeFem++ adaptmesh (BAMG) of the same fields after six cycles each
+           the boundary cut in the metric (the default); FreeFem++ adaptmesh (BAMG) of the same fields after six cycles each
            re-evaluating the analytic field on its own mesh. Measured by `dtlab quality --metric`:
            share of edges of metric length l = (la - lb)/ln(la/lb) in [1/sqrt2, sqrt2], worst and
            mean mean-ratio quality (1 = equilateral) in the metric, worst Q_K; once with the
@@ -414,7 +414,7 @@ def measure_aniso(args, exe, records, save):
             if tool.startswith("dtlab"):
                 out = f"{tool.split()[1]}_{name}.mesh"
                 cmd = [exe["dtlab"], "mesh", os.path.join(data, "unit_square.poly"), "--metric", sol,
-                       "--background", bg, "--resample-boundary", "--method", tool.split()[1], "-o", out, "--stats"]
+                       "--background", bg, "--method", tool.split()[1], "-o", out, "--stats"]
                 kind = "dtlab"
             else:
                 out = f"freefem_{name}.mesh"
@@ -654,7 +654,7 @@ def markdown(data):
     if any(r["table"] == "aniso" for r in records):
         body, notes = aniso_table(records, runs)
         parts += ["**Anisotropic** (unit square; UGAWG linear and polar-1 layers, h0 = 10^-3; dtlab from the field "
-                  "on `data/unit_square_bg.mesh` with `--resample-boundary`, one generation, no adaptation cycles; FreeFem++ adaptmesh: six "
+                  "on `data/unit_square_bg.mesh` with the boundary cut in the metric (the default), one generation, no adaptation cycles; FreeFem++ adaptmesh: six "
                   "cycles from square(10, 10), each re-evaluating the analytic field on its mesh). \"exact\": the "
                   "analytic field at the output's vertices; \"background\": `--metric data/*_layer.sol "
                   "--background data/unit_square_bg.mesh` (the 50 × 50 grid's values interpolated):", "", body, ""]

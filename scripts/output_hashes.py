@@ -8,7 +8,7 @@ that two binaries (before and after) compare with `diff`:
               data/schonhardt.off (scripts/run-main.sh's runs)
   mesh2d      the benchmark's square minus a disc at h = 0.01 (scripts/bench_mesh2d.py's domain),
               edge and front, with and without optimization; the anisotropic cases (UGAWG linear
-              and polar layers on data/unit_square_bg.mesh, --resample-boundary), edge and front
+              and polar layers on data/unit_square_bg.mesh, boundary cut in the metric), edge and front
   mesh3d      the benchmark's cube minus a ball (Gmsh's surface at H, scripts/bench_mesh3d.py's
               geometry): `mesh --size H --remove-cavities`, and with --optimize thorough
   optimize    `dtlab optimize` on TetGen's `-pq1.414 -a` mesh of that surface (its .ele), and on
@@ -100,7 +100,7 @@ def jobs(dtlab, inputs, h3):
         for layer in ("linear", "polar"):
             out.append((f"mesh2d-{m}-{layer}.mesh",
                         ["mesh", f"{DATA}/unit_square.poly", "--metric", f"{DATA}/{layer}_layer.sol", "--background",
-                         f"{DATA}/unit_square_bg.mesh", "--resample-boundary", "--method", m]))
+                         f"{DATA}/unit_square_bg.mesh", "--method", m]))
     surface = os.path.join(inputs, "surface.mesh")
     out.append(("mesh3d.mesh", ["mesh", surface, "--size", str(h3), "--remove-cavities"]))
     out.append(("mesh3d-thorough.mesh", ["mesh", surface, "--size", str(h3), "--remove-cavities", "--optimize",

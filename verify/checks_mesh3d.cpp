@@ -10,6 +10,7 @@
 #include "kernel/predicates.hpp"
 #include "mesh/tetrahedralization3.hpp"
 #include "verify/checks_constrained3d.hpp"
+#include "verify/surface_tiles3.hpp"
 
 namespace dtlab {
 
@@ -25,6 +26,7 @@ ReportCounts counts_of(const MeshCheckReport3& r) {
           {"boundary_facets", r.boundary_facets},
           {"identical_triangles", r.identical_triangles},
           {"piece_triangles", r.piece_triangles},
+          {"tile_triangles", r.tile_triangles},
           {"regions", r.regions}};
 }
 
@@ -174,14 +176,37 @@ MeshCheckReport3 check_mesh3d(const ConstrainedInput3& input, const Constrained3
     return it != piece_keys.end() && !less_points(pts, it->first) ? it->second : 0xFFFFFFFFu;
   };
   std::vector<std::uint8_t> piece_seen(cdt.triangles.size(), 0);
+  // Output triangles that are no piece: tiles of one (the surface cut in the size), placed in it.
+  std::vector<std::uint32_t> tile_ids;
+  std::vector<std::array<std::uint32_t, 3>> tiles;
+  for (const auto& [key, k] : triangle_keys) {
+    const auto& f = out.triangles[k];
+    if (find_piece(sorted_points(out.vertices[f[0]], out.vertices[f[1]], out.vertices[f[2]])) == 0xFFFFFFFFu) {
+      tile_ids.push_back(k);
+      tiles.push_back(f);
+    }
+  }
+  const std::vector<std::uint32_t> tile_piece = locate_tiles(cdt.vertices, cdt.triangles, out.vertices, tiles);
+  std::vector<double> covered(cdt.triangles.size(), 0.0);
+  for (std::size_t i = 0; i < tiles.size(); ++i) {
+    const std::uint32_t k = tile_ids[i], piece = tile_piece[i];
+    if (piece == kNoPiece) {
+      r.add_problem("triangle " + name(k) + " is no input triangle nor a piece of one, nor inside one");
+      continue;
+    }
+    const auto& f = tiles[i];
+    covered[piece] += triangle_area(out.vertices[f[0]], out.vertices[f[1]], out.vertices[f[2]]);
+    ++r.tile_triangles;
+    const int ref = out.triangle_refs.empty() ? 0 : out.triangle_refs[k];
+    if (cdt.triangle_refs[piece] != ref)
+      r.add_problem("triangle " + name(k) + " has reference " + std::to_string(ref) + ", its input triangle " +
+                    name(cdt.triangle_face[piece]) + " " + std::to_string(cdt.triangle_refs[piece]));
+  }
   for (const auto& [key, k] : triangle_keys) {
     const auto& f = out.triangles[k];
     const int ref = out.triangle_refs.empty() ? 0 : out.triangle_refs[k];
     const std::uint32_t piece = find_piece(sorted_points(out.vertices[f[0]], out.vertices[f[1]], out.vertices[f[2]]));
-    if (piece == 0xFFFFFFFFu) {
-      r.add_problem("triangle " + name(k) + " is no input triangle nor a piece of one");
-      continue;
-    }
+    if (piece == 0xFFFFFFFFu) continue;  // a tile, placed above
     piece_seen[piece] = 1;
     const std::uint32_t face = cdt.triangle_face[piece];
     const auto& g = input.triangles[face];
@@ -202,10 +227,21 @@ MeshCheckReport3 check_mesh3d(const ConstrainedInput3& input, const Constrained3
       }
     std::sort(domain_facets.begin(), domain_facets.end());
     for (std::uint32_t k = 0; k < cdt.triangles.size(); ++k) {
-      if (piece_seen[k]) continue;
       const auto& f = cdt.triangles[k];
-      if (std::binary_search(domain_facets.begin(), domain_facets.end(), sorted_facet(f[0], f[1], f[2]).first))
-        r.add_problem("piece " + name(k) + " of input triangle " + name(cdt.triangle_face[k]) + " is not an output triangle");
+      const double area = triangle_area(cdt.vertices[f[0]], cdt.vertices[f[1]], cdt.vertices[f[2]]);
+      if (piece_seen[k]) {
+        if (covered[k] > 0.0)
+          r.add_problem("piece " + name(k) + " of input triangle " + name(cdt.triangle_face[k]) +
+                        " is an output triangle and holds other output triangles");
+        continue;
+      }
+      if (!std::binary_search(domain_facets.begin(), domain_facets.end(), sorted_facet(f[0], f[1], f[2]).first)) continue;
+      // Tiled: the output triangles inside it cover its area (sums in doubles: relative 1e-9).
+      if (covered[k] > 0.0 && std::fabs(covered[k] - area) <= 1e-9 * area) continue;
+      r.add_problem("piece " + name(k) + " of input triangle " + name(cdt.triangle_face[k]) +
+                    (covered[k] > 0.0 ? " is covered by output triangles over " + std::to_string(covered[k]) + " of its area " +
+                                            std::to_string(area)
+                                      : " is not an output triangle"));
     }
   }
 

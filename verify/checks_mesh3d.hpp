@@ -9,7 +9,10 @@
 //    checked exactly (verify/checks_constrained3d.hpp: its pieces triangulate the input triangles
 //    exactly, its Steiner points within their rounding bounds); every output triangle is one of
 //    its pieces (the same three points: the input triangle itself, or a piece where recovery put
-//    Steiner points) with its reference, and every piece beside the domain is an output triangle;
+//    Steiner points) with its reference, or a tile of one (the surface cut in the size: its
+//    vertices on the piece's plane within the rounding of its cut points, surface_tiles3.hpp, its
+//    centroid inside it) with its reference; every piece beside the domain is an output
+//    triangle or covered by its tiles (their areas sum to its area, relative 1e-9);
 //  - regions: the volume of each reference equals that region's volume in the input's recovered
 //    tetrahedralization (relative 1e-9 of the whole volume: sums in doubles; exact coverage
 //    follows from conformity with the boundary identical), the same set of references;
@@ -30,6 +33,7 @@ struct MeshCheckReport3 : ProblemReport {
   std::size_t vertices = 0, tetrahedra = 0, triangles = 0, interior_facets = 0, boundary_facets = 0;
   std::size_t identical_triangles = 0;  // output triangles equal to an input triangle
   std::size_t piece_triangles = 0;      // output triangles strictly inside one (Steiner points)
+  std::size_t tile_triangles = 0;       // output triangles inside a piece (the surface cut in the size)
   std::size_t regions = 0;
   double volume = 0.0, domain_volume = 0.0;
   QualityReport quality;  // recomputed from the output (with `metrics` when given)

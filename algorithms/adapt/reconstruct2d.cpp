@@ -214,7 +214,6 @@ Reconstruct2dResult reconstruct2d(const MeshData2& previous, const ControlSpace2
   o.method = options.method;
   o.control = &control;
   o.interpolation = options.interpolation;
-  o.resample_boundary = true;
   o.interrupt = options.interrupt;
   result.generated = mesh2d(input, o);
   result.segments = segments.size();

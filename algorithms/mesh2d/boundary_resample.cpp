@@ -17,7 +17,8 @@ namespace dtlab {
 namespace {
 
 constexpr double kStepLength = 0.2;           // metric length of one integration step at most
-constexpr std::uint32_t kMaxSamples = 1u << 20;  // per segment
+constexpr std::uint32_t kMaxSamples = 1u << 22;  // per segment
+constexpr double kLongLength = 1.4142135623730951;  // sqrt 2
 
 }  // namespace
 
@@ -32,30 +33,42 @@ ResampledBoundary resample_boundary(const Mesh2dInput& input, const ControlSpace
     const int marker = s < input.segment_markers.size() ? input.segment_markers[s] : 0;
     const Vec2 pa = input.points[a], pb = input.points[b];
     const Vec2 ab = pb - pa;
-    // Refine the sampling until each step is short in the metric.
-    t = {0.0, 1.0};
-    m = {control.metric_at(pa, hint), control.metric_at(pb, hint)};
-    for (std::size_t i = 0; i + 1 < t.size();) {
-      const double l = edge_length(pa + t[i] * ab, m[i], pa + t[i + 1] * ab, m[i + 1]);
-      if (l <= kStepLength || t.size() >= kMaxSamples || t[i + 1] - t[i] < 1e-15) {
+    // Refine the sampling until each step is short in the metric: intervals bisected depth
+    // first, left half first, so the samples come out in order (linear in their number).
+    t = {0.0};
+    m = {control.metric_at(pa, hint)};
+    struct Interval {
+      double t0, t1;
+      Metric2 m1;
+    };
+    std::vector<Interval> stack{{0.0, 1.0, control.metric_at(pb, hint)}};
+    while (!stack.empty()) {
+      const Interval iv = stack.back();
+      stack.pop_back();
+      const double l = edge_length(pa + iv.t0 * ab, m.back(), pa + iv.t1 * ab, iv.m1);
+      const double mid = 0.5 * (iv.t0 + iv.t1);
+      if (l <= kStepLength || mid <= iv.t0 || mid >= iv.t1) {
         if (t.size() >= kMaxSamples) {
           throw InputError("mesh2d: segment " + std::to_string(s + options.first_number) + " needs more than " +
                                std::to_string(kMaxSamples) + " samples to measure in the metric (is the size that small?)",
                            {s});
         }
-        ++i;
+        t.push_back(iv.t1);
+        m.push_back(iv.m1);
         continue;
       }
-      const double mid = 0.5 * (t[i] + t[i + 1]);
-      t.insert(t.begin() + static_cast<std::ptrdiff_t>(i) + 1, mid);
-      m.insert(m.begin() + static_cast<std::ptrdiff_t>(i) + 1, control.metric_at(pa + mid * ab, hint));
+      stack.push_back({mid, iv.t1, iv.m1});
+      stack.push_back({iv.t0, mid, control.metric_at(pa + mid * ab, hint)});
     }
     length.assign(t.size(), 0.0);
     for (std::size_t i = 1; i < t.size(); ++i) {
       length[i] = length[i - 1] + edge_length(pa + t[i - 1] * ab, m[i - 1], pa + t[i] * ab, m[i]);
     }
     const double total = length.back();
-    const std::uint32_t n = static_cast<std::uint32_t>(std::max(1.0, std::round(total)));
+    // Pieces of length close to 1, none longer than sqrt 2; a segment no longer than that is kept.
+    const bool long_segment = total > kLongLength;
+    out.long_segments += long_segment;
+    const std::uint32_t n = long_segment ? static_cast<std::uint32_t>(std::max(std::round(total), std::ceil(total / kLongLength))) : 1;
     if (out.points.size() + n > options.max_vertices) {
       throw InputError("mesh2d: the boundary needs more than the vertex bound of " + std::to_string(options.max_vertices) + " points");
     }

@@ -1,10 +1,12 @@
 // The 2D mesher's pipeline (mesh2d.hpp): empty mesh, control space, field points, optimization.
 #include "algorithms/mesh2d/mesh2d.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <span>
 #include <string>
 
+#include "algorithms/common/element_estimate.hpp"
 #include "algorithms/common/mesh_pipeline.hpp"
 #include "algorithms/mesh2d/registry.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
@@ -77,12 +79,34 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
     classical = std::make_unique<ControlSpace2>(classical_control_space(result.mesh));
   }
   const ControlSpace2& control = options.control ? *options.control : *classical;
-  if (options.resample_boundary && (options.control || !options.input_metrics.empty())) {
-    // The boundary cut in the metric, then the empty mesh of the new boundary (the control space
-    // stays the one built on the input).
-    const ResampledBoundary boundary = resample_boundary(input, control, options);
-    result.stats.boundary_points = boundary.points.size() - input.points.size();
-    result.mesh = build_empty_mesh(boundary.points, boundary.segments, boundary.markers);
+  // The options the later steps run with: the vertex bound lowered to the element limit.
+  Mesh2dOptions bounded = options;
+  const bool sized = options.control || !options.input_metrics.empty();
+  if (sized) {
+    // The work the size asks for, estimated before any point is made (element_estimate.hpp).
+    const std::uint64_t limit = options.max_elements
+                                    ? options.max_elements
+                                    : element_estimate::default_max_elements(element_estimate::kBytesPerTriangle);
+    std::uint32_t hint = ControlSpace2::kNoHint;
+    const element_estimate::Estimate estimate =
+        element_estimate::estimate_elements(result.mesh, [&](const Vec2& p) { return control.metric_at(p, hint); });
+    result.stats.estimated_triangles = estimate.elements;
+    element_estimate::check_limit("mesh2d", estimate.elements, limit, "triangles", estimate.detail());
+    bounded.max_vertices = std::min<std::uint64_t>(options.max_vertices, limit + input.points.size());
+    // The boundary cut in the metric where it is longer than sqrt 2, then the empty mesh of the
+    // new boundary (the control space stays the one built on the input).
+    const ResampledBoundary boundary = resample_boundary(input, control, bounded);
+    if (options.keep_boundary) {
+      result.stats.long_boundary_segments = boundary.long_segments;
+      if (boundary.long_segments > 0) {
+        result.messages.push_back(std::to_string(boundary.long_segments) +
+                                  " input segment(s) longer than sqrt 2 in the metric kept as given (keep the boundary): "
+                                  "the triangles beside them are as long");
+      }
+    } else if (boundary.long_segments > 0) {
+      result.stats.boundary_points = boundary.points.size() - input.points.size();
+      result.mesh = build_empty_mesh(boundary.points, boundary.segments, boundary.markers);
+    }
   }
   mesh_pipeline::assign_vertex_metrics(result.mesh, control);
   result.stats.seconds_control_space = seconds_since(phase);
@@ -90,7 +114,7 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
 
   // 3.+4. Field points and their insertion.
   phase = mesh_pipeline::Clock::now();
-  method.run(result.mesh, control, options, result.stats);
+  method.run(result.mesh, control, bounded, result.stats);
   result.stats.seconds_field_points = seconds_since(phase);
 
   // 5. Optimization.

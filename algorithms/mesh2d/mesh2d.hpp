@@ -53,9 +53,12 @@ struct Mesh2dOptions {
   MetricInterpolation interpolation = MetricInterpolation::Sizes;
   bool optimize = true;
   Optimize2dOptions optimization;  // step 5 (algorithms/optimize2d)
-  // Cut the input segments anew in the metric (boundary_resample.cpp) instead of taking them as
-  // the boundary discretisation; not in the classical case, whose sizes come from them.
-  bool resample_boundary = false;
+  // With a size or metric given, the input segments longer than sqrt 2 in the metric are cut
+  // anew in it (boundary_resample.cpp), so that the size holds on the boundary too and a domain
+  // with no interior edge is still refined; keep_boundary keeps them as given (the mesh's quality
+  // near a long segment is then that segment's: `messages` counts them). Not in the classical
+  // case, whose sizes come from the segments themselves.
+  bool keep_boundary = false;
   // A field point closer than this (metric length, in the metric at the point) to a vertex that
   // would become its neighbour is filtered out.
   double filter_distance = 0.7;
@@ -65,6 +68,11 @@ struct Mesh2dOptions {
   // in all (a multiple of the input's points plus an absolute floor).
   std::uint32_t max_passes = 200;
   std::uint64_t max_vertices = 200'000'000;
+  // The triangles the size or metric may ask for, estimated before any is made from the metric's
+  // complexity (algorithms/common/element_estimate.hpp): past it, InputError with the estimate,
+  // and the vertex bound is lowered to it. 0: half this machine's memory at
+  // element_estimate::kBytesPerTriangle. Not checked in the classical case.
+  std::uint64_t max_elements = 0;
   // Numbering of points and segments in messages (the input file's: Medit 1, .poly its own).
   std::uint32_t first_number = 0;
   // Asked between the phases and at each pass of the field point loop (kernel/interrupt.hpp);
@@ -81,7 +89,9 @@ struct Mesh2dStats {
   std::uint64_t not_inserted = 0;          // candidates outside the domain or on an edge that cannot open
   std::uint64_t cavity_corrections = 0;    // triangles taken out of cavities (star-shapedness, §2.6.3)
   std::uint64_t input_points = 0, segments = 0;
-  std::uint64_t boundary_points = 0;  // cut points added by resample_boundary
+  std::uint64_t boundary_points = 0;  // cut points added on the input segments
+  std::uint64_t long_boundary_segments = 0;  // kept longer than sqrt 2 in the metric (keep_boundary)
+  double estimated_triangles = 0;            // the up-front estimate (0 in the classical case)
   // Optimization counts (algorithms/optimize2d), filled when it ran.
   std::uint64_t swaps = 0, relocations = 0, collapses = 0, splits = 0;
   std::uint32_t optimization_rounds = 0;
@@ -112,11 +122,14 @@ ControlSpace2 classical_control_space(const Mesh2& empty);
 // the crossing points after them interpolate their constrained neighbours' metrics.
 ControlSpace2 input_control_space(const Mesh2& empty, std::span<const Metric2> metrics, MetricInterpolation mode);
 // The boundary cut in the metric: the input points first, then the cut points; every input segment
-// replaced by its sub-segments, in order, with its marker.
+// longer than sqrt 2 in the metric replaced by sub-segments of length close to 1 (at most sqrt 2),
+// in order, with its marker; the shorter ones kept. `long_segments` counts the segments longer
+// than sqrt 2 (those cut).
 struct ResampledBoundary {
   std::vector<Vec2> points;
   std::vector<std::array<std::uint32_t, 2>> segments;
   std::vector<int> markers;
+  std::uint64_t long_segments = 0;
 };
 ResampledBoundary resample_boundary(const Mesh2dInput& input, const ControlSpace2& control, const Mesh2dOptions& options);
 // 3.+4. The edge method: field points inserted until saturation. Adds to `stats`.

@@ -205,6 +205,13 @@ bool remesh_region(Mesh3& mesh, const Region& r, const MetricField3& field, cons
   mesher.control = &inner;
   mesher.max_vertices = 1000 + 100 * points.size();
   mesher.local_remesh = false;  // (one level: a region's own small angles stay)
+  mesher.keep_boundary = true;  // the region's surface is the mesh around it
+  mesher.max_elements = kNoElementLimit;  // bounded by max_vertices above
+  // A region whose surface needs a Steiner point is left as it is (checked below): the recovery
+  // stops at the first one instead of spending up to 200 per point on a result that is refused
+  // (a surface cut in the size is coplanar only to within its cut points' rounding, and its
+  // recovery can need thousands).
+  mesher.steiner_limit_factor = 0;
   ++stats.tried;
   stats.work += r.tetrahedra.size();
   Mesh3dResult result;

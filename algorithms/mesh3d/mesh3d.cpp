@@ -2,13 +2,17 @@
 // optimization, domain output.
 #include "algorithms/mesh3d/mesh3d.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 
+#include "algorithms/common/element_estimate.hpp"
 #include "algorithms/common/mesh_pipeline.hpp"
 #include "algorithms/mesh3d/local_remesh.hpp"
 #include "algorithms/mesh3d/registry.hpp"
 #include "algorithms/mesh3d/spatial_renumber.hpp"
+#include "algorithms/optimize3d/boundary_split.hpp"
 #include "kernel/error.hpp"
 
 namespace dtlab {
@@ -60,12 +64,57 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   if (!options.control) classical = std::make_unique<ControlSpace3>(classical_control_space(result.mesh));
   const ControlSpace3& control = options.control ? *options.control : *classical;
   mesh_pipeline::assign_vertex_metrics(result.mesh, control);
+  // The options the later steps run with: the vertex bound lowered to the element limit.
+  Mesh3dOptions bounded = options;
+  if (options.control) {
+    // The work the size asks for, estimated before any point is made (element_estimate.hpp).
+    if (options.max_elements != kNoElementLimit) {
+      const std::uint64_t limit = options.max_elements
+                                      ? options.max_elements
+                                      : element_estimate::default_max_elements(element_estimate::kBytesPerTetrahedron);
+      std::uint32_t hint = ControlSpace3::kNoHint;
+      const element_estimate::Estimate estimate =
+          element_estimate::estimate_elements(result.mesh, [&](const Vec3& p) { return control.metric_at(p, hint); });
+      result.stats.estimated_tetrahedra = estimate.elements;
+      element_estimate::check_limit("mesh3d", estimate.elements, limit, "tetrahedra", estimate.detail());
+      bounded.max_vertices = std::min<std::uint64_t>(options.max_vertices, limit / 3 + input.points.size());
+    }
+    // The surface cut in the size: its constrained edges longer than sqrt 2, split longest first
+    // whatever the quality of the empty mesh's tetrahedra around them (those are meshed again).
+    if (!options.keep_boundary) {
+      // The empty mesh's flat tetrahedra in the domain (between boundary facets coplanar up to
+      // rounding: a rotated box's faces) swapped away first: split, each would become many, all
+      // of them boundary-bound where the optimization cannot reach them.
+      swap_pass3(result.mesh);
+      std::uint32_t field_hint = 0;
+      const MetricField3 field = mesh_pipeline::metric_field<MetricField3>(control, field_hint);
+      Split3Options split;
+      split.long_length = options.split_length;
+      split.short_length = 0.0;
+      split.quality_limit = HUGE_VAL;
+      split.max_vertices = bounded.max_vertices;
+      result.stats.boundary_points = boundary_split_pass3(result.mesh, field, split);
+      swap_pass3(result.mesh);  // and the flat tetrahedra the cut made between such facets
+      if (result.mesh.live_vertex_count() >= bounded.max_vertices) {
+        throw InputError("mesh3d: the surface cut in the size reached the vertex bound of " +
+                         std::to_string(bounded.max_vertices) + " (max_vertices, max_elements)");
+      }
+    }
+    result.stats.long_boundary_edges = long_constrained_edges(result.mesh, options.split_length);
+    if (result.stats.long_boundary_edges > 0) {
+      result.messages.push_back(std::to_string(result.stats.long_boundary_edges) + " surface edge(s) longer than sqrt 2 " +
+                                (options.keep_boundary ? "in the metric kept as given (keep the boundary)"
+                                                       : "in the metric could not be split (beside a flat tetrahedron, "
+                                                         "or the longest edge of a facet that could not)") +
+                                ": the tetrahedra beside them are as long");
+    }
+  }
   result.stats.seconds_control_space = seconds_since(phase);
   poll_interrupt(options.interrupt, "mesh3d: after the control space");
 
   // 3.+4. Field points and their insertion.
   phase = mesh_pipeline::Clock::now();
-  method.run(result.mesh, control, options, result.stats);
+  method.run(result.mesh, control, bounded, result.stats);
   result.stats.seconds_field_points = seconds_since(phase);
 
   // 5. Optimization, on the mesh renumbered for locality (spatial_renumber.hpp).
@@ -103,3 +152,4 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
 }
 
 }  // namespace dtlab
+

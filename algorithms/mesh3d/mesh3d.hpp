@@ -38,6 +38,8 @@ template <class Entry>
 class Registry;  // algorithms/common/registry.hpp
 struct FieldPointMethod3;  // registry.hpp
 
+inline constexpr std::uint64_t kNoElementLimit = ~std::uint64_t{0};
+
 struct Mesh3dOptions {
   // Field point placement: "edge" (the edge method, §7.5-§7.7). The advancing-front placement
   // of §7.8 is not implemented in 3D yet: "front" is refused by name. A name from
@@ -73,9 +75,21 @@ struct Mesh3dOptions {
   // points one after the other in Hilbert order.
   std::uint32_t insertion_regions = 1;
   std::uint32_t insertion_region_points = 4096;
+  // With a size or metric given, the constrained edges of the surface longer than sqrt 2 in it are
+  // split first (optimize3d/boundary_split.hpp, longest first: the surface triangles are cut by
+  // their edge midpoints), so that the size holds on the boundary too and a domain with no
+  // interior edge is still refined; keep_boundary keeps the surface as given (`messages` counts
+  // its long edges). Not in the classical case, whose sizes come from the surface itself.
+  bool keep_boundary = false;
   // Bounds, each with a named error when reached.
   std::uint32_t max_passes = 200;
   std::uint64_t max_vertices = 50'000'000;
+  // The tetrahedra the size or metric may ask for, estimated before any point is made from the
+  // metric's complexity (algorithms/common/element_estimate.hpp): past it, InputError with the
+  // estimate, and the vertex bound is lowered to a third of it. 0: half this machine's memory at
+  // element_estimate::kBytesPerTetrahedron; kNoElementLimit: no estimate (local_remesh.hpp's
+  // regions, bounded by max_vertices alone). Not checked in the classical case.
+  std::uint64_t max_elements = 0;
   // Boundary recovery's Steiner bound (Constrained3dOptions::steiner_limit_factor).
   std::uint32_t steiner_limit_factor = 200;
   // Asked between the phases and at each pass of the field point loop (kernel/interrupt.hpp);
@@ -98,6 +112,9 @@ struct Mesh3dStats {
   std::uint64_t input_points = 0, input_triangles = 0;
   std::uint64_t steiner_points = 0;  // added by the boundary recovery
   std::uint64_t empty_mesh_tetrahedra = 0;
+  std::uint64_t boundary_points = 0;       // surface edges split in the size (keep_boundary off)
+  std::uint64_t long_boundary_edges = 0;   // surface edges left longer than sqrt 2 in the metric
+  double estimated_tetrahedra = 0;         // the up-front estimate (0 in the classical case)
   // Optimization counts (algorithms/optimize3d), filled when it ran.
   std::uint64_t face_swaps = 0, shell_transformations = 0, relocations = 0, collapses = 0, splits = 0;
   std::uint32_t optimization_rounds = 0;

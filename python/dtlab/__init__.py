@@ -218,7 +218,7 @@ def constrain(points, segments=None, *, triangles=None, markers=None, holes=None
 
 def mesh(points, segments, *, markers=None, holes=None, regions=None, size=None, metric=None,
          background=None, method: str = "edge", interpolation: str = "sizes", optimize: bool = True,
-         resample_boundary: bool = False, verify: bool = False) -> Mesh:
+         keep_boundary: bool = False, max_elements: int = 0, verify: bool = False) -> Mesh:
     """A 2D mesh of the domain bounded by ``segments`` (the boundary discretisation), governed by
 
     * nothing: the classical sizes, from the boundary discretisation;
@@ -230,14 +230,18 @@ def mesh(points, segments, *, markers=None, holes=None, regions=None, size=None,
     ``method``: ``"edge"`` (the edge method) or ``"front"`` (advancing front). The result has the
     domain's triangles with their regions, the boundary edges with their markers, and
     ``point_data["metric"]``. ``verify``: exact check into ``mesh.stats["verify"]``.
+
+    With a size or metric, the segments longer than sqrt 2 in it are cut anew (``keep_boundary``
+    keeps them as given). ``max_elements``: refuse, before any work, a size or metric that asks
+    for more triangles (0: half this machine's memory at the bytes a triangle costs).
     """
     bp = bt = None
     if background is not None:
         bp, bt = background
     return _mesh(_dtlab.mesh(points, segments, markers=markers, holes=holes, regions=regions, size=_size(size),
                              metric=metric, background_points=bp, background_triangles=bt, method=method,
-                             interpolation=interpolation, optimize=optimize, resample_boundary=resample_boundary,
-                             verify=verify))
+                             interpolation=interpolation, optimize=optimize, keep_boundary=keep_boundary,
+                             max_elements=max_elements, verify=verify))
 
 
 def optimize(mesh_or_points, cells=None, *, cell_refs=None, boundary_cells=None, boundary_refs=None,

@@ -44,7 +44,7 @@ def constrain(points: npt.ArrayLike, segments: npt.ArrayLike | None = ..., *, tr
 def mesh(points: npt.ArrayLike, segments: npt.ArrayLike, *, markers: npt.ArrayLike | None = ...,
          holes: npt.ArrayLike | None = ..., regions: npt.ArrayLike | None = ..., size: float | npt.ArrayLike | None = ...,
          metric: npt.ArrayLike | None = ..., background: tuple[npt.ArrayLike, npt.ArrayLike] | None = ...,
-         method: str = ..., interpolation: str = ..., optimize: bool = ..., resample_boundary: bool = ...,
+         method: str = ..., interpolation: str = ..., optimize: bool = ..., keep_boundary: bool = ..., max_elements: int = ...,
          verify: bool = ...) -> Mesh: ...
 def optimize(mesh_or_points: Mesh | npt.ArrayLike, cells: npt.ArrayLike | None = ..., *,
              cell_refs: npt.ArrayLike | None = ..., boundary_cells: npt.ArrayLike | None = ...,

@@ -80,7 +80,8 @@ py::dict mesh_result(MeshData2&& data, std::vector<Metric2>&& metrics, py::dict 
 py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, const py::handle& markers_obj,
               const py::handle& holes_obj, const py::handle& regions_obj, const py::handle& size, const py::handle& metric,
               const py::handle& background_points, const py::handle& background_triangles, const std::string& method,
-              const std::string& interpolation, bool optimize, bool resample_boundary, bool verify) {
+              const std::string& interpolation, bool optimize, bool keep_boundary, std::uint64_t max_elements,
+              bool verify) {
   const DoubleArray points = double_rows(points_obj, 2, "points");
   if (points.shape(0) == 0) throw InputError("points: no vertices");
   const IndexArray segments = index_rows(segments_obj, 2, "segments");
@@ -101,7 +102,8 @@ py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, cons
   options.method = method;
   options.optimize = optimize;
   options.interrupt = python_interrupt_check();
-  options.resample_boundary = resample_boundary;
+  options.keep_boundary = keep_boundary;
+  options.max_elements = max_elements;
   if (interpolation != "sizes" && interpolation != "log-euclidean")
     throw InputError("interpolation: 'sizes' or 'log-euclidean', not '" + interpolation + "'");
   options.interpolation = interpolation == "log-euclidean" ? MetricInterpolation::LogEuclidean : MetricInterpolation::Sizes;
@@ -123,8 +125,9 @@ py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, cons
     input_metrics = metrics_at(size, metric, points.shape(0));
     options.input_metrics = input_metrics;
   }
-  if (resample_boundary && !control && input_metrics.empty())
-    throw InputError("resample_boundary needs a size or metric: the classical sizes come from the boundary itself");
+  if (keep_boundary && !control && input_metrics.empty())
+    throw InputError("keep_boundary needs a size or metric: with the classical sizes, which come from the boundary "
+                     "itself, it is always kept");
   if (control) options.control = &*control;
 
   Mesh2dResult r;
@@ -141,6 +144,8 @@ py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, cons
   stats["input_points"] = s.input_points;
   stats["segments"] = s.segments;
   stats["boundary_points"] = s.boundary_points;
+  stats["long_boundary_segments"] = s.long_boundary_segments;
+  stats["estimated_triangles"] = s.estimated_triangles;
   stats["field_points"] = s.field_points;
   stats["filtered"] = s.filtered;
   stats["not_inserted"] = s.not_inserted;
@@ -246,7 +251,7 @@ void bind_mesh2d(py::module_& m) {
         py::arg("regions") = py::none(), py::arg("size") = py::none(), py::arg("metric") = py::none(),
         py::arg("background_points") = py::none(), py::arg("background_triangles") = py::none(),
         py::arg("method") = "edge", py::arg("interpolation") = "sizes", py::arg("optimize") = true,
-        py::arg("resample_boundary") = false, py::arg("verify") = false);
+        py::arg("keep_boundary") = false, py::arg("max_elements") = 0, py::arg("verify") = false);
   m.def("optimize", &optimize, py::arg("points"), py::arg("cells"), py::arg("cell_refs") = py::none(),
         py::arg("boundary_cells") = py::none(), py::arg("boundary_refs") = py::none(), py::arg("size") = py::none(),
         py::arg("metric") = py::none(), py::arg("max_rounds") = Optimize2dOptions{}.max_rounds,

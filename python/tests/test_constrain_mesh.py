@@ -101,10 +101,10 @@ def write_poly(path, points, segments, markers, holes):
 def test_mesh_same_bytes_as_cli(cli, tmp_path, method):
     points, segments, markers = POINTS[:8], SEGMENTS[:8], MARKERS[:8]
     write_poly(tmp_path / "in.poly", points, segments, markers, HOLES)
-    subprocess.run([cli, "mesh", str(tmp_path / "in.poly"), "--size", "0.25", "--method", method, "--resample-boundary",
+    subprocess.run([cli, "mesh", str(tmp_path / "in.poly"), "--size", "0.25", "--method", method,
                     "-o", str(tmp_path / "cli.mesh")], check=True, capture_output=True)
     m = dtlab.mesh(points, segments, markers=markers, holes=HOLES, size=0.25, method=method,
-                   resample_boundary=True, verify=True)
+                   verify=True)
     assert m.stats["verify"]["ok"], m.stats["verify"]["problems"][:5]
     m.write(tmp_path / "py.mesh")
     cli_mesh = dtlab.read_medit(tmp_path / "cli.mesh")
@@ -122,12 +122,28 @@ def test_mesh_classical_and_anisotropic():
     assert classical.stats["verify"]["ok"]
     # An anisotropic metric at the four corners: sizes 0.5 along x, 0.1 along y.
     metric = np.tile([1 / 0.5**2, 0.0, 1 / 0.1**2], (4, 1))
-    aniso = dtlab.mesh(points, segments, metric=metric, resample_boundary=True, verify=True)
+    aniso = dtlab.mesh(points, segments, metric=metric, verify=True)
     assert aniso.stats["verify"]["ok"]
     assert aniso.quality(metric="own")["unit_edge_share"] > 0.8
     assert len(aniso.cells) > 4 * len(classical.cells)
     with pytest.raises(dtlab.InputError):
         dtlab.mesh(points, segments, metric=np.tile([1.0, 2.0, 1.0], (4, 1)))  # not positive definite
+    # keep_boundary keeps the 4 sides, each longer than sqrt 2 in the metric, and says so.
+    kept = dtlab.mesh(points, segments, metric=metric, keep_boundary=True)
+    assert kept.stats["long_boundary_segments"] == 4 and kept.stats["boundary_points"] == 0
+    assert aniso.stats["long_boundary_segments"] == 0 and aniso.stats["boundary_points"] > 0
+    with pytest.raises(dtlab.InputError, match="keep_boundary needs a size"):
+        dtlab.mesh(points, segments, keep_boundary=True)
+
+
+def test_mesh_element_limit():
+    # Issue 42, item 4: a size whose triangle count is past the limit is refused at once, by name.
+    points, segments = POINTS[:4], SEGMENTS[:4]
+    with pytest.raises(dtlab.InputError, match=r"asks for about [0-9.e+]+ triangles"):
+        dtlab.mesh(points, segments, size=1e-9)
+    with pytest.raises(dtlab.InputError, match="limit of 100 "):
+        dtlab.mesh(points, segments, size=0.05, max_elements=100)
+    assert len(dtlab.mesh(points, segments, size=0.05, max_elements=100000).cells) > 100
 
 
 def test_optimize_same_as_cli(cli, tmp_path):

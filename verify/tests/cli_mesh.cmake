@@ -11,7 +11,7 @@ endif()
 foreach(_dtlab_case classical uniform size_map metric_linear metric_polar medit_input front deterministic
                     output_metric missing_file open_boundary bad_size count_mismatch not_positive
                     conflicting_options background_alone resample_classical unknown_method unwritable_output
-                    options_without_effect)
+                    options_without_effect keep_boundary no_interior_edge element_limit)
   add_test(NAME cli_mesh_${_dtlab_case}
            COMMAND ${CMAKE_COMMAND} -DDTLAB=$<TARGET_FILE:dtlab_cli> -DDATA=${PROJECT_SOURCE_DIR}/data
                    -DWORK=${PROJECT_BINARY_DIR}/cli-mesh-test/${_dtlab_case} -DCASE=${_dtlab_case}

@@ -12,7 +12,7 @@ if(NOT TARGET dtlab_cli)
 endif()
 
 foreach(_dtlab_case classical uniform stl size_map metric deterministic open_surface empty_surface count_mismatch
-                    no_background front polygonal_facets bad_facets effort)
+                    no_background front polygonal_facets bad_facets effort no_interior_edge element_limit)
   add_test(NAME cli_mesh3d_${_dtlab_case}
            COMMAND ${CMAKE_COMMAND} -DDTLAB=$<TARGET_FILE:dtlab_cli> -DDATA=${PROJECT_SOURCE_DIR}/data
                    -DWORK=${PROJECT_BINARY_DIR}/cli-mesh3d-test/${_dtlab_case} -DCASE=${_dtlab_case}

@@ -334,7 +334,7 @@ void thin_strip_case(const std::string& method) {
   c.text = text.str();
   Mesh2dOptions options;
   options.method = method;
-  options.resample_boundary = resample;
+  options.keep_boundary = !resample;
   const ControlSpace2 control = ControlSpace2::uniform(
       Metric2::from_sizes(place.direction({std::cos(tilt), std::sin(tilt)}), along, across), {-5, -5}, {5, 5});
   if (sizing > 0) options.control = &control;
@@ -438,11 +438,11 @@ void metric_field_case(const std::string& method) {
   Mesh2dOptions options;
   options.method = method;
   options.control = &control;
-  options.resample_boundary = *rc::gen::arbitrary<bool>();
+  options.keep_boundary = *rc::gen::arbitrary<bool>();
   std::ostringstream text;
   text.precision(17);
   text << describe(f) << "; background " << k << " x " << k << ", log-euclidean " << (mode == MetricInterpolation::LogEuclidean)
-       << ", square " << square << ", resample " << options.resample_boundary;
+       << ", square " << square << ", keep boundary " << options.keep_boundary;
   c.text = text.str();
   mesh_and_check(c, options);
 }
@@ -502,6 +502,8 @@ TEST(Mesh2dBounds, CapOnAFineSizeStopsEarly) {
     options.method = method;
     options.control = &control;
     options.max_vertices = 2000;
+    options.max_elements = std::uint64_t{1} << 40;  // past the estimate: the run's own bound acts
+    options.keep_boundary = true;
     try {
       mesh2d(d.input(), options);
       ADD_FAILURE() << method << ": no error";
@@ -509,17 +511,49 @@ TEST(Mesh2dBounds, CapOnAFineSizeStopsEarly) {
       EXPECT_NE(std::string(e.what()).find("vertex bound of 2000"), std::string::npos) << e.what();
     }
   }
-  // With resampling, the boundary alone needs 40,000 points: refused before any is made.
+  // With the boundary cut in the size, the boundary alone needs 40,000 points: refused before any is made.
   Mesh2dOptions options;
   options.control = &control;
-  options.resample_boundary = true;
   options.max_vertices = 2000;
+  options.max_elements = std::uint64_t{1} << 40;
   try {
     mesh2d(d.input(), options);
     ADD_FAILURE() << "resample: no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("vertex bound of 2000"), std::string::npos) << e.what();
   }
+}
+
+TEST(Mesh2dBounds, ElementEstimateRefusesBeforeAnyWork) {
+  // h = 10^-4 on the unit square: about 2.3 10^8 triangles (1 / (h^2 sqrt 3 / 4)). Under a limit
+  // of 10^8 it is refused with the estimate; above it the estimate passes (the run is then bounded
+  // by the vertex bound, as above).
+  Domain d;
+  add_cut_loop(d, {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0.25, 4, 1);
+  const ControlSpace2 control = ControlSpace2::uniform(Metric2::isotropic(1e-4), {-1, -1}, {2, 2});
+  Mesh2dOptions options;
+  options.control = &control;
+  options.max_elements = 100'000'000;
+  try {
+    mesh2d(d.input(), options);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("asks for about 2.31e+08 triangles"), std::string::npos) << what;
+    EXPECT_NE(what.find("limit of 100000000"), std::string::npos) << what;
+  }
+  options.max_elements = 300'000'000;
+  options.max_vertices = 2000;
+  try {
+    mesh2d(d.input(), options);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex bound of 2000"), std::string::npos) << e.what();
+  }
+  // A metric of 10^300 I: its complexity overflows, refused all the same.
+  const ControlSpace2 huge = ControlSpace2::uniform(Metric2{{1e300, 0, 1e300}}, {-1, -1}, {2, 2});
+  options.control = &huge;
+  EXPECT_THROW(mesh2d(d.input(), options), InputError);
 }
 
 TEST(Mesh2dBounds, PassBoundRaisesItsNamedError) {
