@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "kernel/error.hpp"
+#include "kernel/metric.hpp"  // check_size
 #include "mesh/io/any_format.hpp"  // extension_of
 #include "verify/problem_report.hpp"  // json_string
 
@@ -39,6 +40,7 @@ inline double parse_size(const std::string& text) {
   const double h = std::strtod(text.c_str(), &end);
   if (end == text.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(h) || !(h > 0.0))
     throw InputError("--size " + text + ": give a positive finite size H (the metric H^-2 I)");
+  check_size(h, "--size");  // 1e200 would give H^-2 = 0 (kernel/metric.hpp: the sizes a metric holds)
   return h;
 }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -301,6 +302,18 @@ Vec2 column2(const Mat<2>& v, int k) { return {v[0][k], v[1][k]}; }
 Vec3 column3(const Mat<3>& v, int k) { return {v[0][k], v[1][k], v[2][k]}; }
 
 }  // namespace
+
+// --- Sizes -------------------------------------------------------------------------------------
+
+bool is_representable_size(double h) noexcept { return h >= kMinMetricSize && h <= kMaxMetricSize; }
+
+void check_size(double h, const std::string& what) {
+  if (is_representable_size(h)) return;
+  char text[160];
+  std::snprintf(text, sizeof text, " = %.6g: %s; a size must lie in [%.6g, %.6g] (h^-2 and the metric's determinant normal doubles)",
+                h, !(h > 0.0) ? "not a positive size" : "out of the representable range", kMinMetricSize, kMaxMetricSize);
+  throw InputError(what + text);
+}
 
 // --- Metric2 -----------------------------------------------------------------------------------
 

@@ -26,15 +26,30 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <string>
 
 #include "kernel/vec.hpp"
 
 namespace dtlab {
 
+// The sizes a metric holds: h with h^-2 in [2^-340, 2^340], so that every eigenvalue and every
+// product of up to three of them (the determinant in 3D) is a normal double, neither overflowing
+// to inf nor underflowing to 0. That is h in [2^-170, 2^170], about [6.7e-52, 1.5e51].
+inline constexpr double kMinMetricSize = 0x1p-170;
+inline constexpr double kMaxMetricSize = 0x1p170;
+inline constexpr double kMinMetricEigenvalue = 0x1p-340;  // kMaxMetricSize^-2
+inline constexpr double kMaxMetricEigenvalue = 0x1p340;   // kMinMetricSize^-2
+// Whether h lies in [kMinMetricSize, kMaxMetricSize] (false for NaN).
+bool is_representable_size(double h) noexcept;
+// Throws InputError "WHAT = h: ..." naming the range when h is not a representable size (or not
+// positive): the check to make before isotropic(h), from_sizes(..., h, ...) or clip(.., h, ..).
+void check_size(double h, const std::string& what);
+
 struct Metric2 {
   std::array<double, 3> m{1.0, 0.0, 1.0};  // m11, m12, m22
 
-  // h^-2 I: size h in every direction (h > 0).
+  // h^-2 I: size h in every direction (h a representable size, check_size above; outside it the
+  // components overflow or the determinant underflows).
   static Metric2 isotropic(double h) noexcept;
   // Size h1 along the unit direction e1, h2 along its normal.
   static Metric2 from_sizes(const Vec2& e1, double h1, double h2) noexcept;

@@ -375,10 +375,13 @@ std::vector<M> metrics_from_sol(const SolData& sol, const std::string& file) {
     }
     if (sol.kind == SolData::Kind::Scalar) {
       if (!(c[0] > 0.0)) throw InputError(what + "size " + components(c) + " is not positive", {i});
-      metrics[i] = M::isotropic(c[0]);
-      if (!metrics[i].is_positive_definite()) {
-        throw InputError(what + "size " + components(c) + " gives no finite metric (h^-2 overflows)", {i});
+      if (!is_representable_size(c[0])) {
+        throw InputError(what + "size " + components(c) + " is out of the representable range (" +
+                             components(std::array{kMinMetricSize, kMaxMetricSize}).substr(1) +
+                             " (h^-2 and the metric's determinant normal doubles)",
+                         {i});
       }
+      metrics[i] = M::isotropic(c[0]);
     } else {
       std::copy(c.begin(), c.end(), metrics[i].m.begin());
       if (!metrics[i].is_positive_definite()) {

@@ -613,7 +613,9 @@ TEST(MeditSol, MetricsRefuseTensorsThatAreNotPositiveDefinite) {
   h.values = {-0.5};
   expect_input_error([&] { metrics2_from_sol(h, "h.sol"); }, {"vertex 1", "is not positive"}, {0});
   h.values = {1e-200};  // h^-2 overflows
-  expect_input_error([&] { metrics2_from_sol(h, "h.sol"); }, {"vertex 1", "no finite metric"}, {0});
+  expect_input_error([&] { metrics2_from_sol(h, "h.sol"); }, {"vertex 1", "size (1e-200) is out of the representable range"}, {0});
+  h.values = {1, 1e200};  // h^-2 underflows to 0 (it was called an overflow)
+  expect_input_error([&] { metrics2_from_sol(h, "h.sol"); }, {"vertex 2", "size (1e+200) is out of the representable range"}, {1});
 }
 
 TEST(MeditSol, MetricsRefuseTheOtherDimension) {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "kernel/error.hpp"
@@ -158,6 +159,39 @@ TEST(Metric, PositiveDefiniteness) {
   // Positive diagonal, but the eigenvalues of [[1,.9,.9],[.9,1,-.9],[.9,-.9,1]] include -0.8.
   EXPECT_FALSE((Metric3{{1, 0.9, 1, 0.9, -0.9, 1}}).is_positive_definite());
   EXPECT_FALSE((Metric3{{1, 0, 1, 0, std::nan(""), 1}}).is_positive_definite());
+}
+
+// Issue 42, item 7: a size of 1e200 gave h^-2 = 0, reported as "not positive definite". The
+// representable range keeps the eigenvalues and the 3D determinant normal at both ends.
+TEST(Metric, SizesOutOfTheRepresentableRangeAreNamed) {
+  for (const double h : {kMinMetricSize, 1.0, kMaxMetricSize}) {
+    EXPECT_TRUE(is_representable_size(h)) << h;
+    EXPECT_NO_THROW(check_size(h, "--size"));
+    const Metric2 m2 = Metric2::isotropic(h);
+    const Metric3 m3 = Metric3::isotropic(h);
+    EXPECT_TRUE(m2.is_positive_definite()) << h;
+    EXPECT_TRUE(m3.is_positive_definite()) << h;
+    EXPECT_TRUE(std::isnormal(m3.determinant())) << h;
+    EXPECT_EQ(sizes(m3)[0], h);
+  }
+  for (const double h : {1e200, 1e-200, std::nextafter(kMaxMetricSize, kInf), std::nextafter(kMinMetricSize, 0.0), 0.0,
+                         -1.0, kInf, std::nan("")}) {
+    EXPECT_FALSE(is_representable_size(h)) << h;
+    try {
+      check_size(h, "--size");
+      ADD_FAILURE() << h << " accepted";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.rfind("--size = ", 0), 0u) << what;
+      EXPECT_NE(what.find("[6.68191e-52, 1.49658e+51]"), std::string::npos) << what;
+      EXPECT_NE(what.find(h > 0.0 ? "out of the representable range" : "not a positive size"), std::string::npos) << what;
+    }
+  }
+  try {
+    check_size(1e200, "--size");
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1e+200"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Metric, EigenOfKnownTensors) {
