@@ -64,6 +64,7 @@ SolutionMetricOptions options_of(const MetricArgs& args) {
   o.h_min = args.hmin;
   o.h_max = args.hmax;
   o.gradation = args.hgrad;
+  o.field_names = args.solutions;
   return o;
 }
 

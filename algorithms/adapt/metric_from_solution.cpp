@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <utility>
@@ -65,10 +66,46 @@ double diagonal(std::span<const typename Traits<D>::Point> points) {
   return norm(hi - lo);
 }
 
+// Constants of the normalisation (documented in metric_from_solution.hpp).
+constexpr double kDefaultMinSize = 1e-8;        // default h_min, relative to the diagonal
+constexpr double kSmallestSize = 1e-9;          // the smallest h_min, relative to the diagonal
+constexpr double kEigenvalueFloor = 1e-12;      // of the largest |H| eigenvalue
+constexpr double kComplexityTolerance = 1e-6;   // relative, delivered vs asked
+constexpr double kRoundOffHessian = 1e-12;      // |lambda| h^2 / max |u| at or below: round-off
+
+// A double in six significant digits, for messages.
+std::string format_double(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
 void check_positive(const std::optional<double>& x, const char* name) {
   if (x && !(*x > 0.0 && std::isfinite(*x)))
-    throw InputError(std::string("metric from solution: ") + name + " = " + std::to_string(*x) +
+    throw InputError(std::string("metric from solution: ") + name + " = " + format_double(*x) +
                      ": give a positive finite value");
+}
+
+// The shortest edge at each used vertex: the length over which round-off in the values is
+// magnified into the recovered Hessian (noise ~ eps max|u| / h^2).
+template <int D>
+std::vector<double> shortest_edges(std::span<const typename Traits<D>::Point> points,
+                                   std::span<const std::array<std::uint32_t, D + 1>> elements) {
+  std::vector<double> shortest(points.size(), std::numeric_limits<double>::infinity());
+  for (const auto& e : elements)
+    for (int i = 0; i <= D; ++i)
+      for (int j = i + 1; j <= D; ++j) {
+        const double l = norm(points[e[j]] - points[e[i]]);
+        shortest[e[i]] = std::min(shortest[e[i]], l);
+        shortest[e[j]] = std::min(shortest[e[j]], l);
+      }
+  return shortest;
+}
+
+std::string field_name(const SolutionMetricOptions& options, std::size_t f) {
+  std::string name = "field " + std::to_string(f + 1);
+  if (f < options.field_names.size()) name += " (" + options.field_names[f] + ")";
+  return name;
 }
 
 template <int D>
@@ -92,51 +129,83 @@ std::vector<typename Traits<D>::Metric> compute(std::span<const typename Traits<
     throw InputError("metric from solution: gradation = " + std::to_string(*options.gradation) + ": give beta >= 1");
   if (elements.empty()) throw InputError("metric from solution: the mesh has no element");
   const double diag = diagonal<D>(points);
-  const double h_max = options.h_max.value_or(diag), h_min = options.h_min.value_or(1e-8 * diag);
+  const double h_max = options.h_max.value_or(diag), h_min = options.h_min.value_or(kDefaultMinSize * diag);
+  check_size(h_min, options.h_min ? "metric from solution: h_min" : "metric from solution: the default h_min (1e-8 of the diagonal)");
+  check_size(h_max, options.h_max ? "metric from solution: h_max" : "metric from solution: the default h_max (the diagonal)");
+  if (!(h_min >= kSmallestSize * diag))
+    throw InputError("metric from solution: h_min = " + format_double(h_min) + " is below " + format_double(kSmallestSize) +
+                     " of the mesh's diagonal " + format_double(diag) +
+                     ": sizes that small are under the resolution of its coordinates");
   if (!(h_min <= h_max))
-    throw InputError("metric from solution: h_min = " + std::to_string(h_min) + " exceeds h_max = " + std::to_string(h_max));
+    throw InputError("metric from solution: h_min = " + format_double(h_min) + " exceeds h_max = " + format_double(h_max));
   const std::size_t n = points.size();
   std::vector<char> used(n, 0);
   for (const auto& e : elements)
     for (const std::uint32_t v : e)
       if (v < n) used[v] = 1;
+  const std::vector<double> shortest = shortest_edges<D>(points, elements);
 
   std::vector<Metric> result;
   double complexity_before = 0.0;
   for (std::size_t f = 0; f < fields.size(); ++f) {
-    const std::vector<double>& u = fields[f];
-    const auto hessian = recover_hessian(points, elements, std::span<const double>(u), options.recovery);
+    const std::string name = field_name(options, f);
+    // The field scaled by a power of two (exact) to max |u| in [0.5, 1]: the metric normalised to
+    // a complexity does not depend on a factor on u (|H| scales by it, D_N det^(-1/(2p+d)) by its
+    // inverse), so this loses nothing and keeps 1e300 x^2 from overflowing.
+    std::vector<double> u = fields[f];
+    if (u.size() == n)
+      for (std::size_t v = 0; v < n; ++v)
+        if (!std::isfinite(u[v]))
+          throw InputError("metric from solution: " + name + ": the value at vertex " + std::to_string(v + 1) +
+                               " is not finite",
+                           {v});
     double u_max = 0.0;
-    for (std::size_t v = 0; v < n; ++v)
+    for (std::size_t v = 0; v < std::min(n, u.size()); ++v)
       if (used[v]) u_max = std::max(u_max, std::fabs(u[v]));
-    // |H| per vertex, eigenvalues floored at a tiny fraction of the largest (det > 0 for the powers).
+    int exponent2 = 0;
+    if (u_max > 0.0) std::frexp(u_max, &exponent2);
+    for (double& x : u) x = std::ldexp(x, -exponent2);
+    const double u_scale = std::ldexp(1.0, exponent2);  // u = u_scale * (the scaled field)
+    const double u_max_scaled = std::ldexp(u_max, -exponent2);
+    const auto hessian = recover_hessian(points, elements, std::span<const double>(u), options.recovery);
+    // |H| per vertex. An eigenvalue whose second-order term over the vertex's shortest edge,
+    // |lambda| h^2, is within kRoundOffHessian of max |u| is round-off, not curvature: it is set
+    // to 0 (the field is linear in that direction, as far as doubles can tell).
     std::vector<typename Traits<D>::Eigen> abs_h(n);
-    double largest = 0.0;
+    double largest = 0.0, largest_term = 0.0;
     for (std::size_t v = 0; v < n; ++v) {
       if (!used[v]) continue;
       Metric h;
       std::copy(hessian[v].begin(), hessian[v].end(), h.m.begin());
       abs_h[v] = eigen(h);
+      const double noise = kRoundOffHessian * u_max_scaled / (shortest[v] * shortest[v]);
       for (double& l : abs_h[v].values) {
         l = std::fabs(l);
-        if (options.relative_cutoff) l /= std::max(std::fabs(u[v]), *options.relative_cutoff * u_max);
+        if (u_max_scaled > 0.0) largest_term = std::max(largest_term, l * shortest[v] * shortest[v] / u_max_scaled);
+        if (!(l > noise)) l = 0.0;
+        if (options.relative_cutoff) l /= std::max(std::fabs(u[v]), *options.relative_cutoff * u_max_scaled);
         largest = std::max(largest, l);
       }
     }
-    if (!(largest > 0.0) && options.complexity)
-      throw InputError("metric from solution: field " + std::to_string(f + 1) +
-                       " is linear on the mesh (its recovered Hessian is 0): no complexity to distribute");
-    const double floor = largest > 0.0 ? 1e-12 * largest : 1.0;
+    if (!(largest > 0.0))
+      throw InputError("metric from solution: " + name + " is linear to round-off on the mesh (largest |lambda| h^2 / max |u| = " +
+                       format_double(largest_term) + ", at most " + format_double(kRoundOffHessian) +
+                       ", over the Hessian eigenvalues lambda and each vertex's shortest edge h): its P1 interpolation "
+                       "error is zero, so no metric follows from it; give a size instead (dtlab mesh --size H, or --hmax)");
+    // Eigenvalues relative to the largest, floored at a tiny fraction of it (det > 0 for the
+    // powers; a floored direction gets h_max from the clipping).
     std::vector<double> det(n, 0.0);
     for (std::size_t v = 0; v < n; ++v) {
       if (!used[v]) continue;
       det[v] = 1.0;
-      for (double& l : abs_h[v].values) det[v] *= (l = std::max(l, floor));
+      for (double& l : abs_h[v].values) det[v] *= (l = std::max(l / largest, kEigenvalueFloor));
     }
-    // The scale of each vertex's |H|.
+    // The scale of each vertex's relative |H|.
     std::vector<double> scale(n, 0.0);
     if (options.error) {
-      std::fill(scale.begin(), scale.end(), Traits<D>::kLinfConstant / *options.error);
+      // Not scale-invariant: the error is absolute. The true |H| is largest * u_scale * (relative).
+      const double s = Traits<D>::kLinfConstant / *options.error * (options.relative_cutoff ? 1.0 : u_scale) * largest;
+      std::fill(scale.begin(), scale.end(), s);
     } else {
       const double exponent = linf ? 0.5 : options.p / (2.0 * options.p + D);
       std::vector<double> q(n, 0.0);
@@ -151,8 +220,29 @@ std::vector<typename Traits<D>::Metric> compute(std::span<const typename Traits<
     for (std::size_t v = 0; v < n; ++v) {
       if (!used[v]) continue;
       typename Traits<D>::Eigen e = abs_h[v];
-      for (double& l : e.values) l *= scale[v];
+      for (double& l : e.values) {
+        l *= scale[v];
+        // An eigenvalue out of the kernel's range (kernel/metric.hpp: its determinant would
+        // overflow or underflow) is refused here, before the clipping could hide it.
+        if (!(l >= kMinMetricEigenvalue && l <= kMaxMetricEigenvalue))
+          throw InputError("metric from solution: " + name + ": the metric at vertex " + std::to_string(v + 1) +
+                               " has eigenvalue " + format_double(l) + " (size " + format_double(1.0 / std::sqrt(l)) +
+                               "), out of the representable range [" + format_double(kMinMetricEigenvalue) + ", " +
+                               format_double(kMaxMetricEigenvalue) + "]" +
+                               (options.error ? ": the error asked is too small for the field's scale" : ""),
+                           {v});
+      }
       m[v] = from_eigen(e);
+    }
+    if (options.complexity) {
+      // The normalisation is exact in real arithmetic; a complexity off by more than the
+      // tolerance means the doubles did not hold it.
+      const double delivered = metric_complexity(points, elements, std::span<const Metric>(m));
+      if (!(std::fabs(delivered - *options.complexity) <= kComplexityTolerance * *options.complexity))
+        throw InputError("metric from solution: " + name + ": the normalised metric has complexity " +
+                         format_double(delivered) + " where " + format_double(*options.complexity) +
+                         " was asked (beyond the relative tolerance " + format_double(kComplexityTolerance) +
+                         "): the field's Hessian is out of the range the normalisation holds in doubles");
     }
     if (result.empty()) {
       result = std::move(m);

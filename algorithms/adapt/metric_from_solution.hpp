@@ -16,6 +16,18 @@
 //  5. the sizes clipped to [h_min, h_max] (an eigenvalue 0 of |H|, a direction where the field is
 //     linear, gets h_max), then the gradation (kernel/metric.hpp apply_gradation, h-grad β).
 // Integrals are P1 over the mesh: ∫ q = Σ_K |K| · (mean of q at K's vertices).
+// Bounded work and values in doubles (issue 42):
+//  - each field is scaled by a power of two (exact) to max |u| in [0.5, 1] before the recovery:
+//    with a complexity the metric does not depend on a factor on u (|H| scales by it, D_N
+//    det(|H|)^(-1/(2p+d)) by its inverse), and 1e300 x² neither overflows nor underflows;
+//  - round-off: an eigenvalue λ of the recovered Hessian with |λ| h² ≤ 1e-12 max |u| (h the
+//    vertex's shortest edge) is 0. The round-off of a linear field measures at most 1.3 ulps of
+//    max |u| in |λ| h² (2D and 3D, both recoveries, graded meshes); 1e-12 is about 4500 ulps. A
+//    field with every eigenvalue 0 is linear to round-off and refused;
+//  - the eigenvalues of each field's metric must lie in [kMinMetricEigenvalue,
+//    kMaxMetricEigenvalue] (kernel/metric.hpp), and with a complexity its ∫ sqrt(det M) must be
+//    N within a relative 1e-6, before the clipping; h_min, h_max must be representable sizes,
+//    h_min at least 1e-9 of the diagonal.
 #pragma once
 
 #include <array>
@@ -23,6 +35,7 @@
 #include <limits>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "algorithms/adapt/hessian.hpp"
@@ -44,6 +57,8 @@ struct SolutionMetricOptions {
   std::optional<double> h_min, h_max;
   // Gradation β >= 1 over the mesh's edges; absent: none.
   std::optional<double> gradation;
+  // The fields' names for messages (e.g. their files), in the order of `fields`; may be empty.
+  std::vector<std::string> field_names;
 };
 
 struct SolutionMetricStats {
@@ -55,9 +70,9 @@ struct SolutionMetricStats {
 };
 
 // One field per entry of `fields` (each one value per point); the metric at every point (unused
-// points get h_max^-2 I). Throws InputError for bad options (naming them), for fields as
-// recover_hessian does, and when the fields are all exactly linear with a complexity asked (no
-// Hessian to distribute).
+// points get h_max^-2 I). Throws InputError for bad options (naming them and the value), for
+// fields as recover_hessian does, for a field linear to round-off (no Hessian to distribute), and
+// for a metric out of the doubles' range (the bounds above), naming the field.
 std::vector<Metric2> metric_from_solutions(std::span<const Vec2> points,
                                            std::span<const std::array<std::uint32_t, 3>> triangles,
                                            std::span<const std::vector<double>> fields,

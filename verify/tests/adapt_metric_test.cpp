@@ -1,13 +1,16 @@
 // Metrics from solutions (algorithms/adapt/hessian.hpp, metric_from_solution.hpp): the least
 // squares recovery is exact on quadratics (boundary vertices included), the double L2 projection
 // converges on a smooth field, a linear field has no Hessian; the L∞ metric of x² + 100 y² is the
-// closed form; the Lp metric has exactly the complexity asked; the intersection of two fields'
-// metrics lies inside both; a tanh layer gives metrics stretched along it; h_min / h_max hold;
-// bad input is named.
+// closed form; the Lp metric has exactly the complexity asked, whatever the field's scale; the
+// intersection of two fields' metrics lies inside both; a tanh layer gives metrics stretched
+// along it; h_min / h_max hold; bad input is named: a field linear to round-off (2D and 3D), a
+// size bound out of range, a target error whose metric leaves the doubles.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "algorithms/adapt/metric_from_solution.hpp"
@@ -216,6 +219,101 @@ TEST(SolutionMetric, TanhLayerStretchesAlongTheLayerWithinTheSizeBounds) {
     ++checked;
   }
   EXPECT_GT(checked, 20u);
+}
+
+// The message of the InputError that f throws (fails the test if none).
+std::string refusal(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError";
+  return {};
+}
+
+TEST(SolutionMetric, LinearFieldIsRefusedAsRoundOffIn2dAnd3d) {
+  const MeshData2 mesh = square_mesh(10, 0.1);
+  const TetMesh cube = cube_mesh(4);
+  for (const HessianRecovery r : {HessianRecovery::LeastSquares, HessianRecovery::L2Projection}) {
+    SolutionMetricOptions complexity;
+    complexity.complexity = 2000;
+    complexity.recovery = r;
+    SolutionMetricOptions error;
+    error.error = 0.01;
+    error.recovery = r;
+    for (const double scale : {1.0, 1e-300, 1e300}) {
+      const std::vector<std::vector<double>> f2{sample<Vec2>(mesh.vertices, [&](const Vec2& p) { return scale * (2 * p.x + 3 * p.y + 0.1); })};
+      const std::vector<std::vector<double>> f3{sample<Vec3>(cube.points, [&](const Vec3& p) { return scale * (2 * p.x + 3 * p.y - p.z); })};
+      for (const SolutionMetricOptions& o : {complexity, error}) {
+        EXPECT_NE(refusal([&] { metric_from_solutions(mesh.vertices, mesh.triangles, f2, o); }).find("linear to round-off"),
+                  std::string::npos);
+        EXPECT_NE(refusal([&] { metric_from_solutions(cube.points, cube.tetrahedra, f3, o); }).find("linear to round-off"),
+                  std::string::npos);
+      }
+    }
+  }
+}
+
+TEST(SolutionMetric, FieldLinearInOneRegionAndCurvedElsewhereHasTheComplexityAsked) {
+  const MeshData2 mesh = square_mesh(20, 0.05);
+  const std::vector<std::vector<double>> fields{sample<Vec2>(mesh.vertices, [](const Vec2& p) {
+    return 2 * p.x + 3 * p.y + std::pow(std::max(p.x - 0.5, 0.0), 3);
+  })};
+  SolutionMetricOptions o;
+  o.complexity = 2000;
+  o.h_max = 0.3;
+  SolutionMetricStats s;
+  const auto m = metric_from_solutions(mesh.vertices, mesh.triangles, fields, o, &s);
+  EXPECT_NEAR(s.complexity_before_clipping, 2000.0, 1e-9 * 2000.0);
+  for (std::size_t v = 0; v < m.size(); ++v)  // the linear half gets h_max, the curved one less
+    if (mesh.vertices[v].x < 0.4) EXPECT_NEAR(sizes(m[v])[1], 0.3, 1e-9) << v;
+  EXPECT_LT(s.h_min, 0.05);
+}
+
+TEST(SolutionMetric, MetricForAComplexityDoesNotDependOnAScalingOfTheField) {
+  const MeshData2 mesh = square_mesh(10, 0.1);
+  const auto f = [](const Vec2& p) { return p.x * p.x + 3 * p.y * p.y + std::sin(3 * p.x * p.y); };
+  SolutionMetricOptions o;
+  o.complexity = 2000;
+  const std::vector<std::vector<double>> unit{sample<Vec2>(mesh.vertices, f)};
+  const auto reference = metric_from_solutions(mesh.vertices, mesh.triangles, unit, o);
+  for (const double scale : {1e300, 1e-300, -7.0}) {
+    const std::vector<std::vector<double>> scaled{sample<Vec2>(mesh.vertices, [&](const Vec2& p) { return scale * f(p); })};
+    SolutionMetricStats s;
+    const auto m = metric_from_solutions(mesh.vertices, mesh.triangles, scaled, o, &s);
+    EXPECT_NEAR(s.complexity_before_clipping, 2000.0, 1e-9 * 2000.0) << scale;
+    for (std::size_t v = 0; v < m.size(); ++v)
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(m[v].m[k], reference[v].m[k], 1e-6 * std::fabs(reference[v].m[0] + reference[v].m[2])) << scale;
+  }
+  // With a target error the scale matters; one that takes the sizes out of the doubles is refused.
+  SolutionMetricOptions e;
+  e.error = 1e-3;
+  const std::vector<std::vector<double>> huge{sample<Vec2>(mesh.vertices, [&](const Vec2& p) { return 1e300 * f(p); })};
+  EXPECT_NE(refusal([&] { metric_from_solutions(mesh.vertices, mesh.triangles, huge, e); }).find("out of the representable range"),
+            std::string::npos);
+}
+
+TEST(SolutionMetric, SizeBoundsOutOfRangeAreRefusedWithTheirValue) {
+  const MeshData2 mesh = square_mesh(4, 0.3);
+  const std::vector<std::vector<double>> fields{sample<Vec2>(mesh.vertices, [](const Vec2& p) { return p.x * p.x; })};
+  auto message = [&](std::optional<double> h_min, std::optional<double> h_max) {
+    SolutionMetricOptions o;
+    o.complexity = 100;
+    o.h_min = h_min;
+    o.h_max = h_max;
+    return refusal([&] { metric_from_solutions(mesh.vertices, mesh.triangles, fields, o); });
+  };
+  const std::string huge = message(std::nullopt, 1e200);
+  EXPECT_NE(huge.find("h_max = 1e+200"), std::string::npos) << huge;
+  EXPECT_NE(huge.find("representable range"), std::string::npos) << huge;
+  const std::string tiny = message(1e-200, std::nullopt);
+  EXPECT_NE(tiny.find("h_min = 1e-200"), std::string::npos) << tiny;
+  EXPECT_NE(tiny.find("representable range"), std::string::npos) << tiny;
+  const std::string floor = message(1e-12, std::nullopt);  // the diagonal is sqrt 2: floor 1.4e-9
+  EXPECT_NE(floor.find("h_min = 1e-12"), std::string::npos) << floor;
+  EXPECT_NE(floor.find("diagonal"), std::string::npos) << floor;
 }
 
 TEST(SolutionMetric, BadInputIsNamed) {

@@ -6,8 +6,9 @@ the CLI tests of `dtlab adapt`:
 
 FIELD: size:H (the isotropic H^-2 I, written as the scalar H), tanh:K (the scalar field
 tanh(K (y - 0.5 - 0.1 sin(2 pi x))), a solution with a layer), linear:H0 (the 2D UGAWG "linear"
-field: h_x = 0.1, h_y = H0 + 2 (0.1 - H0) |y - 0.5|, a symmetric tensor), or bad (a tensor that is
-not positive definite at vertex 2)."""
+field: h_x = 0.1, h_y = H0 + 2 (0.1 - H0) |y - 0.5|, a symmetric tensor), expr:E (the scalar
+field given by the Python expression E of x, y, z and the math module's names, e.g. expr:2*x+3*y),
+or bad (a tensor that is not positive definite at vertex 2)."""
 import math
 import sys
 
@@ -32,6 +33,12 @@ def main():
         kind = 1
         k = float(field[5:])
         lines = ["%.17g" % math.tanh(k * (p[1] - 0.5 - 0.1 * math.sin(2 * math.pi * p[0]))) for p in points]
+    elif field.startswith("expr:"):
+        kind = 1
+        names = {k: getattr(math, k) for k in dir(math) if not k.startswith("_")}
+        for p in points:
+            names.update(x=p[0], y=p[1], z=p[2] if dim == 3 else 0.0)
+            lines.append(repr(float(eval(field[5:], {"__builtins__": {"abs": abs, "float": float, "min": min, "max": max}}, names))))
     else:
         kind = 3
         for k, p in enumerate(points):
