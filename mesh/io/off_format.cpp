@@ -15,6 +15,10 @@ namespace {
 using io::LineTokenizer;
 using io::quote;
 
+// Messages count vertices and faces from 1, "vertex 3 of 8" after the file's line, as the Medit,
+// poly and TetGen readers do; a vertex number inside a face is quoted as the file writes it (from
+// 0) with its range. (Past the reader, dtlab constrain names facets as the file numbers them.)
+
 // Extra numbers per vertex that the header's prefixes announce; a colour has 3 or 4.
 struct VertexLayout {
   std::size_t fixed = 3;   // x y z, plus normal and texture coordinates
@@ -91,7 +95,7 @@ class OffReader {
     static constexpr const char* kAxes[] = {" x", " y", " z"};
     for (std::uint64_t i = 0; i < n; ++i) {
       io::next_counted_entry(in_, i, n, "vertices");
-      const std::string what = "vertex " + std::to_string(i);
+      const std::string what = "vertex " + std::to_string(i + 1) + " of " + std::to_string(n);
       const bool with_alpha = layout.has_colour && in_.size() == layout.fixed + 4;
       in_.expect_tokens(layout.fixed + (layout.has_colour ? (with_alpha ? 4 : 3) : 0), what);
       double c[3];
@@ -108,7 +112,7 @@ class OffReader {
     const std::uint64_t nv = content_.vertices.size();
     for (std::uint64_t i = 0; i < n; ++i) {
       io::next_counted_entry(in_, i, n, "faces");
-      const std::string what = "face " + std::to_string(i);
+      const std::string what = "face " + std::to_string(i + 1) + " of " + std::to_string(n);
       const std::uint64_t corners = in_.count(0, what + " vertex count");
       if (corners < 3) in_.fail(what + " has " + std::to_string(corners) + " vertices; a face needs 3");
       if (corners > 3 && !polygons_) {

@@ -142,7 +142,7 @@ TEST(Off, ReadsPrefixedHeadersColoursCommentsAndCountsOnTheHeaderLine) {
 }
 
 TEST(Off, PolygonIsRefusedByName) {
-  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n", kReadOff, 7, "face 0 has 4 vertices: a polygon");
+  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n", kReadOff, 7, "face 1 of 1 has 4 vertices: a polygon");
   expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n", kReadOff, 7, "read_off_surface");
 }
 
@@ -167,15 +167,15 @@ TEST(Off, MalformedInputIsAParseErrorAtItsLine) {
       {"OFF\n-3 1 0\n", 2, "vertex count is negative"},
       {"OFF\n3 1 x\n", 2, "edge count is not an integer"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n", 4, "file ends after 2 of 3 vertices"},
-      {"OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", 4, "vertex 1: expected 3 fields"},
+      {"OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", 4, "vertex 2 of 3: expected 3 fields"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0 5\n0 1 0\n3 0 1 2\n", 4, "trailing text '5'"},
-      {"OFF\n3 1 0\n0 0 nan\n1 0 0\n0 1 0\n3 0 1 2\n", 3, "vertex 0 z is not finite"},
-      {"OFF\n3 1 0\n0 0 1e300\n1 0 0\n0 1 0\n3 0 1 2\n", 3, "vertex 0 z is too large"},
+      {"OFF\n3 1 0\n0 0 nan\n1 0 0\n0 1 0\n3 0 1 2\n", 3, "vertex 1 of 3 z is not finite"},
+      {"OFF\n3 1 0\n0 0 1e300\n1 0 0\n0 1 0\n3 0 1 2\n", 3, "vertex 1 of 3 z is too large"},
       {"OFF\n3 1 0\n0 0 1e-300\n1 0 0\n0 1 0\n3 0 1 2\n", 3, "too small"},
       {"OFF\n3 1 0\n" + v3, 5, "file ends after 0 of 1 faces"},
-      {"OFF\n3 1 0\n" + v3 + "2 0 1\n", 6, "face 0 has 2 vertices"},
+      {"OFF\n3 1 0\n" + v3 + "2 0 1\n", 6, "face 1 of 1 has 2 vertices"},
       {"OFF\n3 1 0\n" + v3 + "3 0 1\n", 6, "expected 3 vertex numbers, found 2"},
-      {"OFF\n3 1 0\n" + v3 + "3 0 1 3\n", 6, "vertex number 3 out of range 0..2"},
+      {"OFF\n3 1 0\n" + v3 + "3 0 1 3\n", 6, "face 1 of 1: vertex number 3 out of range 0..2"},
       {"OFF\n3 1 0\n" + v3 + "3 0 1 -1\n", 6, "vertex number -1 out of range"},
       {"OFF\n3 1 0\n" + v3 + "3 0 1 2 0.5 0.5\n", 6, "2 numbers after the vertex numbers"},
       {"OFF\n3 1 0\n" + v3 + "3 0 1 2 red\n", 6, "colour is not a number"},
@@ -183,6 +183,16 @@ TEST(Off, MalformedInputIsAParseErrorAtItsLine) {
       {"COFF\n3 1 0\n0 0 0 1 1\n1 0 0\n0 1 0\n3 0 1 2\n", 3, "expected 6 fields, found 5"},
   };
   for (const Case& c : cases) expect_parse_error(c.text, kReadOff, c.line, c.what);
+}
+
+// Issue 42, item 7: the OFF reader said "vertex 0" and "face 0" beside 1-based line numbers. It
+// counts vertices and faces from 1 now, "vertex 3 of 3", as the Medit, poly and TetGen readers
+// do; a vertex number inside a face is quoted as the file writes it, from 0, with its range.
+TEST(Off, MessagesNumberVerticesAndFacesFromOne) {
+  const std::string head = "OFF\n3 2 0\n0 0 0\n1 0 0\n";
+  expect_parse_error(head + "0 1 inf\n3 0 1 2\n3 0 2 1\n", kReadOff, 5, "vertex 3 of 3 z is not finite");
+  expect_parse_error(head + "0 1 0\n3 0 1 2\n3 0 2\n", kReadOff, 7, "face 2 of 2: expected 3 vertex numbers");
+  expect_parse_error(head + "0 1 0\n3 0 1 2\n3 0 2 3\n", kReadOff, 7, "face 2 of 2: vertex number 3 out of range 0..2");
 }
 
 TEST(Off, WriterRefusesWhatOffCannotHold) {
@@ -549,10 +559,10 @@ TEST(OffSurface, ReadsPolygonsAsFacetsWithTheirColoursSkipped) {
   EXPECT_EQ(plc.facets[0].marker, 0);
   EXPECT_EQ(plc.vertex_markers, std::vector<int>(5, 0));
   const auto read = [](std::istream& s) { read_off_surface(s, "input.txt"); };
-  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2\n", read, 7, "face 0: expected 4 vertex numbers, found 3");
+  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2\n", read, 7, "face 1 of 1: expected 4 vertex numbers, found 3");
   expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 4\n", read, 7, "vertex number 4 out of range");
   expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 1 2\n", read, 7, "2 numbers after the vertex numbers");
-  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 1\n", read, 7, "face 0 has 2 vertices; a face needs 3");
+  expect_parse_error("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 1\n", read, 7, "face 1 of 1 has 2 vertices; a face needs 3");
 }
 
 TEST(ObjSurface, ReadsFacesOfEveryCornerFormAndNegativeNumbers) {
