@@ -24,7 +24,8 @@ using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecas
 using IndexArray = py::array_t<std::uint32_t, py::array::c_style>;
 
 // An (n, columns) float64 C-contiguous array: `obj` itself when it is one, else a converted
-// copy. Throws InputError naming `what` for another shape or a non-numeric dtype.
+// copy. Throws InputError naming `what` for another shape or a non-numeric dtype, and naming
+// `what`, the row and the column (0-based, as numpy indexes) for a value that is not finite.
 DoubleArray double_rows(const py::handle& obj, py::ssize_t columns, const char* what);
 // An (n, 2) or (n, 3) float64 array of points; `dimension` receives 2 or 3.
 DoubleArray point_rows(const py::handle& obj, int& dimension, const char* what = "points");

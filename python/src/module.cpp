@@ -2,7 +2,9 @@
 // package (python/dtlab/__init__.py) wraps the results in a Mesh and documents the API.
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "kernel/error.hpp"
 #include "python/src/arrays.hpp"
@@ -21,6 +23,16 @@ DoubleArray double_rows(const py::handle& obj, py::ssize_t columns, const char* 
   if (a.ndim() == 1 && a.shape(0) == 0 && columns > 0) return DoubleArray(std::vector<py::ssize_t>{0, columns});
   if (a.ndim() != 2 || (columns > 0 && a.shape(1) != columns))
     throw InputError(std::string(what) + ": shape (n, " + std::to_string(columns) + ") expected");
+  // Up front, before any algorithm: a NaN coordinate reached optimize as "triangle 1 is not
+  // strictly counter-clockwise" and element_quality as a NaN quality.
+  const py::ssize_t width = a.shape(1);
+  for (py::ssize_t k = 0; k < a.shape(0) * width; ++k)
+    if (!std::isfinite(a.data()[k])) {
+      std::ostringstream text;
+      text << what << ": row " << k / width << ", column " << k % width << " is " << a.data()[k]
+           << " (" << what << "[" << k / width << ", " << k % width << "]): every value must be finite";
+      throw InputError(text.str(), {static_cast<std::uint64_t>(k / width)});
+    }
   return a;
 }
 

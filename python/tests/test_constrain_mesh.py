@@ -176,3 +176,33 @@ def test_write_to_a_missing_folder_is_refused(tmp_path):
         m.write(str(tmp_path / "nodir" / "m.mesh"))
     m.write(str(tmp_path / "m.mesh"))
     assert sorted(p.name for p in tmp_path.iterdir()) == ["m.mesh"]
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_non_finite_points_are_named_by_array_row_and_column(bad):
+    # Issue 42, item 7: optimize called a NaN coordinate "triangle 1 is not strictly
+    # counter-clockwise", verify reported a problem, element_quality returned NaN.
+    points = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], float)
+    cells = np.array([[0, 1, 2], [0, 2, 3]])
+    points[2, 1] = bad
+    square = np.array([[0, 1], [1, 2], [2, 3], [3, 0]])
+    calls = {
+        "delaunay": lambda: dtlab.delaunay(points),
+        "constrain": lambda: dtlab.constrain(points, square),
+        "mesh": lambda: dtlab.mesh(points, square, size=0.5),
+        "optimize": lambda: dtlab.optimize(points, cells),
+        "quality": lambda: dtlab.quality(points, cells),
+        "element_quality": lambda: dtlab.element_quality(points, cells),
+        "verify": lambda: dtlab.verify(points, cells),
+    }
+    for name, call in calls.items():
+        with pytest.raises(dtlab.InputError, match=r"^points: row 2, column 1 is -?(nan|inf)") as e:
+            call()
+        assert e.value.items == [2], name
+    good = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], float)
+    holes = np.array([[0.5, 0.5], [0.2, bad]])
+    with pytest.raises(dtlab.InputError, match=r"^holes: row 1, column 1 is"):
+        dtlab.mesh(good, square, holes=holes, size=0.5)
+    points3 = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, bad]], float)
+    with pytest.raises(dtlab.InputError, match=r"^points: row 3, column 2 is"):
+        dtlab.quality(points3, np.array([[0, 1, 2, 3]]))
