@@ -1,13 +1,18 @@
-// The `dtlab` command: one binary, one subcommand per capability as it lands.
+// The `dtlab` command: one binary, one subcommand per capability as it lands. main() is in
+// apps/main.cpp; this is the library's entry (apps/run.hpp).
 #include <exception>
 #include <iostream>
 #include <new>
 
+#include "apps/run.hpp"
 #include "apps/subcommands.hpp"
 #include "dtlab/build_info.hpp"
 #include "kernel/error.hpp"
 
-int main(int argc, char** argv) {
+namespace dtlab::cli {
+
+int run(int argc, char** argv) {
+  exit_code() = 0;
   CLI::App app{"dtlab: robust Delaunay triangulation and meshing on exact predicates"};
   app.require_subcommand(0, 1);
   app.set_version_flag("--version",
@@ -48,3 +53,5 @@ int main(int argc, char** argv) {
   }
   return dtlab::cli::exit_code();
 }
+
+}  // namespace dtlab::cli
