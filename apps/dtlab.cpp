@@ -33,11 +33,15 @@ int run(int argc, char** argv) {
   dtlab::cli::add_selfcheck(app);
   // Exit codes (docs/cli.md): 0 done, 1 refused (bad input or options, an unwritable output,
   // out of memory, an internal error: the message says which), 3 a --verify check failed;
-  // nothing else. CLI11's own codes (105, 106, 109, ...) are folded into 1.
+  // nothing else. CLI11's own codes (105, 106, 109, ...) are folded into 1, its message prefixed.
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 1;  // --help and --version exit 0
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help and --version print and exit 0
+    // A bad option or value: one line naming it, like every other refusal (not CLI11's two lines,
+    // whose first has no `dtlab:`).
+    std::cerr << "dtlab: " << e.what() << " (see --help)\n";
+    return 1;
   } catch (const dtlab::Error& e) {
     std::cerr << "dtlab: " << e.what() << "\n";
     return 1;

@@ -368,6 +368,15 @@ elseif(CASE STREQUAL "bad_size")
   expect_failure("--size")
   run(quality sq.mesh --size=-2.5)
   expect_failure("--size -2\\.5")
+  # Sizes a metric cannot hold (kernel/metric.hpp, check_size: [2^-170, 2^170], so that H^-2 and
+  # the 3D determinant are normal doubles): refused naming --size, not later as "the metric at
+  # vertex 0 is not positive definite" (bad-input matrix).
+  foreach(size 1e300 1e-300 1e154 1e-154)
+    run(quality sq.mesh --size ${size})
+    expect_input_error("^dtlab: --size" "representable range")
+  endforeach()
+  run(quality sq.mesh --size 1e-50)
+  expect_success()
 
 elseif(CASE STREQUAL "bad_options")
   constrain_square()
@@ -382,6 +391,12 @@ elseif(CASE STREQUAL "bad_options")
   write_scalar_sol(h3.sol 3 30 1)
   run(quality x.ele --background sq.mesh --metric h3.sol)
   expect_failure("--background" "2D meshes only")
+  # CLI11's refusals (a value out of range, not a number, an unknown option) are one line that
+  # starts with `dtlab:`, like every other refusal (bad-input matrix).
+  foreach(args "selfcheck;--cases;0" "quality;sq.mesh;--nope" "delaunay;--random;abc")
+    run(${args})
+    expect_input_error("^dtlab: [^\n]*--[a-z]+[^\n]*\n$")
+  endforeach()
 
 else()
   message(FATAL_ERROR "unknown CASE '${CASE}'")
