@@ -65,6 +65,7 @@ int run_reconstruct2(const AdaptRequest& request, const MeshData2& input, const 
   if (request.keep_boundary) throw InputError("--keep-boundary: the reconstruction cuts the boundary anew (use --method local)");
   Reconstruct2dOptions options;
   options.ridge_angle = request.ridge_angle;
+  options.max_elements = request.max_elements;
   const QualityReport before = measure_quality(input.vertices, input.triangles, metrics);
   Reconstruct2dResult r;
   try {
@@ -114,6 +115,7 @@ int run_adapt2(const AdaptRequest& request) {
 
   Adapt2dOptions options;
   options.max_rounds = request.max_rounds;
+  options.max_elements = request.max_elements;
   options.ridge_angle = request.ridge_angle;
   if (request.boundary_deviation) options.boundary_deviation = *request.boundary_deviation;
   options.boundary_changes = !request.keep_boundary;
@@ -177,6 +179,10 @@ void add_adapt(CLI::App& app) {
       ->check(CLI::IsMember({"local", "reconstruct"}));
   cmd->add_option("--hgrad", request->hgrad, "Bound the metric's growth along the input's edges by G first (G >= 1)");
   cmd->add_option("--rounds", request->max_rounds, "At most this many rounds (default 12)")->check(CLI::Range(1u, 1000u));
+  cmd->add_option("--max-elements", request->max_elements,
+                  "Refuse, before any change, a metric that asks for more elements than this (estimated from its "
+                  "complexity; default: half this machine's memory at the bytes an element costs)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 48));
   cmd->add_option("--ridge-angle", request->ridge_angle,
                   "Boundary vertices where the boundary turns by more than this many degrees are corners, kept (45)");
   cmd->add_option("--hausd", request->boundary_deviation,

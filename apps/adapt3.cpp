@@ -78,6 +78,7 @@ int run_adapt3(const AdaptRequest& request) {
   }();
   Adapt3dOptions options;
   options.max_rounds = request.max_rounds;
+  options.max_elements = request.max_elements;
   const Adapt3dStats stats = adapt3d(mesh, control, options);
   outputs.write(request.output, [&](const std::string& path) { write_mesh3(path, output_data(mesh, input)); });
   outputs.commit();

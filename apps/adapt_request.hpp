@@ -27,6 +27,7 @@ struct AdaptRequest {
   std::optional<double> boundary_deviation;
   bool keep_boundary = false;
   std::string output_metric;  // write the metric at the output's vertices (Medit .sol) when given
+  std::uint64_t max_elements = 0;  // Adapt2d/3dOptions::max_elements (0: from the memory)
 };
 
 }  // namespace dtlab::cli

@@ -12,6 +12,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/adapt/metric_from_solution.hpp"
@@ -84,6 +85,16 @@ void report(const MetricArgs& args, const SolutionMetricStats& s, std::size_t ve
   std::cout << json.str() << "\n";
 }
 
+// The library's refusals (Hessian recovery, the default sizes, the complexity) name the mesh.
+template <class Compute>
+auto named(const MetricArgs& args, const Compute& compute) {
+  try {
+    return compute();
+  } catch (const InputError& e) {
+    throw InputError(args.mesh + ": " + e.what(), e.items());
+  }
+}
+
 int run_metric(const MetricArgs& args) {
   if (args.solutions.empty()) throw InputError("give --solution U.sol (a scalar field at the mesh's vertices)");
   if (args.norm == "Lp" && !args.p_given) throw InputError("--norm Lp needs --p P (p >= 1), the exponent of the norm");
@@ -94,19 +105,29 @@ int run_metric(const MetricArgs& args) {
     throw InputError("give either --complexity N (about the vertex count wanted) or --error EPS (L-infinity only)");
   if (args.complexity && !(*args.complexity > 0.0))
     throw InputError("--complexity " + std::to_string(*args.complexity) + ": give a positive number of vertices");
+  // The options' values, named as the command line spells them (the library names its parameters).
+  for (const auto& [value, name] : {std::pair{args.error, "--error"}, std::pair{args.relative, "--relative"},
+                                    std::pair{args.hmin, "--hmin"}, std::pair{args.hmax, "--hmax"}}) {
+    if (value && !(std::isfinite(*value) && *value > 0.0))
+      throw InputError(std::string(name) + " " + json_number(*value) + ": give a positive finite value");
+  }
+  if (args.hgrad && !(std::isfinite(*args.hgrad) && *args.hgrad >= 1.0))
+    throw InputError("--hgrad " + json_number(*args.hgrad) + ": give a gradation G >= 1");
+  if (args.hmin && args.hmax && *args.hmin > *args.hmax)
+    throw InputError("--hmin " + json_number(*args.hmin) + " exceeds --hmax " + json_number(*args.hmax));
   const SolutionMetricOptions options = options_of(args);
   StagedOutputs outputs({args.output});
   SolutionMetricStats stats;
   if (input_dimension(args.mesh) == 3) {
     const MeshData3 mesh = read_mesh3(args.mesh);
     const auto fields = read_fields(args, mesh.vertices.size(), 3);
-    const auto metrics = metric_from_solutions(mesh.vertices, mesh.tetrahedra, fields, options, &stats);
+    const auto metrics = named(args, [&] { return metric_from_solutions(mesh.vertices, mesh.tetrahedra, fields, options, &stats); });
     outputs.write(args.output, [&](const std::string& path) { write_medit_sol(path, sol_from_metrics(metrics)); });
     report(args, stats, mesh.vertices.size());
   } else {
     const MeshData2 mesh = read_mesh2(args.mesh);
     const auto fields = read_fields(args, mesh.vertices.size(), 2);
-    const auto metrics = metric_from_solutions(mesh.vertices, mesh.triangles, fields, options, &stats);
+    const auto metrics = named(args, [&] { return metric_from_solutions(mesh.vertices, mesh.triangles, fields, options, &stats); });
     outputs.write(args.output, [&](const std::string& path) { write_medit_sol(path, sol_from_metrics(metrics)); });
     report(args, stats, mesh.vertices.size());
   }

@@ -53,6 +53,7 @@ struct OptimizeArgs {
   bool no_remesh = false;
   bool stats = false;
   bool list = false;
+  std::uint64_t max_elements = 0;  // Optimize2d/3dOptions::max_elements (0: from the memory)
 };
 
 // The operators of a round, name tab description, for `dimension` (0: both, under headings).
@@ -144,6 +145,7 @@ int run_optimize3(const OptimizeArgs& args) {
   const QualityReport report_before = measure_quality(before.data.vertices, before.data.tetrahedra, before.metrics);
   Optimize3dOptions options;
   options.max_rounds = args.rounds;
+  options.max_elements = args.max_elements;
   options.collapses = options.splits = !args.shape_only;
   const Optimize3dStats stats = optimize3d(mesh, options, field);
   // What the operators leave below 20 degrees, meshed again (algorithms/mesh3d/local_remesh.hpp).
@@ -226,6 +228,7 @@ int run_optimize(const OptimizeArgs& args) {
   const QualityReport report_before = measure_quality(before.data.vertices, before.data.triangles, before.metrics);
   Optimize2dOptions options;
   options.max_rounds = args.rounds;
+  options.max_elements = args.max_elements;
   options.collapses = options.splits = !args.shape_only;
   options.split.boundary = args.boundary_splits;
   options.valence = args.valence;
@@ -271,6 +274,10 @@ void add_optimize(CLI::App& app) {
   CLI::Option* size = cmd->add_option("--size", args->size, "Optimize toward the isotropic size H (the metric H^-2 I)");
   cmd->add_option("--rounds", args->rounds, "At most this many rounds of the strategy (default 8)")
       ->check(CLI::Range(0u, 1000u));
+  cmd->add_option("--max-elements", args->max_elements,
+                  "With a size or metric: refuse, before any change, one that asks for more elements than this "
+                  "(estimated from its complexity; default: half this machine's memory at the bytes an element costs)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 48));
   cmd->add_flag("--shape-only", args->shape_only, "No collapses or splits: swaps and relocation only");
   cmd->add_flag("--split-boundary", args->boundary_splits,
                 "Split long boundary edges too (2D only: the new points lie on them, their references kept)");

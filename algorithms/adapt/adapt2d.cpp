@@ -45,6 +45,7 @@ Adapt2dStats adapt2d(Mesh2& mesh, const ControlSpace2& metric, const Adapt2dOpti
   Optimize2dOptions o;
   o.max_rounds = options.max_rounds;
   o.interrupt = options.interrupt;
+  o.max_elements = options.max_elements;
   o.split.boundary = options.boundary_changes;
   o.boundary_collapses = options.boundary_changes;
   o.collapse.boundary_deviation = stats.boundary_deviation;

@@ -38,6 +38,9 @@ struct Adapt2dOptions {
   double boundary_deviation = -1.0;
   bool smooth_boundary = true;  // boundary splits on the support; false: on the chord
   bool boundary_changes = true;  // false: the boundary is kept as it is (no split, no collapse)
+  // The triangles the metric may ask for (Optimize2dOptions::max_elements, checked before any
+  // change; 0: half this machine's memory).
+  std::uint64_t max_elements = 0;
   // Asked before each round and each pass (kernel/interrupt.hpp).
   InterruptCheck interrupt{};
 };

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "algorithms/common/element_estimate.hpp"
 #include "algorithms/optimize3d/boundary_split.hpp"
 #include "kernel/error.hpp"
 
@@ -24,10 +25,14 @@ Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOpti
   stats.before = domain_quality(mesh);
   if (stats.before.elements == 0) throw InputError("adapt3d: the mesh has no tetrahedron in its domain");
 
+  const element_estimate::Checked checked = element_estimate::check_elements("adapt3d", mesh, field, options.max_elements);
   Optimize3dOptions round;
   round.max_rounds = 1;
   round.relocation_sweeps = options.relocation_sweeps;
   round.split.max_vertices = options.max_vertices;
+  if (checked.limit != element_estimate::kNoElementLimit)
+    round.split.max_vertices = std::min<std::uint64_t>(options.max_vertices, checked.limit / 3 + mesh.live_vertex_count());
+  round.max_elements = element_estimate::kNoElementLimit;  // estimated above
   double share = stats.before.unit_edge_share;
   stats.stopped_by = "max_rounds";
   for (std::uint32_t r = 0; r < options.max_rounds; ++r) {

@@ -28,6 +28,10 @@ struct Adapt3dOptions {
   double share_tolerance = 1e-3;
   std::uint32_t relocation_sweeps = 2;  // per round
   std::uint64_t max_vertices = 20'000'000;
+  // The tetrahedra the metric may ask for, estimated before any change from its complexity
+  // (algorithms/common/element_estimate.hpp): past it, InputError with the estimate, and the
+  // vertex bound is lowered to a third of it. 0: half this machine's memory.
+  std::uint64_t max_elements = 0;
   bool boundary = true;  // split constrained edges longer than sqrt2 (algorithms/optimize3d/boundary_split.hpp)
 };
 

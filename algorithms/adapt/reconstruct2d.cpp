@@ -215,6 +215,7 @@ Reconstruct2dResult reconstruct2d(const MeshData2& previous, const ControlSpace2
   o.control = &control;
   o.interpolation = options.interpolation;
   o.interrupt = options.interrupt;
+  o.max_elements = options.max_elements;
   result.generated = mesh2d(input, o);
   result.segments = segments.size();
   result.merged_chains = s.merged;

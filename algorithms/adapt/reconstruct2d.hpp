@@ -28,6 +28,7 @@ struct Reconstruct2dOptions {
   std::string method = "edge";  // mesh2d's field points: "edge" or "front"
   double ridge_angle = 45.0;    // degrees: boundary vertices turning more are corners
   MetricInterpolation interpolation = MetricInterpolation::Sizes;
+  std::uint64_t max_elements = 0;  // Mesh2dOptions::max_elements
   InterruptCheck interrupt{};
 };
 

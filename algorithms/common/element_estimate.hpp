@@ -229,4 +229,29 @@ Estimate estimate_elements(const Mesh& mesh, const MetricAt& metric_at) {
   return e;
 }
 
+// The check every operation that works toward a metric makes first (the meshers, the
+// optimization with splits, adaptation): the estimate over `mesh`'s domain, refused past
+// `max_elements` with `where` in the message. max_elements 0: the machine's default for the
+// dimension; kNoElementLimit: no estimate (a caller that made it already). Returns the limit used
+// (kNoElementLimit when none) and the estimate.
+struct Checked {
+  std::uint64_t limit = 0;
+  Estimate estimate;
+};
+inline constexpr std::uint64_t kNoElementLimit = ~std::uint64_t{0};
+
+template <class Mesh, class MetricAt>
+Checked check_elements(const std::string& where, const Mesh& mesh, const MetricAt& metric_at, std::uint64_t max_elements) {
+  constexpr bool kPlanar = std::is_same_v<Mesh, Mesh2>;
+  Checked c;
+  if (max_elements == kNoElementLimit) {
+    c.limit = kNoElementLimit;
+    return c;
+  }
+  c.limit = max_elements ? max_elements : default_max_elements(kPlanar ? kBytesPerTriangle : kBytesPerTetrahedron);
+  c.estimate = estimate_elements(mesh, metric_at);
+  check_limit(where, c.estimate.elements, c.limit, kPlanar ? "triangles" : "tetrahedra", c.estimate.detail());
+  return c;
+}
+
 }  // namespace dtlab::element_estimate

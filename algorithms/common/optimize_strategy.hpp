@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithms/common/element_estimate.hpp"
 #include "algorithms/common/registry.hpp"
 #include "kernel/interrupt.hpp"
 
@@ -36,6 +37,10 @@ struct OptimizeRoundOptions {
   // A round's operators in order, names from the dimension's operator registry (registry.hpp);
   // empty: every operator of the registry in its order (the book's, as before the registries).
   std::vector<std::string> sequence{};
+  // With splits toward a metric field, the elements it asks for are estimated before the first
+  // round (element_estimate.hpp) and refused past this: 0, half this machine's memory at the
+  // bytes an element costs; element_estimate::kNoElementLimit, no estimate (a mesher that made it).
+  std::uint64_t max_elements = 0;
   // Asked before each round and each pass of a round (kernel/interrupt.hpp); yes: Interrupted.
   InterruptCheck interrupt{};
 };
@@ -133,7 +138,7 @@ struct RoundState {
 };
 
 // The rounds. `Dim` derives from RoundState, names the point of an interrupt at the start of a
-// round `kRoundStart`, and provides (its Summary has `worst` and `mean`):
+// round `kRoundStart` and its name in messages `kName`, and provides (its Summary has `worst` and `mean`):
 //   Summary scan()                                      the quality before the rounds and after each;
 //   RoundResult round(uint32_t r, const Summary& last)  round r's operators (run_operators);
 //   RoundGoal goal(const Summary& now)                  asked once after each round's scan;
@@ -144,6 +149,10 @@ auto optimize_rounds(Dim&& dim) {
   const auto start = std::chrono::steady_clock::now();
   const auto& options = dim.options;
   auto& stats = dim.stats;
+  if (dim.field && options.splits) {
+    element_estimate::check_elements(
+        dim.kName, dim.mesh, [&](const auto& p) { return dim.field(p); }, options.max_elements);
+  }
   const auto before = dim.scan();
   stats.worst_before = before.worst;
   stats.mean_before = before.mean;

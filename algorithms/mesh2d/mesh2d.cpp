@@ -84,15 +84,12 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   const bool sized = options.control || !options.input_metrics.empty();
   if (sized) {
     // The work the size asks for, estimated before any point is made (element_estimate.hpp).
-    const std::uint64_t limit = options.max_elements
-                                    ? options.max_elements
-                                    : element_estimate::default_max_elements(element_estimate::kBytesPerTriangle);
     std::uint32_t hint = ControlSpace2::kNoHint;
-    const element_estimate::Estimate estimate =
-        element_estimate::estimate_elements(result.mesh, [&](const Vec2& p) { return control.metric_at(p, hint); });
-    result.stats.estimated_triangles = estimate.elements;
-    element_estimate::check_limit("mesh2d", estimate.elements, limit, "triangles", estimate.detail());
-    bounded.max_vertices = std::min<std::uint64_t>(options.max_vertices, limit + input.points.size());
+    const element_estimate::Checked checked = element_estimate::check_elements(
+        "mesh2d", result.mesh, [&](const Vec2& p) { return control.metric_at(p, hint); }, options.max_elements);
+    result.stats.estimated_triangles = checked.estimate.elements;
+    if (checked.limit != element_estimate::kNoElementLimit)
+      bounded.max_vertices = std::min<std::uint64_t>(options.max_vertices, checked.limit + input.points.size());
     // The boundary cut in the metric where it is longer than sqrt 2, then the empty mesh of the
     // new boundary (the control space stays the one built on the input).
     const ResampledBoundary boundary = resample_boundary(input, control, bounded);
@@ -123,7 +120,8 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
     // Moved and new points take their metric from the control space (one walk hint for all).
     std::uint32_t field_hint = 0;
     const MetricField2 field = mesh_pipeline::metric_field<MetricField2>(control, field_hint);
-    const Optimize2dOptions optimization = mesh_pipeline::with_interrupt(options.optimization, options.interrupt);
+    Optimize2dOptions optimization = mesh_pipeline::with_interrupt(options.optimization, options.interrupt);
+    optimization.max_elements = element_estimate::kNoElementLimit;  // estimated above
     const Optimize2dStats o = optimize2d(result.mesh, optimization, field);
     result.stats.swaps = o.swaps + o.valence_swaps;
     result.stats.relocations = o.relocations;

@@ -68,17 +68,12 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   Mesh3dOptions bounded = options;
   if (options.control) {
     // The work the size asks for, estimated before any point is made (element_estimate.hpp).
-    if (options.max_elements != kNoElementLimit) {
-      const std::uint64_t limit = options.max_elements
-                                      ? options.max_elements
-                                      : element_estimate::default_max_elements(element_estimate::kBytesPerTetrahedron);
-      std::uint32_t hint = ControlSpace3::kNoHint;
-      const element_estimate::Estimate estimate =
-          element_estimate::estimate_elements(result.mesh, [&](const Vec3& p) { return control.metric_at(p, hint); });
-      result.stats.estimated_tetrahedra = estimate.elements;
-      element_estimate::check_limit("mesh3d", estimate.elements, limit, "tetrahedra", estimate.detail());
-      bounded.max_vertices = std::min<std::uint64_t>(options.max_vertices, limit / 3 + input.points.size());
-    }
+    std::uint32_t hint = ControlSpace3::kNoHint;
+    const element_estimate::Checked checked = element_estimate::check_elements(
+        "mesh3d", result.mesh, [&](const Vec3& p) { return control.metric_at(p, hint); }, options.max_elements);
+    result.stats.estimated_tetrahedra = checked.estimate.elements;
+    if (checked.limit != kNoElementLimit)
+      bounded.max_vertices = std::min<std::uint64_t>(options.max_vertices, checked.limit / 3 + input.points.size());
     // The surface cut in the size: its constrained edges longer than sqrt 2, split longest first
     // whatever the quality of the empty mesh's tetrahedra around them (those are meshed again).
     if (!options.keep_boundary) {
@@ -123,7 +118,8 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
     renumber_spatially(result.mesh);
     std::uint32_t field_hint = 0;
     const MetricField3 field = mesh_pipeline::metric_field<MetricField3>(control, field_hint);
-    const Optimize3dOptions optimization = mesh_pipeline::with_interrupt(options.optimization, options.interrupt);
+    Optimize3dOptions optimization = mesh_pipeline::with_interrupt(options.optimization, options.interrupt);
+    optimization.max_elements = kNoElementLimit;  // estimated above
     const Optimize3dStats o = optimize3d(result.mesh, optimization, field);
     result.stats.face_swaps = o.face_swaps;
     result.stats.shell_transformations = o.shell_transformations;

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/common/element_estimate.hpp"
 #include "algorithms/constrained3d/constrained3d.hpp"
 #include "algorithms/mesh3d/control_space.hpp"
 #include "algorithms/optimize3d/optimize3d.hpp"
@@ -38,7 +39,7 @@ template <class Entry>
 class Registry;  // algorithms/common/registry.hpp
 struct FieldPointMethod3;  // registry.hpp
 
-inline constexpr std::uint64_t kNoElementLimit = ~std::uint64_t{0};
+using element_estimate::kNoElementLimit;
 
 struct Mesh3dOptions {
   // Field point placement: "edge" (the edge method, §7.5-§7.7). The advancing-front placement

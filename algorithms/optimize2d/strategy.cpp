@@ -97,6 +97,7 @@ namespace {
 // The 2D part of the round loop (algorithms/common/optimize_strategy.hpp): a round's operators.
 struct Rounds2 : optimize_detail::RoundState<Mesh2, Optimize2dOptions, MetricField2, Optimize2dStats> {
   static constexpr const char* kRoundStart = "optimize2d: at the start of a round";
+  static constexpr const char* kName = "optimize2d";
 
   QualitySummary2 scan() const { return summarize_quality(mesh); }
   optimize_detail::RoundGoal goal(const QualitySummary2&) const { return {}; }

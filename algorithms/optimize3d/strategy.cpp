@@ -276,6 +276,7 @@ namespace {
 // the goal, and the dihedral step after the rounds.
 struct Rounds3 : optimize_detail::RoundState<Mesh3, Optimize3dOptions, MetricField3, Optimize3dStats> {
   static constexpr const char* kRoundStart = "optimize3d: at the start of a round";
+  static constexpr const char* kName = "optimize3d";
   std::vector<Optimize3dOperator> sequence;  // options.sequence's operators
   const Optimize3dOptions* goal_options = goal_asked(options) ? &options : nullptr;
   std::vector<std::uint8_t> flags{};  // the last scan's goal flags, by tetrahedron slot

@@ -9,7 +9,7 @@ if(NOT TARGET dtlab_cli)
   return()
 endif()
 
-foreach(_dtlab_case size_keeps_boundary split_boundary own_sizes sol_metric empty_mesh bad_input list_operators)
+foreach(_dtlab_case size_keeps_boundary split_boundary own_sizes sol_metric empty_mesh bad_input list_operators element_limit)
   add_test(NAME cli_optimize_${_dtlab_case}
            COMMAND ${CMAKE_COMMAND} -DDTLAB=$<TARGET_FILE:dtlab_cli>
                    -DPOLY=${PROJECT_SOURCE_DIR}/data/square_with_hole.poly

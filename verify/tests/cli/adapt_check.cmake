@@ -92,6 +92,15 @@ elseif(CASE STREQUAL "three_d")
   endif()
   run(adapt c.mesh --metric f.sol -o e.mesh --method reconstruct)
   expect_failure("reconstruct")
+  # Issue 42, item 4: a metric asking for past --max-elements (or the size 1e-50: 10^150
+  # tetrahedra) is refused before any change, with the estimate; nothing written.
+  run(adapt c.mesh --metric f.sol -o e.mesh --max-elements 100)
+  expect_input_error("adapt3d: the size or metric asks for about [0-9.e+]+ tetrahedra" "limit of 100 ")
+  expect_no_output(e.mesh)
+  execute_process(COMMAND python3 "${FIELD}" c.mesh huge.sol size:1e-50 WORKING_DIRECTORY "${WORK}")
+  run(adapt c.mesh --metric huge.sol -o e.mesh)
+  expect_input_error("asks for about")
+  expect_no_output(e.mesh)
 
 elseif(CASE STREQUAL "reconstruct")
   # --method reconstruct: the square minus the disc generated anew for the linear field; the

@@ -43,25 +43,6 @@ MEMORY_LIMIT = 2 << 30  # address space of each run (RLIMIT_AS)
 # Runs that fail today, each with the issue item it waits for. Patterns are fnmatch patterns on
 # "RUN_ID OUTCOME" (both printed in the failure list), so an entry never hides another symptom. Keep this list short: fix what is not ours to wait for.
 KNOWN_FAILURES: dict[str, str] = {
-    # Issue 42 item 4 (bounded work for tiny sizes; dtlab mesh is being fixed by another
-    # engineer): --size 1e-9 on the unit square asks for ~1e18 elements; `dtlab mesh` says only
-    # "out of memory" (no option named), the Python twin raises MemoryError "std::bad_alloc".
-    "mesh:options:*size=1e-9 unnamed": "issue 42 item 4",
-    "py:mesh:size=1e-9 exception": "issue 42 item 4",
-    # The same unbounded work in the optimizer (algorithms/optimize2d splits toward the size
-    # until the time limit). Found by this matrix; waits for item 4's bound to reach optimize.
-    "optimize:options:2d:size=1e-9 timeout": "issue 42 item 4 (optimize's share, found here)",
-    "py:optimize:size=1e-9 timeout": "issue 42 item 4 (optimize's share, found here)",
-    # dtlab adapt with a metric of eigenvalue 1e300 on a 4-vertex square (sizes 1e-150) runs past
-    # the time limit even with --rounds 2 (algorithms/adapt). Found here; waits for item 4's bound.
-    "adapt:sol2:metric_huge timeout": "issue 42 item 4 (adapt's share, found here)",
-    # dtlab metric (apps/metric.cpp, algorithms/adapt: the adaptation work's files) refuses with
-    # the parameter's internal name and value ("h_min = 0.000000", "gradation", "error", with
-    # 309 digits for 1e300) instead of the option (--hmin, --hgrad, --error), and Hessian
-    # recovery refuses a mesh without naming the file. Waits for issue 42 item 8's messages to
-    # reach dtlab metric.
-    "metric:options:* unnamed": "issue 42 item 8 (dtlab metric's messages)",
-    "metric:* unnamed": "issue 42 item 8 (dtlab metric's messages)",
     # python/src: a negative or too large integer (threads=-1, max_rounds=10**12) raises
     # pybind11's TypeError "incompatible function arguments", not ValueError.
     "py:delaunay:threads=* exception": "issue 42 (Python twins' integer arguments, python/src)",

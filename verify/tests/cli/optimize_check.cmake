@@ -123,6 +123,19 @@ elseif(CASE STREQUAL "sol_metric")
   run(optimize x.mesh -o z.mesh --metric short.sol)
   expect_failure("short\\.sol")
 
+elseif(CASE STREQUAL "element_limit")
+  # Issue 42, item 4: a size whose splits would make past --max-elements (default: half the
+  # memory) is refused before any change, with the estimate; it ran for minutes.
+  run(mesh "${POLY}" -o in.mesh)
+  expect_success()
+  run(optimize in.mesh --size 1e-9 -o out.mesh)
+  expect_input_error("optimize2d: the size or metric asks for about [0-9.e+]+ triangles" "--max-elements")
+  expect_no_output(out.mesh)
+  run(optimize in.mesh --size 0.05 --max-elements 10 -o out.mesh)
+  expect_input_error("limit of 10 ")
+  expect_no_output(out.mesh)
+  run(optimize in.mesh --size 0.05 --max-elements 1000000 -o out.mesh)
+  expect_success()
 elseif(CASE STREQUAL "empty_mesh")
   # Vertices 0, or vertices and no element, in 2D and 3D, with and without --size (the --size
   # runs crashed, exit 139): refused by name, exit 1, nothing written.
