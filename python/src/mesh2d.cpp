@@ -80,8 +80,9 @@ py::dict mesh_result(MeshData2&& data, std::vector<Metric2>&& metrics, py::dict 
 py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, const py::handle& markers_obj,
               const py::handle& holes_obj, const py::handle& regions_obj, const py::handle& size, const py::handle& metric,
               const py::handle& background_points, const py::handle& background_triangles, const std::string& method,
-              const std::string& interpolation, bool optimize, bool keep_boundary, std::uint64_t max_elements,
+              const std::string& interpolation, bool optimize, bool keep_boundary, long long max_elements,
               bool verify) {
+  if (max_elements < 0) throw InputError("max_elements: " + std::to_string(max_elements) + ": give 0 (the default) or a count");
   const DoubleArray points = double_rows(points_obj, 2, "points");
   if (points.shape(0) == 0) throw InputError("points: no vertices");
   const IndexArray segments = index_rows(segments_obj, 2, "segments");
@@ -103,7 +104,7 @@ py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, cons
   options.optimize = optimize;
   options.interrupt = python_interrupt_check();
   options.keep_boundary = keep_boundary;
-  options.max_elements = max_elements;
+  options.max_elements = static_cast<std::uint64_t>(max_elements);
   if (interpolation != "sizes" && interpolation != "log-euclidean")
     throw InputError("interpolation: 'sizes' or 'log-euclidean', not '" + interpolation + "'");
   options.interpolation = interpolation == "log-euclidean" ? MetricInterpolation::LogEuclidean : MetricInterpolation::Sizes;
@@ -171,7 +172,9 @@ py::dict mesh(const py::handle& points_obj, const py::handle& segments_obj, cons
 
 py::dict optimize(const py::handle& points_obj, const py::handle& cells_obj, const py::handle& cell_refs,
                   const py::handle& boundary_obj, const py::handle& boundary_refs, const py::handle& size,
-                  const py::handle& metric, std::uint32_t max_rounds, bool shape_only, bool boundary_splits, bool valence) {
+                  const py::handle& metric, long long max_rounds, bool shape_only, bool boundary_splits, bool valence) {
+  if (max_rounds < 0 || max_rounds > 1000)
+    throw InputError("max_rounds: " + std::to_string(max_rounds) + ": give 0 to 1000 rounds");
   const DoubleArray points = double_rows(points_obj, 2, "points");
   const IndexArray cells = index_rows(cells_obj, 3, "cells");
   const IndexArray boundary = index_rows(boundary_obj, 2, "boundary_cells");
@@ -208,7 +211,7 @@ py::dict optimize(const py::handle& points_obj, const py::handle& cells_obj, con
   }
   Optimize2dOptions options;
   options.interrupt = python_interrupt_check();
-  options.max_rounds = max_rounds;
+  options.max_rounds = static_cast<std::uint32_t>(max_rounds);
   options.collapses = options.splits = !shape_only;
   options.split.boundary = boundary_splits;
   options.valence = valence;
@@ -254,7 +257,7 @@ void bind_mesh2d(py::module_& m) {
         py::arg("keep_boundary") = false, py::arg("max_elements") = 0, py::arg("verify") = false);
   m.def("optimize", &optimize, py::arg("points"), py::arg("cells"), py::arg("cell_refs") = py::none(),
         py::arg("boundary_cells") = py::none(), py::arg("boundary_refs") = py::none(), py::arg("size") = py::none(),
-        py::arg("metric") = py::none(), py::arg("max_rounds") = Optimize2dOptions{}.max_rounds,
+        py::arg("metric") = py::none(), py::arg("max_rounds") = static_cast<long long>(Optimize2dOptions{}.max_rounds),
         py::arg("shape_only") = false, py::arg("boundary_splits") = false, py::arg("valence") = false);
 }
 

@@ -29,8 +29,12 @@ namespace {
 
 constexpr std::uint64_t kDefaultSeed = Delaunay2dOptions{}.seed;
 
-py::dict delaunay(const py::handle& points_obj, const std::string& algo, unsigned threads, std::uint64_t seed,
+py::dict delaunay(const py::handle& points_obj, const std::string& algo, long long threads_asked, std::uint64_t seed,
                   bool verify, bool canonical) {
+  // A Python int of any sign: refused by name out of range (pybind11 would raise its own TypeError).
+  if (threads_asked < 1 || threads_asked > 1024)
+    throw InputError("threads: " + std::to_string(threads_asked) + ": give 1 to 1024 threads");
+  const auto threads = static_cast<unsigned>(threads_asked);
   int dim = 0;
   DoubleArray points = point_rows(points_obj, dim);
   py::dict out, stats;
@@ -276,7 +280,7 @@ py::dict variants() {
 }  // namespace
 
 void bind_triangulate(py::module_& m) {
-  m.def("delaunay", &delaunay, py::arg("points"), py::arg("algo") = "incremental", py::arg("threads") = 1u,
+  m.def("delaunay", &delaunay, py::arg("points"), py::arg("algo") = "incremental", py::arg("threads") = 1,
         py::arg("seed") = kDefaultSeed, py::arg("verify") = false, py::arg("canonical") = true);
   m.def("constrain", &constrain, py::arg("points"), py::arg("constraints"), py::arg("markers") = py::none(),
         py::arg("holes") = py::none(), py::arg("regions") = py::none(), py::arg("method") = "",

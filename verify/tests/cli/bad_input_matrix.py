@@ -43,10 +43,6 @@ MEMORY_LIMIT = 2 << 30  # address space of each run (RLIMIT_AS)
 # Runs that fail today, each with the issue item it waits for. Patterns are fnmatch patterns on
 # "RUN_ID OUTCOME" (both printed in the failure list), so an entry never hides another symptom. Keep this list short: fix what is not ours to wait for.
 KNOWN_FAILURES: dict[str, str] = {
-    # python/src: a negative or too large integer (threads=-1, max_rounds=10**12) raises
-    # pybind11's TypeError "incompatible function arguments", not ValueError.
-    "py:delaunay:threads=* exception": "issue 42 (Python twins' integer arguments, python/src)",
-    "py:optimize:max_rounds=* exception": "issue 42 (Python twins' integer arguments, python/src)",
 }
 
 FORBIDDEN_TEXT = re.compile(r"std::|basic_string|what\(\):|terminate|internal error|Run with --help")
