@@ -9,6 +9,7 @@
 #   expect_no_output(<file...>) none of the files in WORK, and no scratch folder (.dtlab-partial-*)
 #   medit_section(file name count_var refs_var)  a Medit section's count and distinct references
 #   expect_number(what value op bound)  a JSON number compared with a bound (python3)
+#   expect_count_and_unit(key low high unit_low)  after run_mesh_verified: count and unit edges
 #   run_mesh_verified(key <args...>)  dtlab mesh --verify --stats: the ok line, `quality` and
 #                               the count `key` (triangles, tetrahedra) of the last JSON line
 # Include it after setting DTLAB_CLI_REQUIRED to the variables the script needs.
@@ -133,6 +134,15 @@ endfunction()
 # Runs dtlab mesh with --verify --stats; expects success and the verifier's ok line; sets
 # `quality` (the quality object of the last stdout line, a JSON object) and the variable `key`
 # to that line's count of elements, which must be at least 10.
+# After run_mesh_verified(key ...): the count `key` within (low, high) and the share of unit
+# edges above unit_low (a domain with no interior edge still meshed to the size: issue 42).
+macro(expect_count_and_unit key low high unit_low)
+  expect_number("${key}" "${${key}}" ">" ${low})
+  expect_number("${key}" "${${key}}" "<" ${high})
+  string(JSON unit GET "${quality}" unit_edge_share)
+  expect_number("unit edge share" "${unit}" ">" ${unit_low})
+endmacro()
+
 macro(run_mesh_verified key)
   run(mesh ${ARGN} --verify --stats)
   expect_success()

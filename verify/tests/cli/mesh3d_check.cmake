@@ -44,10 +44,7 @@ elseif(CASE STREQUAL "no_interior_edge")
   # (1/6) / (0.05^3 sqrt 2 / 12) = 11,314 unit tetrahedra; it was meshed as 1 tetrahedron.
   file(WRITE ${WORK}/tet.off "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")
   run_verified(tet.off --size 0.05 -o out.mesh)
-  expect_number("tetrahedra" "${tetrahedra}" ">" 6000)
-  expect_number("tetrahedra" "${tetrahedra}" "<" 25000)
-  string(JSON unit GET "${quality}" unit_edge_share)
-  expect_number("unit edge share" "${unit}" ">" 0.9)
+  expect_count_and_unit(tetrahedra 6000 25000 0.9)
 elseif(CASE STREQUAL "element_limit")
   # Issue 42, item 4: a size past the limit is refused at once, with the estimate, and writes nothing.
   run(mesh ${DATA}/quad_cube.off --size 1e-5 -o out.mesh)

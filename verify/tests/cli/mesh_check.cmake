@@ -190,10 +190,7 @@ elseif(CASE STREQUAL "no_interior_edge")
   # 0.5 / (0.01^2 sqrt 3 / 4) = 11,547 unit triangles; it was meshed as 1 triangle.
   file(WRITE ${WORK}/tri.poly "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 1\n1 1 2 1\n2 2 3 1\n3 3 1 1\n0\n")
   run_verified(tri.poly --size 0.01 -o out.mesh)
-  expect_number("triangles" "${triangles}" ">" 8000)
-  expect_number("triangles" "${triangles}" "<" 16000)
-  string(JSON unit GET "${quality}" unit_edge_share)
-  expect_number("unit edge share" "${unit}" ">" 0.95)
+  expect_count_and_unit(triangles 8000 16000 0.95)
 elseif(CASE STREQUAL "element_limit")
   # Issue 42, item 4: sizes whose element count is past the limit are refused at once, with the
   # estimate, and write nothing; --max-elements sets the limit.
