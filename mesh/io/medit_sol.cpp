@@ -387,6 +387,17 @@ std::vector<M> metrics_from_sol(const SolData& sol, const std::string& file) {
       if (!metrics[i].is_positive_definite()) {
         throw InputError(what + "tensor " + components(c) + " is not positive definite", {i});
       }
+      // Bounded eigenvalues: its sizes (lambda^-1/2) representable, as a scalar size's above.
+      for (const double h : sizes(metrics[i])) {
+        if (!is_representable_size(h)) {
+          std::string size;
+          io::append_real(size, h);
+          throw InputError(what + "tensor " + components(c) + " has a size " + size + " out of the representable range " +
+                               components(std::array{kMinMetricSize, kMaxMetricSize}) +
+                               " (its eigenvalues and determinant normal doubles)",
+                           {i});
+        }
+      }
     }
   }
   return metrics;

@@ -616,6 +616,15 @@ TEST(MeditSol, MetricsRefuseTensorsThatAreNotPositiveDefinite) {
   expect_input_error([&] { metrics2_from_sol(h, "h.sol"); }, {"vertex 1", "size (1e-200) is out of the representable range"}, {0});
   h.values = {1, 1e200};  // h^-2 underflows to 0 (it was called an overflow)
   expect_input_error([&] { metrics2_from_sol(h, "h.sol"); }, {"vertex 2", "size (1e+200) is out of the representable range"}, {1});
+  // Tensors: bounded eigenvalues (issue 42): 1e300 I is positive definite, but its size 1e-150
+  // is not representable (its determinant overflows in 2D already).
+  expect_input_error([] { metrics2_from_sol(tensors2({1, 0, 1, 1e300, 0, 1e300}), "t.sol"); },
+                     {"t.sol", "vertex 2", "has a size 1e-150 out of the representable range"}, {1});
+  SolData t3;
+  t3.dimension = 3;
+  t3.kind = SolData::Kind::Tensor;
+  t3.values = {1e-120, 0, 1, 0, 0, 1};  // size 1e60 along x
+  expect_input_error([&] { metrics3_from_sol(t3, "t3.sol"); }, {"vertex 1", "has a size 1e+60 out of"}, {0});
 }
 
 TEST(MeditSol, MetricsRefuseTheOtherDimension) {
