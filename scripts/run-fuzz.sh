@@ -18,7 +18,7 @@ fuzz_seconds=${DTLAB_FUZZ_SECONDS:-60}
 fuzz_seed=${DTLAB_FUZZ_SEED:-20261123}
 declare -A fuzz_runs=([constrained2d_fuzz]=7000 [delaunay2d_fuzz]=10000 [delaunay3d_fuzz]=4000
                       [mesh_readers_fuzz]=100000 [mesh_formats_fuzz]=50000 [predicates_fuzz]=75000
-                      [mesh2d_fuzz]=1500 [mesh3d_fuzz]=2000 [cli_fuzz]=3000)
+                      [mesh2d_fuzz]=1500 [mesh3d_fuzz]=2000 [cli_fuzz]=20000)
 if [ "$fuzz_seed" = random ]; then
   echo "fuzz: exploring, ${fuzz_seconds} s each, ${jobs} at a time"
 else
