@@ -70,7 +70,9 @@ double diagonal(std::span<const typename Traits<D>::Point> points) {
 constexpr double kDefaultMinSize = 1e-8;        // default h_min, relative to the diagonal
 constexpr double kSmallestSize = 1e-9;          // the smallest h_min, relative to the diagonal
 constexpr double kEigenvalueFloor = 1e-12;      // of the largest |H| eigenvalue
-constexpr double kComplexityTolerance = 1e-6;   // relative, delivered vs asked
+constexpr double kComplexityTolerance = 1e-6;   // relative, delivered (clipped) vs asked
+constexpr double kSolveTolerance = 1e-9;        // relative, where the solve for the scale stops
+constexpr int kSolveIterations = 100;           // bisection steps on log s (the bracket: < 2^11)
 constexpr double kRoundOffHessian = 1e-12;      // |lambda| h^2 / max |u| at or below: round-off
 
 // A double in six significant digits, for messages.
@@ -106,6 +108,82 @@ std::string field_name(const SolutionMetricOptions& options, std::size_t f) {
   std::string name = "field " + std::to_string(f + 1);
   if (f < options.field_names.size()) name += " (" + options.field_names[f] + ")";
   return name;
+}
+
+// The metric s M clipped to [h_min, h_max], M given by its eigen-decomposition: each eigenvalue
+// s lambda clamped to [h_max^-2, h_min^-2] (an overflow of s lambda to inf clamps to h_min^-2).
+template <int D>
+typename Traits<D>::Metric clipped(typename Traits<D>::Eigen e, double s, double h_min, double h_max) {
+  for (double& l : e.values) l = std::clamp(s * l, 1.0 / (h_max * h_max), 1.0 / (h_min * h_min));
+  return from_eigen(e);
+}
+
+// The global scale s of the normalised metric M (the fields' closed forms, intersected) for which
+// clip(s M) has the complexity asked (Loseille and Alauzet 2011, part II: the constant is fixed
+// for the metric actually delivered, after the size bounds). C(s) = integral of sqrt(det clip(s M))
+// is continuous and non-decreasing in s: each clamped eigenvalue clamp(s lambda) is, and so are
+// their product, its root and the P1 sum with positive weights, in doubles too, as C is evaluated
+// here from the eigenvalues of M. So C(s) = N is solved by bisection on log s, from the closed
+// form s = 1 (kept as is where it holds: no clipping, or none that moves C) towards the bound that
+// brackets N: s_lo, where every eigenvalue clamps to h_max^-2 (C = the all-h_max complexity), or
+// s_hi, where every one clamps to h_min^-2. N outside [C(s_lo), C(s_hi)] is refused by name.
+template <int D>
+double clipped_scale(std::span<const typename Traits<D>::Point> points,
+                     std::span<const std::array<std::uint32_t, D + 1>> elements, const std::vector<char>& used,
+                     std::span<const typename Traits<D>::Metric> metrics, double asked, double h_min, double h_max) {
+  const std::size_t n = points.size();
+  std::vector<typename Traits<D>::Eigen> e(n);
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0.0;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (!used[v]) continue;
+    e[v] = eigen(metrics[v]);
+    for (const double l : e[v].values) smallest = std::min(smallest, l), largest = std::max(largest, l);
+  }
+  const double lo = 1.0 / (h_max * h_max), hi = 1.0 / (h_min * h_min);
+  std::vector<double> q(n, 0.0);
+  auto complexity = [&](double s) {
+    for (std::size_t v = 0; v < n; ++v) {
+      if (!used[v]) continue;
+      double det = 1.0;
+      for (const double l : e[v].values) det *= std::clamp(s * l, lo, hi);
+      q[v] = std::sqrt(det);
+    }
+    return integrate<D>(points, elements, q);
+  };
+  auto close = [&](double c) { return std::fabs(c - asked) <= kSolveTolerance * asked; };
+  const double c1 = complexity(1.0);
+  if (close(c1)) return 1.0;
+  // The bracket's far end; its bounds are finite doubles as the eigenvalues lie in
+  // [kMinMetricEigenvalue, kMaxMetricEigenvalue] and the sizes in the kernel's range.
+  const double s_lo = lo / largest, s_hi = hi / smallest;
+  const double c_lo = complexity(s_lo), c_hi = complexity(s_hi);
+  const std::string range = "the sizes [h_min, h_max] = [" + format_double(h_min) + ", " + format_double(h_max) +
+                            "] reach complexities " + format_double(c_lo) + " (every size h_max) to " +
+                            format_double(c_hi) + " (every size h_min)";
+  if (asked < c_lo && !close(c_lo))
+    throw InputError("metric from solution: complexity " + format_double(asked) +
+                     " is below the complexity of the all-h_max metric: " + range + "; ask for more or a larger h_max");
+  if (asked > c_hi && !close(c_hi))
+    throw InputError("metric from solution: complexity " + format_double(asked) +
+                     " is above the complexity of the all-h_min metric: " + range + "; ask for less or a smaller h_min");
+  if (close(c_lo)) return s_lo;
+  if (close(c_hi)) return s_hi;
+  // C(a) < N < C(b): halve [log a, log b] (its width is under 2^11, so 100 steps reach the
+  // doubles' resolution of s long before; the stop is at kSolveTolerance of N).
+  const bool up = c1 < asked;
+  double a = up ? 1.0 : s_lo, b = up ? s_hi : 1.0, c_a = up ? c1 : c_lo, c_b = up ? c_hi : c1;
+  for (int i = 0; i < kSolveIterations; ++i) {
+    const double s = std::sqrt(a) * std::sqrt(b);  // the geometric mean, without overflow
+    if (!(s > a && s < b)) break;                  // adjacent doubles: nothing left to halve
+    const double c = complexity(s);
+    if (close(c)) return s;
+    if (c < asked) {
+      a = s, c_a = c;
+    } else {
+      b = s, c_b = c;
+    }
+  }
+  return asked - c_a <= c_b - asked ? a : b;
 }
 
 template <int D>
@@ -234,16 +312,6 @@ std::vector<typename Traits<D>::Metric> compute(std::span<const typename Traits<
       }
       m[v] = from_eigen(e);
     }
-    if (options.complexity) {
-      // The normalisation is exact in real arithmetic; a complexity off by more than the
-      // tolerance means the doubles did not hold it.
-      const double delivered = metric_complexity(points, elements, std::span<const Metric>(m));
-      if (!(std::fabs(delivered - *options.complexity) <= kComplexityTolerance * *options.complexity))
-        throw InputError("metric from solution: " + name + ": the normalised metric has complexity " +
-                         format_double(delivered) + " where " + format_double(*options.complexity) +
-                         " was asked (beyond the relative tolerance " + format_double(kComplexityTolerance) +
-                         "): the field's Hessian is out of the range the normalisation holds in doubles");
-    }
     if (result.empty()) {
       result = std::move(m);
     } else {
@@ -252,14 +320,39 @@ std::vector<typename Traits<D>::Metric> compute(std::span<const typename Traits<
     }
   }
   complexity_before = metric_complexity(points, elements, std::span<const Metric>(result));
-  for (std::size_t v = 0; v < n; ++v) result[v] = used[v] ? clip(result[v], h_min, h_max) : Metric::isotropic(h_max);
+  double scale = 1.0;
+  if (options.complexity) {
+    scale = clipped_scale<D>(points, elements, used, result, *options.complexity, h_min, h_max);
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    if (!used[v]) {
+      result[v] = Metric::isotropic(h_max);
+    } else if (scale == 1.0) {
+      result[v] = clip(result[v], h_min, h_max);  // the closed form held: as it always was
+    } else {
+      result[v] = clipped<D>(eigen(result[v]), scale, h_min, h_max);
+    }
+  }
+  double complexity_clipped = 0.0;
+  if (options.complexity || stats) complexity_clipped = metric_complexity(points, elements, std::span<const Metric>(result));
+  if (options.complexity && !(std::fabs(complexity_clipped - *options.complexity) <= kComplexityTolerance * *options.complexity))
+    // The solve stops within kSolveTolerance; more than kComplexityTolerance off means the doubles
+    // did not hold the metric (composing it from its eigenvalues, its determinants, their sum).
+    throw InputError("metric from solution: the metric clipped to [h_min, h_max] = [" + format_double(h_min) + ", " +
+                     format_double(h_max) + "] has complexity " + format_double(complexity_clipped) + " where " +
+                     format_double(*options.complexity) + " was asked (beyond the relative tolerance " +
+                     format_double(kComplexityTolerance) + "): the fields' Hessians are out of the range the "
+                     "normalisation holds in doubles");
   std::uint32_t passes = 0;
   if (options.gradation) {
     passes = apply_gradation(points, element_edges(elements), std::span<Metric>(result), *options.gradation);
   }
   if (stats) {
     stats->complexity_before_clipping = complexity_before;
-    stats->complexity = metric_complexity(points, elements, std::span<const Metric>(result));
+    stats->complexity_before_gradation = complexity_clipped;
+    stats->normalisation_scale = scale;
+    stats->complexity = options.gradation ? metric_complexity(points, elements, std::span<const Metric>(result))
+                                          : complexity_clipped;
     stats->gradation_passes = passes;
     stats->h_min = std::numeric_limits<double>::infinity();
     stats->h_max = 0.0;

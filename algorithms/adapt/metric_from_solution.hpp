@@ -14,7 +14,17 @@
 //  4. the intersection of the metrics of several fields (book §9.5, §12.2.5: each field's metric
 //     by the same rule, then simultaneous reduction);
 //  5. the sizes clipped to [h_min, h_max] (an eigenvalue 0 of |H|, a direction where the field is
-//     linear, gets h_max), then the gradation (kernel/metric.hpp apply_gradation, h-grad β).
+//     linear, gets h_max). With a complexity the global constant is fixed for the clipped metric
+//     (Loseille and Alauzet 2011, part II): the metric is clip(s M), s solved by bisection on
+//     log s so that ∫ sqrt(det clip(s M)) is N within a relative 1e-9 (checked at 1e-6); s = 1,
+//     the closed form, where no clipping moves the complexity. Only the global constant is
+//     solved: the per-vertex det^(-1/(2p+d)) of the Lp norm stays as in 3. With several fields
+//     the constant is that of the intersection (scaling commutes with it), so the metric written
+//     has complexity N whatever the number of fields. An N outside the complexities of the
+//     all-h_max and all-h_min metrics is refused, naming the bound and the reachable range;
+//  6. the gradation (kernel/metric.hpp apply_gradation, h-grad β), after 5: it only grows the
+//     metric, so the complexity after it is N or more (stats: complexity_before_gradation, N,
+//     and complexity, after).
 // Integrals are P1 over the mesh: ∫ q = Σ_K |K| · (mean of q at K's vertices).
 // Bounded work and values in doubles (issue 42):
 //  - each field is scaled by a power of two (exact) to max |u| in [0.5, 1] before the recovery:
@@ -25,9 +35,10 @@
 //    max |u| in |λ| h² (2D and 3D, both recoveries, graded meshes); 1e-12 is about 4500 ulps. A
 //    field with every eigenvalue 0 is linear to round-off and refused;
 //  - the eigenvalues of each field's metric must lie in [kMinMetricEigenvalue,
-//    kMaxMetricEigenvalue] (kernel/metric.hpp), and with a complexity its ∫ sqrt(det M) must be
-//    N within a relative 1e-6, before the clipping; h_min, h_max must be representable sizes,
-//    h_min at least 1e-9 of the diagonal.
+//    kMaxMetricEigenvalue] (kernel/metric.hpp), and with a complexity the clipped metric's
+//    ∫ sqrt(det M) must be N within a relative 1e-6 (the solve stops at 1e-9; the rest is the
+//    round-off of composing the metrics and summing their determinants); h_min, h_max must be
+//    representable sizes, h_min at least 1e-9 of the diagonal.
 #pragma once
 
 #include <array>
@@ -62,8 +73,11 @@ struct SolutionMetricOptions {
 };
 
 struct SolutionMetricStats {
-  double complexity_before_clipping = 0.0;  // ∫ sqrt(det M) of the normalized metric (N when asked)
-  double complexity = 0.0;                  // the same of the final metric
+  double complexity_before_clipping = 0.0;   // ∫ sqrt(det M) of the normalised metric, closed form
+                                             // (N for one field with a complexity)
+  double complexity_before_gradation = 0.0;  // the same, scaled and clipped (N when asked)
+  double complexity = 0.0;                   // the same of the final metric (after the gradation)
+  double normalisation_scale = 1.0;          // s: the final metric is clip(s M) (before gradation)
   double h_min = 0.0, h_max = 0.0;          // the smallest and largest size of the final metric
   double max_anisotropy = 0.0;              // largest ratio of sizes at one vertex
   std::uint32_t gradation_passes = 0;
@@ -71,8 +85,9 @@ struct SolutionMetricStats {
 
 // One field per entry of `fields` (each one value per point); the metric at every point (unused
 // points get h_max^-2 I). Throws InputError for bad options (naming them and the value), for
-// fields as recover_hessian does, for a field linear to round-off (no Hessian to distribute), and
-// for a metric out of the doubles' range (the bounds above), naming the field.
+// fields as recover_hessian does, for a field linear to round-off (no Hessian to distribute), for
+// a metric out of the doubles' range (the bounds above), naming the field, and for a complexity
+// the size bounds cannot reach (naming the bound and the reachable range).
 std::vector<Metric2> metric_from_solutions(std::span<const Vec2> points,
                                            std::span<const std::array<std::uint32_t, 3>> triangles,
                                            std::span<const std::vector<double>> fields,

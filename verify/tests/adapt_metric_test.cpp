@@ -1,7 +1,8 @@
 // Metrics from solutions (algorithms/adapt/hessian.hpp, metric_from_solution.hpp): the least
 // squares recovery is exact on quadratics (boundary vertices included), the double L2 projection
 // converges on a smooth field, a linear field has no Hessian; the L∞ metric of x² + 100 y² is the
-// closed form; the Lp metric has exactly the complexity asked, whatever the field's scale; the
+// closed form; the Lp metric has exactly the complexity asked, whatever the field's scale, after
+// the clipping to [h_min, h_max] too (and a complexity those cannot reach is refused); the
 // intersection of two fields' metrics lies inside both; a tanh layer gives metrics stretched
 // along it; h_min / h_max hold; bad input is named: a field linear to round-off (2D and 3D), a
 // size bound out of range, a target error whose metric leaves the doubles.
@@ -293,6 +294,81 @@ TEST(SolutionMetric, MetricForAComplexityDoesNotDependOnAScalingOfTheField) {
   const std::vector<std::vector<double>> huge{sample<Vec2>(mesh.vertices, [&](const Vec2& p) { return 1e300 * f(p); })};
   EXPECT_NE(refusal([&] { metric_from_solutions(mesh.vertices, mesh.triangles, huge, e); }).find("out of the representable range"),
             std::string::npos);
+}
+
+// Issue 42, item 6: x² is curved along x only, so the closed form spends the complexity on the
+// floored y eigenvalue (sizes 1e6 times h_max) and the clipping to h_max then inflated it (2000
+// asked gave about 3e4 delivered). The constant is now solved for the clipped metric.
+TEST(SolutionMetric, ClippedMetricHasTheComplexityAsked) {
+  const MeshData2 mesh = square_mesh(20, 0.05);
+  const auto f = [](const Vec2& p) { return p.x * p.x; };
+  const std::vector<std::vector<double>> unit{sample<Vec2>(mesh.vertices, f)};
+  for (const double p : {2.0, std::numeric_limits<double>::infinity()}) {
+    SolutionMetricOptions o;
+    o.p = p;
+    o.complexity = 2000;
+    SolutionMetricStats s;
+    const auto reference = metric_from_solutions(mesh.vertices, mesh.triangles, unit, o, &s);
+    EXPECT_NEAR(s.complexity, 2000.0, 1e-6 * 2000.0) << "p = " << p;
+    EXPECT_EQ(s.complexity, s.complexity_before_gradation);
+    // On the unit square (the recovery is exact on x²): along y the default h_max, the diagonal
+    // sqrt 2 (lambda 0.5); along x lambda with sqrt(0.5 lambda) = 2000, size 3.54e-4 (the closed
+    // form's was 2e9, size 2.2e-5, i.e. s = 0.004).
+    EXPECT_NEAR(s.normalisation_scale, 0.004, 1e-6) << "p = " << p;
+    EXPECT_NEAR(s.h_max, std::sqrt(2.0), 1e-9);
+    EXPECT_NEAR(s.h_min, 1 / std::sqrt(8e6), 1e-6 / std::sqrt(8e6));
+    // Scale invariance holds through the solve: 1e300 x² gives the metric of x².
+    const std::vector<std::vector<double>> huge{sample<Vec2>(mesh.vertices, [&](const Vec2& q) { return 1e300 * f(q); })};
+    const auto m = metric_from_solutions(mesh.vertices, mesh.triangles, huge, o);
+    for (std::size_t v = 0; v < m.size(); ++v)
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(m[v].m[k], reference[v].m[k], 1e-6 * std::fabs(reference[v].m[0] + reference[v].m[2])) << p;
+  }
+  // With bounds that bind at both ends, and in 3D.
+  SolutionMetricOptions bounded;
+  bounded.complexity = 3000;
+  bounded.h_min = 0.01;
+  bounded.h_max = 0.2;
+  SolutionMetricStats s;
+  const std::vector<std::vector<double>> layer{
+      sample<Vec2>(mesh.vertices, [](const Vec2& p) { return std::tanh(40 * (p.y - 0.5)); })};
+  metric_from_solutions(mesh.vertices, mesh.triangles, layer, bounded, &s);
+  EXPECT_NEAR(s.complexity, 3000.0, 1e-6 * 3000.0);
+  EXPECT_NEAR(s.h_min, 0.01, 1e-9);
+  const TetMesh cube = cube_mesh(5);
+  const std::vector<std::vector<double>> f3{sample<Vec3>(cube.points, [](const Vec3& q) { return q.x * q.x; })};
+  SolutionMetricOptions o3;
+  o3.p = 2.0;
+  o3.complexity = 5000.0;
+  metric_from_solutions(cube.points, cube.tetrahedra, f3, o3, &s);
+  EXPECT_NEAR(s.complexity, 5000.0, 1e-6 * 5000.0);
+  // The gradation comes after and only grows the metric.
+  SolutionMetricOptions graded;
+  graded.complexity = 2000;
+  graded.gradation = 1.5;
+  metric_from_solutions(mesh.vertices, mesh.triangles, layer, graded, &s);
+  EXPECT_NEAR(s.complexity_before_gradation, 2000.0, 1e-6 * 2000.0);
+  EXPECT_GE(s.complexity, s.complexity_before_gradation * (1 - 1e-12));
+}
+
+TEST(SolutionMetric, ComplexityTheSizeBoundsCannotReachIsRefused) {
+  const MeshData2 mesh = square_mesh(10, 0.1);
+  const std::vector<std::vector<double>> fields{sample<Vec2>(mesh.vertices, [](const Vec2& p) { return p.x * p.x; })};
+  SolutionMetricOptions o;
+  o.complexity = 1e12;
+  o.h_min = 0.1;  // the unit square holds about 100 of these
+  const std::string above = refusal([&] { metric_from_solutions(mesh.vertices, mesh.triangles, fields, o); });
+  EXPECT_NE(above.find("complexity 1e+12 is above the complexity of the all-h_min metric"), std::string::npos) << above;
+  EXPECT_NE(above.find("reach complexities 0.5 (every size h_max) to 100 (every size h_min)"), std::string::npos) << above;
+  o.complexity = 0.1;  // h_max, the diagonal sqrt 2, already gives 0.5
+  o.h_min.reset();
+  const std::string below = refusal([&] { metric_from_solutions(mesh.vertices, mesh.triangles, fields, o); });
+  EXPECT_NE(below.find("complexity 0.1 is below the complexity of the all-h_max metric"), std::string::npos) << below;
+  o.complexity = 100;  // the all-h_min end itself is reachable
+  o.h_min = 0.1;
+  SolutionMetricStats s;
+  metric_from_solutions(mesh.vertices, mesh.triangles, fields, o, &s);
+  EXPECT_NEAR(s.complexity, 100.0, 1e-6 * 100.0);
 }
 
 TEST(SolutionMetric, SizeBoundsOutOfRangeAreRefusedWithTheirValue) {
