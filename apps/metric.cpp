@@ -79,6 +79,8 @@ void report(const MetricArgs& args, const SolutionMetricStats& s, std::size_t ve
        << ",\"norm\":" << json_string(args.norm) << ",\"complexity_asked\":"
        << (args.complexity ? json_number(*args.complexity) : std::string("null"))
        << ",\"complexity_before_clipping\":" << json_number(s.complexity_before_clipping)
+       << ",\"complexity_before_gradation\":" << json_number(s.complexity_before_gradation)
+       << ",\"normalisation_scale\":" << json_number(s.normalisation_scale)
        << ",\"complexity\":" << json_number(s.complexity) << ",\"h_min\":" << json_number(s.h_min)
        << ",\"h_max\":" << json_number(s.h_max) << ",\"max_anisotropy\":" << json_number(s.max_anisotropy)
        << ",\"gradation_passes\":" << s.gradation_passes << "}";
