@@ -62,8 +62,10 @@ inline unsigned depth_for(std::uint64_t simplices, unsigned children) {
 
 namespace detail {
 
-inline Vec2 mid(const Vec2& a, const Vec2& b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
-inline Vec3 mid(const Vec3& a, const Vec3& b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y), 0.5 * (a.z + b.z)}; }
+template <class P>
+P mid(const P& a, const P& b) {
+  return 0.5 * (a + b);
+}
 
 // The 2, 4 or 8 children of a simplex cut at its edge midpoints (a tetrahedron's inner
 // octahedron cut along one diagonal).
@@ -114,21 +116,15 @@ double integrate(const std::array<P, K>& s, const Density& density, const Measur
   return total;
 }
 
-// The measures of simplices in 2D and 3D.
-inline double length(const std::array<Vec2, 2>& s) { return std::hypot(s[1].x - s[0].x, s[1].y - s[0].y); }
-inline double length(const std::array<Vec3, 2>& s) {
-  return std::hypot(s[1].x - s[0].x, s[1].y - s[0].y, s[1].z - s[0].z);
+// The measures of simplices in 2D and 3D (kernel/vec.hpp's products).
+template <class P>
+double length(const std::array<P, 2>& s) {
+  return norm(s[1] - s[0]);
 }
-inline double area(const std::array<Vec2, 3>& s) {
-  return 0.5 * std::abs((s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[1].y - s[0].y) * (s[2].x - s[0].x));
-}
-inline double area(const std::array<Vec3, 3>& s) {
-  const Vec3 u = s[1] - s[0], v = s[2] - s[0];
-  return 0.5 * std::hypot(u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x);
-}
+inline double area(const std::array<Vec2, 3>& s) { return 0.5 * std::abs(cross(s[1] - s[0], s[2] - s[0])); }
+inline double area(const std::array<Vec3, 3>& s) { return 0.5 * norm(cross(s[1] - s[0], s[2] - s[0])); }
 inline double volume(const std::array<Vec3, 4>& s) {
-  const Vec3 u = s[1] - s[0], v = s[2] - s[0], w = s[3] - s[0];
-  return std::abs(u.x * (v.y * w.z - v.z * w.y) - u.y * (v.x * w.z - v.z * w.x) + u.z * (v.x * w.y - v.y * w.x)) / 6.0;
+  return std::abs(dot(s[1] - s[0], cross(s[2] - s[0], s[3] - s[0]))) / 6.0;
 }
 
 // √det M (the metric's volume density), infinite where det overflows or M is not SPD.
@@ -198,7 +194,7 @@ Estimate estimate_elements(const Mesh& mesh, const MetricAt& metric_at) {
         const std::array<Vec2, 2> edge{mesh.point(mesh.origin(h)), mesh.point(mesh.destination(h))};
         const double l = length(edge);
         if (l == 0.0) continue;
-        const Vec2 u{(edge[1].x - edge[0].x) / l, (edge[1].y - edge[0].y) / l};
+        const Vec2 u = (1.0 / l) * (edge[1] - edge[0]);
         e.boundary += integrate(edge, [&](const Vec2& p) { return length_density(metric_at(p), u); },
                                 [](const auto& x) { return length(x); }, depth_for(n, 2));
       }
@@ -220,8 +216,7 @@ Estimate estimate_elements(const Mesh& mesh, const MetricAt& metric_at) {
         const std::array<Vec3, 3> facet{mesh.point(f[0]), mesh.point(f[1]), mesh.point(f[2])};
         const double a2 = 2.0 * area(facet);
         if (a2 == 0.0) continue;
-        const Vec3 u = facet[1] - facet[0], w = facet[2] - facet[0];
-        const Vec3 normal{(u.y * w.z - u.z * w.y) / a2, (u.z * w.x - u.x * w.z) / a2, (u.x * w.y - u.y * w.x) / a2};
+        const Vec3 normal = (1.0 / a2) * cross(facet[1] - facet[0], facet[2] - facet[0]);
         e.boundary += integrate(facet, [&](const Vec3& p) { return facet_density(metric_at(p), normal); },
                                 [](const auto& x) { return area(x); }, depth_for(n, 4));
       }
