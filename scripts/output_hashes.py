@@ -4,13 +4,15 @@ fixed set of jobs and prints the SHA-256 of every output file, one line each, so
 that two binaries (before and after) compare with `diff`:
 
   main job    every 2D Delaunay variant on data/default.node; every 3D variant on a 20,000-point
-              grid (2 threads); every constrained method on data/square_with_hole.poly and on
-              data/schonhardt.off (scripts/run-main.sh's runs)
+              grid (2 threads); every constrained method on every data/*.poly and on
+              data/schonhardt.off and data/quad_cube.off (scripts/run-main.sh's runs and more);
+              the classical 2D mesh (no size) of two of the .poly
   mesh2d      the benchmark's square minus a disc at h = 0.01 (scripts/bench_mesh2d.py's domain),
               edge and front, with and without optimization; the anisotropic cases (UGAWG linear
               and polar layers on data/unit_square_bg.mesh, boundary cut in the metric), edge and front
   mesh3d      the benchmark's cube minus a ball (Gmsh's surface at H, scripts/bench_mesh3d.py's
-              geometry): `mesh --size H --remove-cavities`, and with --optimize thorough
+              geometry): `mesh --size H --remove-cavities`, with --optimize thorough, and
+              classical (no size: the control space from the surface's own edge lengths)
   optimize    `dtlab optimize` on TetGen's `-pq1.414 -a` mesh of that surface (its .ele), and on
               dtlab's own 2D mesh without optimization
   adapt       2D adaptation to the linear layer (local and reconstruct), 3D adaptation of the
@@ -91,8 +93,15 @@ def jobs(dtlab, inputs, h3):
                                                     "grid", "--algo", name, "--threads", "2"]))
     for m in ("cdt", "swap", "conforming"):
         out.append((f"constrain2d-{m}.mesh", ["constrain", f"{DATA}/square_with_hole.poly", "--method", m]))
+        for poly in ("square_disc", "unit_square"):
+            out.append((f"constrain2d-{m}-{poly}.mesh", ["constrain", f"{DATA}/{poly}.poly", "--method", m]))
     for m in ("conforming", "recover", "cdt"):
         out.append((f"constrain3d-{m}.mesh", ["constrain", f"{DATA}/schonhardt.off", "--method", m]))
+        out.append((f"constrain3d-{m}-quad_cube.mesh", ["constrain", f"{DATA}/quad_cube.off", "--method", m]))
+        out.append((f"constrain3d-{m}-box_with_window.mesh", ["constrain", f"{DATA}/box_with_window.poly", "--method",
+                                                              m]))
+    for poly in ("square_disc", "square_with_hole"):
+        out.append((f"mesh2d-classical-{poly}.mesh", ["mesh", f"{DATA}/{poly}.poly"]))
     poly = os.path.join(inputs, "square_disc.poly")
     for m in ("edge", "front"):
         out.append((f"mesh2d-{m}.mesh", ["mesh", poly, "--size", "0.01", "--method", m]))
@@ -103,6 +112,7 @@ def jobs(dtlab, inputs, h3):
                          f"{DATA}/unit_square_bg.mesh", "--method", m]))
     surface = os.path.join(inputs, "surface.mesh")
     out.append(("mesh3d.mesh", ["mesh", surface, "--size", str(h3), "--remove-cavities"]))
+    out.append(("mesh3d-classical.mesh", ["mesh", surface, "--remove-cavities"]))
     out.append(("mesh3d-thorough.mesh", ["mesh", surface, "--size", str(h3), "--remove-cavities", "--optimize",
                                          "thorough"]))
     out.append(("optimize3d-tetgen.mesh", ["optimize", os.path.join(inputs, "tg", "surface.1.ele"), "--size",
