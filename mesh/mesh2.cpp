@@ -11,13 +11,9 @@
 #include "mesh/domain_vertices.hpp"
 #include "mesh/edge_key.hpp"
 #include "mesh/element_sets2.hpp"
-#include "mesh/navigation2.hpp"
+#include "mesh/navigation2_walk.hpp"
 
 namespace dtlab {
-
-namespace {
-
-}  // namespace
 
 Mesh2::Mesh2(const Triangulation2& tri, std::span<const int> triangle_refs, std::span<const MeshEdge2> constrained,
              const Metric2& metric) {
@@ -137,10 +133,7 @@ void Mesh2::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
   out.clear();
   const std::uint32_t t0 = vertex_triangle_[v];
   DTLAB_ASSERT(t0 != kNone && is_alive(t0));
-  std::uint32_t h0 = kNone;
-  for (std::uint32_t i = 0; i < 3; ++i) {
-    if (vertices_[3 * t0 + i] == v) h0 = 3 * t0 + i;
-  }
+  const std::uint32_t h0 = nav2::opposite(*this, t0, v);
   DTLAB_ASSERT(h0 != kNone);
   const std::size_t bound = live_triangle_count() + 1;
   nav2::for_each_in_ball(*this, h0, [&](std::uint32_t h) {
@@ -150,112 +143,33 @@ void Mesh2::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
 }
 
 std::uint32_t Mesh2::find_half_edge(std::uint32_t u, std::uint32_t v) const {
-  std::vector<std::uint32_t> ring;
-  ball(u, ring);
-  // h opposite u runs a -> b; the edge u -> a is prev(h) (it runs from u to origin(h)).
-  for (const std::uint32_t h : ring) {
-    if (origin(h) == v) return prev(h);
-  }
-  return kNone;
+  const std::uint32_t t0 = vertex_triangle_[u];
+  DTLAB_ASSERT(t0 != kNone && is_alive(t0));
+  return nav2::find_half_edge(*this, nav2::opposite(*this, t0, u), v, live_triangle_count() + 1);
 }
 
 Mesh2::Location Mesh2::locate(const Vec2& p, std::uint32_t start, bool stop_at_constraints) const {
   DTLAB_ASSERT(start < triangle_capacity() && is_alive(start));
-  std::uint32_t t = start;
-  if (is_ghost(t)) t = triangle_of(neighbours_[3 * t]);
   std::uint64_t rng = 0x9E3779B97F4A7C15ull ^ (static_cast<std::uint64_t>(start) * 0xBF58476D1CE4E5B9ull);
-  const std::uint64_t bound = 64ull * live_triangle_count() + 64;
-  std::uint32_t came_from = kNone;
-  for (std::uint64_t step = 0; step < bound; ++step) {
-    if (is_ghost(t)) return {Where::Outside, t, kNone, false};
-    // Stochastic visibility walk (Devillers, Pion, Teillaud 2002): test the edges from a random
-    // one, step across the first that has p strictly on its far side.
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    const std::uint32_t first = static_cast<std::uint32_t>(rng % 3);
-    bool moved = false;
-    int zero_edges = 0;
-    std::uint32_t zero_edge = kNone;
-    for (std::uint32_t k = 0; k < 3; ++k) {
-      const std::uint32_t h = 3 * t + (first + k) % 3;
-      if (h == came_from) continue;
-      const Sign s = orient2d(points_[origin(h)], points_[destination(h)], p);
-      if (s == Sign::Negative) {
-        if (stop_at_constraints && constrained_[h]) return {Where::Triangle, t, kNone, true};
-        came_from = neighbours_[h];
-        t = triangle_of(came_from);
-        moved = true;
-        break;
-      }
-      if (s == Sign::Zero) {
-        ++zero_edges;
-        zero_edge = h;
-      }
-    }
-    if (moved) continue;
-    // came_from was skipped: p is not strictly beyond it (we came from there), but it may be on it.
-    if (came_from != kNone && orient2d(points_[origin(came_from)], points_[destination(came_from)], p) == Sign::Zero) {
-      ++zero_edges;
-      zero_edge = came_from;
-    }
-    if (zero_edges >= 2) {
-      for (std::uint32_t i = 0; i < 3; ++i) {
-        const std::uint32_t v = vertices_[3 * t + i];
-        if (points_[v] == p) return {Where::Vertex, t, v, false};
-      }
-    }
-    if (zero_edges >= 1) return {Where::Edge, t, zero_edge, false};
-    return {Where::Triangle, t, kNone, false};
-  }
-  throw InternalError("Mesh2::locate: no triangle found for (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
-                      ") within the step bound");
+  return nav2::locate(*this, p, start, rng, 64ull * live_triangle_count() + 64,
+                      [&](std::uint32_t h) { return stop_at_constraints && constrained_[h]; });
 }
 
 std::uint32_t Mesh2::flip(std::uint32_t h) {
   const std::uint32_t g = neighbours_[h];
   const std::uint32_t t1 = triangle_of(h), t2 = triangle_of(g);
   DTLAB_ASSERT(is_alive(t1) && is_alive(t2) && !is_ghost(t1) && !is_ghost(t2) && !constrained_[h]);
-  // t1 = (p, a, b) with h = b -> ... : h opposite p runs a -> b; t2 has g opposite q running b -> a.
-  const std::uint32_t p = vertices_[h], a = origin(h), b = destination(h);
-  const std::uint32_t q = vertices_[g];
-  // Outer half-edges and their data: t1's edges b->p (next(h)) and p->a (prev(h)); t2's a->q
-  // (next(g)) and q->b (prev(g)).
-  struct Outer {
-    std::uint32_t twin;
-    std::uint8_t constrained;
-    int ref;
+  struct Payload {
+    std::uint8_t constrained = 0;
+    int ref = 0;
   };
-  auto outer = [&](std::uint32_t e) { return Outer{neighbours_[e], constrained_[e], edge_refs_[e]}; };
-  const Outer bp = outer(next(h)), pa = outer(prev(h)), aq = outer(next(g)), qb = outer(prev(g));
-  // New t1 = (p, a, q), new t2 = (q, b, p); diagonal p-q: in t1 it is edge 1 (opposite a)
-  // running q -> p; in t2 edge 1 (opposite b) running p -> q.
-  vertices_[3 * t1] = p;
-  vertices_[3 * t1 + 1] = a;
-  vertices_[3 * t1 + 2] = q;
-  vertices_[3 * t2] = q;
-  vertices_[3 * t2 + 1] = b;
-  vertices_[3 * t2 + 2] = p;
-  auto set = [&](std::uint32_t e, const Outer& o) {
-    neighbours_[e] = o.twin;
-    neighbours_[o.twin] = e;
-    constrained_[e] = o.constrained;
-    edge_refs_[e] = o.ref;
-  };
-  // t1 = (p, a, q): edge 0 (a -> q) = aq, edge 2 (p -> a) = pa. t2 = (q, b, p): edge 0 (b -> p) =
-  // bp, edge 2 (q -> b) = qb.
-  set(3 * t1 + 0, aq);
-  set(3 * t1 + 2, pa);
-  set(3 * t2 + 0, bp);
-  set(3 * t2 + 2, qb);
-  link(3 * t1 + 1, 3 * t2 + 1);
-  constrained_[3 * t1 + 1] = constrained_[3 * t2 + 1] = 0;
-  edge_refs_[3 * t1 + 1] = edge_refs_[3 * t2 + 1] = 0;
-  vertex_triangle_[p] = t1;
-  vertex_triangle_[a] = t1;
-  vertex_triangle_[q] = t1;
-  vertex_triangle_[b] = t2;
-  return 3 * t1 + 1;
+  const std::uint32_t d = nav2::flip(
+      vertices_.data(), neighbours_.data(), h, [&](std::uint32_t e) { return Payload{constrained_[e], edge_refs_[e]}; },
+      [&](std::uint32_t e, const Payload& x) { constrained_[e] = x.constrained, edge_refs_[e] = x.ref; }, Payload{});
+  // t1 = (p, a, q), t2 = (q, b, p).
+  vertex_triangle_[vertices_[3 * t1]] = vertex_triangle_[vertices_[3 * t1 + 1]] = vertex_triangle_[vertices_[3 * t1 + 2]] = t1;
+  vertex_triangle_[vertices_[3 * t2 + 1]] = t2;
+  return d;
 }
 
 void Mesh2::check() const {

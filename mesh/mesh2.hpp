@@ -28,6 +28,7 @@
 #include "kernel/metric.hpp"
 #include "kernel/vec.hpp"
 #include "mesh/io/mesh_data.hpp"
+#include "mesh/navigation2.hpp"
 #include "mesh/triangulation2.hpp"
 
 namespace dtlab {
@@ -135,16 +136,11 @@ class Mesh2 {
   // The half-edge u -> v, or kNone.
   std::uint32_t find_half_edge(std::uint32_t u, std::uint32_t v) const;
 
-  // Where p lies, found by a visibility walk from `start` (a live triangle) that does not cross
-  // constrained edges when `stop_at_constraints` (it then ends in the last triangle reached,
-  // `blocked` set). Exact orient2d throughout.
-  enum class Where : std::uint8_t { Triangle, Edge, Vertex, Outside };
-  struct Location {
-    Where where = Where::Triangle;
-    std::uint32_t triangle = kNone;  // the triangle holding p (Edge: the half-edge's triangle)
-    std::uint32_t handle = kNone;    // Edge: the half-edge p lies on; Vertex: the vertex
-    bool blocked = false;
-  };
+  // Where p lies (nav2::locate), found by a visibility walk from `start` (a live triangle) that
+  // does not cross constrained edges when `stop_at_constraints` (it then ends in the last
+  // triangle reached, `blocked` set). The walk's random choices are seeded from `start`.
+  using Where = nav2::Where;
+  using Location = nav2::Location;
   Location locate(const Vec2& p, std::uint32_t start, bool stop_at_constraints = false) const;
 
   // Replaces the diagonal h of its quadrilateral by the other one; both triangles must be live and

@@ -67,6 +67,7 @@ class Triangulation2 {
   explicit Triangulation2(std::vector<Vec2> points) : points_(std::move(points)) {}
 
   std::span<const Vec2> points() const noexcept { return points_; }
+  const Vec2& point(std::uint32_t v) const noexcept { return points_[v]; }
   std::size_t point_count() const noexcept { return points_.size(); }
 
   // --- Navigation (pure arithmetic on handles) ------------------------------------------------
@@ -83,6 +84,7 @@ class Triangulation2 {
   const std::vector<std::uint32_t>& neighbours() const noexcept { return neighbours_; }
 
   std::uint32_t vertex(std::uint32_t t, std::uint32_t i) const noexcept { return vertices_[3 * t + i]; }
+  std::uint32_t vertex_at(std::uint32_t h) const noexcept { return vertices_[h]; }  // opposite h
   std::uint32_t origin(std::uint32_t h) const noexcept { return vertices_[next(h)]; }
   std::uint32_t destination(std::uint32_t h) const noexcept { return vertices_[prev(h)]; }
   std::uint32_t twin(std::uint32_t h) const noexcept { return neighbours_[h]; }

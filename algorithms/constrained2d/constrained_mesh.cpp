@@ -12,7 +12,8 @@
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
-#include "mesh/navigation2.hpp"
+#include "mesh/element_sets2.hpp"
+#include "mesh/navigation2_walk.hpp"
 
 namespace dtlab {
 
@@ -26,33 +27,16 @@ bool strictly_between(const Vec2& a, const Vec2& b, const Vec2& p) noexcept {
   return (a.y < p.y && p.y < b.y) || (b.y < p.y && p.y < a.y);
 }
 
-// a, s, q collinear: does a lie on the same side of s as q?
-bool same_direction(const Vec2& s, const Vec2& a, const Vec2& q) noexcept {
-  if (s.x != q.x) return (a.x > s.x) == (q.x > s.x);
-  return (a.y > s.y) == (q.y > s.y);
-}
-
-}  // namespace
-
-ConstrainedMesh2::ConstrainedMesh2(Triangulation2& tri) : tri_(tri) {
-  cons_.assign(tri_.vertices().size(), kNone);
-  vtri_.assign(tri_.point_count(), kNone);
-  const auto count = static_cast<std::uint32_t>(tri_.triangle_count());
-  for (int pass = 0; pass < 2; ++pass)  // finite triangles first: walks start inside the hull
-    for (std::uint32_t t = 0; t < count; ++t) {
-      if (tri_.is_ghost(t) != (pass == 1)) continue;
-      for (std::uint32_t i = 0; i < 3; ++i) {
-        const std::uint32_t v = tri_.vertex(t, i);
-        if (v != kInf && vtri_[v] == kNone) vtri_[v] = t;
-      }
-    }
-}
-
-namespace {
 std::pair<std::uint32_t, std::uint32_t> edge_key(std::uint32_t a, std::uint32_t b) {
   return {std::min(a, b), std::max(a, b)};
 }
+
 }  // namespace
+
+ConstrainedMesh2::ConstrainedMesh2(Triangulation2& tri)
+    : tri_(tri), vtri_(vertex_triangles(tri_)) {  // finite triangles first: walks start inside the hull
+  cons_.assign(tri_.vertices().size(), kNone);
+}
 
 void ConstrainedMesh2::set_constraint(std::uint32_t h, std::uint32_t segment) noexcept {
   cons_[h] = segment;
@@ -97,130 +81,42 @@ void ConstrainedMesh2::clear_constraints() noexcept {
   shared_.clear();
 }
 
-std::uint32_t ConstrainedMesh2::index_of(std::uint32_t t, std::uint32_t v) const noexcept {
-  for (std::uint32_t i = 0; i < 3; ++i)
-    if (tri_.vertex(t, i) == v) return i;
-  return kNone;
-}
-
 void ConstrainedMesh2::write_triangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) noexcept {
   // Ghosts keep kInfinite at index 0 (triangulation2.hpp).
   if (b == kInf) std::tie(a, b, c) = std::tuple(b, c, a);
   if (c == kInf) std::tie(a, b, c) = std::tuple(c, a, b);
   std::uint32_t* v = tri_.mutable_vertices().data() + 3 * t;
   v[0] = a, v[1] = b, v[2] = c;
+  note_written(t);
+}
+
+void ConstrainedMesh2::note_written(std::uint32_t t) noexcept {
   written_.push_back(t);
-  for (std::uint32_t i = 0; i < 3; ++i)
-    if (v[i] != kInf) vtri_[v[i]] = t;
+  for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h)
+    if (tri_.vertex_at(h) != kInf) vtri_[tri_.vertex_at(h)] = t;
 }
 
 std::uint32_t ConstrainedMesh2::find_half_edge(std::uint32_t u, std::uint32_t v) const {
   const std::uint32_t first = vtri_[u];
   if (first == kNone) return kNone;
-  const std::uint32_t i0 = index_of(first, u);
-  DTLAB_ASSERT(i0 != kNone);
-  const std::uint32_t h0 = T2::half_edge(first, i0);  // opposite u
-  std::uint32_t h = h0;
-  const std::size_t bound = tri_.triangle_count() + 1;
-  for (std::size_t k = 0; k < bound; ++k) {
-    if (tri_.origin(h) == v) return T2::prev(h);  // u -> origin(h)
-    h = nav2::turn_ccw(tri_, h);
-    if (h == h0) return kNone;
-  }
-  throw InternalError("constrained mesh: the ball of vertex " + std::to_string(u) + " does not close");
+  const std::uint32_t h0 = nav2::opposite(tri_, first, u);
+  DTLAB_ASSERT(h0 != kNone);
+  return nav2::find_half_edge(tri_, h0, v, tri_.triangle_count() + 1);
 }
 
 ConstrainedMesh2::SegmentWalk ConstrainedMesh2::walk(std::uint32_t s, std::uint32_t q) const {
-  DTLAB_ASSERT(s != q && s < vertex_count() && q < vertex_count());
-  const Vec2& S = point(s);
-  const Vec2& Q = point(q);
-  SegmentWalk out;
-  // Turn around s to the wedge (s, a, b) holding direction q, or to a vertex on [s, q].
-  const std::uint32_t first = vtri_[s];
-  DTLAB_ASSERT(first != kNone);
-  std::uint32_t t = first, i = index_of(t, s);
-  std::uint32_t crossing = kNone;
+  DTLAB_ASSERT(s != q && s < vertex_count() && q < vertex_count() && vtri_[s] != kNone);
   const std::size_t bound = tri_.triangle_count() + 1;
-  for (std::size_t k = 0;; ++k) {
-    if (k > bound) throw InternalError("segment walk: the ball of vertex " + std::to_string(s) + " does not close");
-    if (!tri_.is_ghost(t)) {
-      const std::uint32_t a = tri_.vertex(t, (i + 1) % 3), b = tri_.vertex(t, (i + 2) % 3);
-      if (a == q || b == q) {
-        out.stop = q;
-        return out;
-      }
-      const Sign oa = orient2d(S, point(a), Q);
-      const Sign ob = orient2d(S, point(b), Q);
-      if (oa == Sign::Zero && same_direction(S, point(a), Q)) {
-        out.stop = a;
-        return out;
-      }
-      if (ob == Sign::Zero && same_direction(S, point(b), Q)) {
-        out.stop = b;
-        return out;
-      }
-      if (oa == Sign::Positive && ob == Sign::Negative) {
-        crossing = T2::half_edge(t, i);
-        break;
-      }
-    }
-    const std::uint32_t h = nav2::turn_ccw(tri_, T2::half_edge(t, i));
-    t = T2::triangle_of(h), i = T2::index_in_triangle(h);
-    if (t == first) throw InternalError("segment walk: no triangle around vertex " + std::to_string(s) +
-                                        " faces vertex " + std::to_string(q));
-  }
-  // Cross triangles: the crossed edge's origin is right of s -> q, its destination left.
-  for (std::size_t k = 0; k <= bound; ++k) {
-    out.crossed.push_back(crossing);
-    const std::uint32_t g = tri_.twin(crossing);
-    if (tri_.is_ghost(T2::triangle_of(g)))
-      throw InternalError("segment walk: segment " + std::to_string(s) + "-" + std::to_string(q) + " leaves the hull");
-    const std::uint32_t c = tri_.vertices()[g];
-    if (c == q) {
-      out.stop = q;
-      return out;
-    }
-    const Sign oc = orient2d(S, Q, point(c));
-    if (oc == Sign::Zero) {
-      out.stop = c;
-      return out;
-    }
-    crossing = oc == Sign::Positive ? T2::next(g) : T2::prev(g);
-  }
-  throw InternalError("segment walk: exceeded its bound (broken adjacency)");
+  SegmentWalk out;
+  const nav2::PipeStart start = nav2::pipe_start(tri_, nav2::opposite(tri_, vtri_[s], s), q, bound);
+  out.stop = start.stop;
+  if (out.stop == kNone)
+    out.stop = nav2::pipe_cross(tri_, start.at, point(s), q, bound, [&](std::uint32_t h) { out.crossed.push_back(h); });
+  return out;
 }
 
 ConstrainedMesh2::Location ConstrainedMesh2::locate(const Vec2& p, std::uint32_t start) {
-  std::uint32_t t = start;
-  if (tri_.is_ghost(t)) t = T2::triangle_of(tri_.twin(T2::half_edge(t, 0)));
-  const std::size_t bound = 64 * tri_.triangle_count() + 64;
-  std::uint32_t entered = 3;
-  for (std::size_t steps = 0; steps < bound; ++steps) {
-    rng_ ^= rng_ << 13, rng_ ^= rng_ >> 7, rng_ ^= rng_ << 17;
-    const std::uint32_t r = static_cast<std::uint32_t>(rng_ % 3);
-    bool moved = false;
-    for (std::uint32_t k = 0; k < 3 && !moved; ++k) {
-      const std::uint32_t i = (r + k) % 3;
-      if (i == entered) continue;
-      const std::uint32_t a = tri_.vertex(t, (i + 1) % 3), b = tri_.vertex(t, (i + 2) % 3);
-      if (orient2d(point(a), point(b), p) == Sign::Negative) {
-        const std::uint32_t g = tri_.twin(T2::half_edge(t, i));
-        t = T2::triangle_of(g), entered = T2::index_in_triangle(g);
-        if (tri_.is_ghost(t)) return {Where::Outside, t};
-        moved = true;
-      }
-    }
-    if (moved) continue;
-    // p is in the closed triangle t.
-    for (std::uint32_t i = 0; i < 3; ++i)
-      if (point(tri_.vertex(t, i)) == p) return {Where::Vertex, tri_.vertex(t, i)};
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t a = tri_.vertex(t, (i + 1) % 3), b = tri_.vertex(t, (i + 2) % 3);
-      if (orient2d(point(a), point(b), p) == Sign::Zero) return {Where::Edge, T2::half_edge(t, i)};
-    }
-    return {Where::Triangle, t};
-  }
-  throw InternalError("constrained mesh: point location exceeded its bound of " + std::to_string(bound) + " steps");
+  return nav2::locate(tri_, p, start, rng_, 64 * tri_.triangle_count() + 64, [](std::uint32_t) { return false; });
 }
 
 std::uint32_t ConstrainedMesh2::insert(const Vec2& p, const Location& where, std::vector<std::uint32_t>* outward) {
@@ -230,7 +126,7 @@ std::uint32_t ConstrainedMesh2::insert(const Vec2& p, const Location& where, std
   std::vector<std::uint32_t> cavity;
   std::uint32_t split_segment = kNone, split_u = kNone, split_v = kNone;
   if (where.where == Where::Triangle) {
-    cavity = {where.handle};
+    cavity = {where.triangle};
   } else if (where.where == Where::Edge) {
     const std::uint32_t h = where.handle;
     cavity = {T2::triangle_of(h), T2::triangle_of(tri_.twin(h))};
@@ -239,8 +135,8 @@ std::uint32_t ConstrainedMesh2::insert(const Vec2& p, const Location& where, std
     // Ghosts (inf, b, a) whose hull edge a -> b p is beyond, or strictly inside of on its line;
     // they are consecutive around the hull.
     in_cavity_.resize(tri_.triangle_count(), 0);
-    cavity = {where.handle};
-    in_cavity_[where.handle] = 1;
+    cavity = {where.triangle};
+    in_cavity_[where.triangle] = 1;
     for (std::size_t k = 0; k < cavity.size(); ++k) {
       const std::uint32_t t = cavity[k];
       for (std::uint32_t i : {1u, 2u}) {
@@ -289,12 +185,12 @@ std::uint32_t ConstrainedMesh2::insert(const Vec2& p, const Location& where, std
     const std::uint32_t t = cavity[j];
     const Boundary& e = boundary[j];
     write_triangle(t, x, e.u, e.v);
-    const std::uint32_t out = T2::half_edge(t, index_of(t, x));
+    const std::uint32_t out = nav2::opposite(tri_, t, x);
     tri_.link(out, e.outer);
     cons_[out] = e.segment;
     if (outward) outward->push_back(out);
-    starts.emplace_back(e.u, T2::half_edge(t, index_of(t, e.v)));
-    enters[j] = T2::half_edge(t, index_of(t, e.u));
+    starts.emplace_back(e.u, nav2::opposite(tri_, t, e.v));
+    enters[j] = nav2::opposite(tri_, t, e.u);
     for (std::uint32_t h : {T2::half_edge(t, 0), T2::half_edge(t, 1), T2::half_edge(t, 2)})
       if (h != out) cons_[h] = kNone;
   }
@@ -332,26 +228,14 @@ bool ConstrainedMesh2::flippable(std::uint32_t h) const {
 }
 
 std::uint32_t ConstrainedMesh2::flip(std::uint32_t h) {
-  const std::uint32_t g = tri_.twin(h);
-  const std::uint32_t t1 = T2::triangle_of(h), t2 = T2::triangle_of(g);
-  const std::uint32_t c = tri_.vertices()[h], u = tri_.origin(h), v = tri_.destination(h);
-  const std::uint32_t d = tri_.vertices()[g];
-  // Outer half-edges and their constraints: c->u, v->c in t1; u->d, d->v in t2.
-  const std::uint32_t e_cu = T2::prev(h), e_vc = T2::next(h), e_ud = T2::next(g), e_dv = T2::prev(g);
-  const std::uint32_t n_cu = tri_.twin(e_cu), n_vc = tri_.twin(e_vc), n_ud = tri_.twin(e_ud), n_dv = tri_.twin(e_dv);
-  const std::uint32_t k_cu = cons_[e_cu], k_vc = cons_[e_vc], k_ud = cons_[e_ud], k_dv = cons_[e_dv];
-  // t1 = (c, u, d): 0 opposite c is u->d, 1 is d->c (new), 2 is c->u.
-  // t2 = (d, v, c): 0 opposite d is v->c, 1 is c->d (new), 2 is d->v.
-  write_triangle(t1, c, u, d);
-  write_triangle(t2, d, v, c);
-  const std::uint32_t a0 = 3 * t1, b0 = 3 * t2;
-  tri_.link(a0 + 0, n_ud), cons_[a0 + 0] = k_ud;
-  tri_.link(a0 + 2, n_cu), cons_[a0 + 2] = k_cu;
-  tri_.link(b0 + 0, n_vc), cons_[b0 + 0] = k_vc;
-  tri_.link(b0 + 2, n_dv), cons_[b0 + 2] = k_dv;
-  tri_.link(a0 + 1, b0 + 1), cons_[a0 + 1] = kNone, cons_[b0 + 1] = kNone;
+  const std::uint32_t t1 = T2::triangle_of(h), t2 = T2::triangle_of(tri_.twin(h));
+  const std::uint32_t d = nav2::flip(
+      tri_.mutable_vertices().data(), tri_.mutable_neighbours().data(), h, [&](std::uint32_t e) { return cons_[e]; },
+      [&](std::uint32_t e, std::uint32_t segment) { cons_[e] = segment; }, kNone);
+  note_written(t1);
+  note_written(t2);
   ++flips_;
-  return a0 + 1;
+  return d;
 }
 
 bool ConstrainedMesh2::violates_delaunay(std::uint32_t h) const {

@@ -1,10 +1,16 @@
-// The mutable triangulation the constrained methods work on: a Triangulation2 (numbering of
-// mesh/triangulation2.hpp) plus, per half-edge, the input segment it is constrained by, and per
-// vertex one incident triangle. Operations: edge lookup, the walk along a segment (the pipe of
-// §1.7/§3.3.3, stopping at the first vertex on the segment), point location, insertion of a
+// The mutable triangulation the constrained methods work on: a constraint layer over the
+// caller's Triangulation2 (numbering of mesh/triangulation2.hpp), in place: per half-edge the
+// input segment it is constrained by, shared segments, per vertex one incident triangle.
+// Navigation is the shared core of mesh/navigation2*.hpp (half-edge lookup, visibility walk,
+// the pipe of §1.7/§3.3.3, the flip's re-linking), as in Mesh2; on top of it: insertion of a
 // Steiner point (triangle split, edge split, or hull extension: the cavity is the triangle(s)
-// holding the point, or the ghosts that see it), edge flips, and Lawson's flip algorithm
-// (book §2, Theorem 2.2) with or without respecting constraints (§3.4: the CDT).
+// holding the point, or the ghosts that see it) and Lawson's flips (book §2, Theorem 2.2) with
+// or without respecting constraints (§3.4: the CDT).
+// A sibling of Mesh2, not a layer over it: Mesh2 owns copies of the arrays and carries a metric
+// and flags per vertex, a reference per triangle, a flag and a reference per half-edge and free
+// lists, none of which these methods use; building a Mesh2 from a 200k-point Delaunay
+// triangulation takes 0.052 s against 0.021 s for this layer (and a copy back), at 43 B per
+// triangle and 45 B per vertex against 36 and 20.
 // Every loop is bounded; a broken structure gives InternalError, never a hang.
 #pragma once
 
@@ -15,6 +21,7 @@
 #include <vector>
 
 #include "kernel/vec.hpp"
+#include "mesh/navigation2.hpp"
 #include "mesh/triangulation2.hpp"
 
 namespace dtlab {
@@ -62,15 +69,11 @@ class ConstrainedMesh2 {
   };
   SegmentWalk walk(std::uint32_t s, std::uint32_t q) const;
 
-  // Where p lies: inside a finite triangle, on the interior of an edge (half-edge of a finite
-  // triangle), on a vertex (equal coordinates), or outside the convex hull (a ghost it is beyond).
-  enum class Where { Triangle, Edge, Vertex, Outside };
-  struct Location {
-    Where where = Where::Triangle;
-    std::uint32_t handle = kNone;  // triangle, half-edge, vertex, ghost triangle
-  };
-  // Stochastic visibility walk from `start` (Devillers, Pion, Teillaud 2002: it terminates on any
-  // triangulation with probability 1; a step bound makes it certain).
+  // Where p lies (nav2::locate): inside a finite triangle, on the interior of an edge (half-edge
+  // of a finite triangle), on a vertex (equal coordinates), or outside the convex hull (a ghost
+  // it is beyond). The walk's random choices carry on from call to call.
+  using Where = nav2::Where;
+  using Location = nav2::Location;
   Location locate(const Vec2& p, std::uint32_t start);
 
   // Appends p as a new vertex at `where` (not Where::Vertex) and retriangulates its cavity
@@ -101,7 +104,8 @@ class ConstrainedMesh2 {
 
  private:
   void write_triangle(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c) noexcept;
-  std::uint32_t index_of(std::uint32_t t, std::uint32_t v) const noexcept;
+  // Records t as written (take_changed_edges) and as the triangle of its finite vertices.
+  void note_written(std::uint32_t t) noexcept;
 
   Triangulation2& tri_;
   std::vector<std::uint32_t> cons_;  // per half-edge

@@ -19,7 +19,7 @@ using T2 = Triangulation2;
 std::uint32_t finite_triangle_at(ConstrainedMesh2& mesh, const Vec2& p, std::uint32_t start) {
   const ConstrainedMesh2::Location at = mesh.locate(p, start);
   switch (at.where) {
-    case ConstrainedMesh2::Where::Triangle: return at.handle;
+    case ConstrainedMesh2::Where::Triangle: return at.triangle;
     case ConstrainedMesh2::Where::Edge: return T2::triangle_of(at.handle);
     case ConstrainedMesh2::Where::Vertex: return mesh.triangle_of_vertex(at.handle);
     case ConstrainedMesh2::Where::Outside: break;

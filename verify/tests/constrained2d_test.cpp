@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "algorithms/constrained2d/constrained2d.hpp"
+#include "algorithms/constrained2d/constrained_mesh.hpp"
 #include "algorithms/constrained2d/registry.hpp"
 #include "algorithms/delaunay2d/delaunay2d.hpp"
 #include "kernel/error.hpp"
@@ -37,6 +38,60 @@ namespace {
 
 using Segment = std::array<std::uint32_t, 2>;
 using T2 = Triangulation2;
+
+// The shared navigation core (mesh/navigation2*.hpp) as ConstrainedMesh2 uses it: point
+// location on a vertex, an edge, inside and outside the hull; the segment walk stopped by a
+// vertex on the segment, across an edge, along an edge; a flip carrying the segment ids.
+TEST(ConstrainedMesh2, LocateWalkAndFlipOnTheSharedCore) {
+  const std::vector<Vec2> square{{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}};
+  Delaunay2dResult fan = delaunay2d(square);
+  ConstrainedMesh2 mesh(fan.triangulation);
+  const T2& tri = mesh.tri();
+  const std::uint32_t start = T2::triangle_of(mesh.find_half_edge(2, 3));
+  ConstrainedMesh2::Location at = mesh.locate({1, 1}, start);
+  EXPECT_EQ(at.where, ConstrainedMesh2::Where::Vertex);
+  EXPECT_EQ(at.handle, 4u);
+  at = mesh.locate({0.5, 0.5}, start);
+  ASSERT_EQ(at.where, ConstrainedMesh2::Where::Edge);
+  EXPECT_EQ((std::set{tri.origin(at.handle), tri.destination(at.handle)}), (std::set<std::uint32_t>{0, 4}));
+  at = mesh.locate({1, 0.25}, start);
+  ASSERT_EQ(at.where, ConstrainedMesh2::Where::Triangle);
+  EXPECT_EQ((std::set{tri.vertex(at.triangle, 0), tri.vertex(at.triangle, 1), tri.vertex(at.triangle, 2)}),
+            (std::set<std::uint32_t>{0, 1, 4}));
+  at = mesh.locate({3, 1}, start);
+  ASSERT_EQ(at.where, ConstrainedMesh2::Where::Outside);
+  EXPECT_TRUE(tri.is_ghost(at.triangle));
+  const ConstrainedMesh2::SegmentWalk through = mesh.walk(0, 2);
+  EXPECT_TRUE(through.crossed.empty());
+  EXPECT_EQ(through.stop, 4u);
+  EXPECT_FALSE(mesh.flippable(mesh.find_half_edge(0, 4)));  // 1, 4, 3 collinear
+
+  const std::vector<Vec2> quad{{0, 0}, {2, 0}, {2.5, 1}, {0, 1}};
+  Delaunay2dResult two = delaunay2d(quad);
+  ConstrainedMesh2 q(two.triangulation);
+  const std::uint32_t d = q.find_half_edge(0, 2) != ConstrainedMesh2::kNone ? 0 : 1;  // the diagonal from d
+  const std::uint32_t s = 1 - d, e = 3 - d;
+  const ConstrainedMesh2::SegmentWalk across = q.walk(s, e);
+  ASSERT_EQ(across.crossed.size(), 1u);
+  EXPECT_EQ(across.stop, e);
+  EXPECT_EQ(orient2d(quad[s], quad[e], quad[q.tri().origin(across.crossed[0])]), Sign::Negative);
+  for (std::uint32_t k = 0; k < 4; ++k) q.set_constraint(q.find_half_edge(k, (k + 1) % 4), 10 + k);
+  const std::uint32_t g = q.flip(q.find_half_edge(d, d + 2));
+  q.tri().check_topology();
+  EXPECT_EQ(q.flip_count(), 1u);
+  EXPECT_EQ(q.constraint(g), ConstrainedMesh2::kNone);
+  EXPECT_EQ(q.find_half_edge(d, d + 2), ConstrainedMesh2::kNone);
+  const ConstrainedMesh2::SegmentWalk along = q.walk(s, e);
+  EXPECT_TRUE(along.crossed.empty());
+  EXPECT_EQ(along.stop, e);
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    const std::uint32_t h = q.find_half_edge(k, (k + 1) % 4);
+    EXPECT_EQ(q.constraint(h), 10 + k);
+    EXPECT_EQ(q.constraint(q.tri().twin(h)), 10 + k);
+    const std::uint32_t t = q.triangle_of_vertex(k);  // kept current by the flip
+    EXPECT_TRUE(q.tri().vertex(t, 0) == k || q.tri().vertex(t, 1) == k || q.tri().vertex(t, 2) == k);
+  }
+}
 
 std::vector<std::string> method_names() {
   std::vector<std::string> out;

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -88,12 +89,53 @@ TEST(Mesh2, FlipKeepsTheStructureValid) {
   MeshData2 data;
   data.vertices = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
   data.triangles = {{0, 1, 2}, {0, 2, 3}};
+  data.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  data.edge_refs = {7, 8, 9, 10};
   Mesh2 mesh = mesh2_from_data(data);
   const std::uint32_t h = mesh.find_half_edge(0, 2);
   const std::uint32_t g = mesh.flip(h);
   mesh.check();
   EXPECT_TRUE((mesh.origin(g) == 1 && mesh.destination(g) == 3) || (mesh.origin(g) == 3 && mesh.destination(g) == 1));
+  EXPECT_FALSE(mesh.is_constrained(g));
   EXPECT_EQ(mesh.find_half_edge(0, 2), Mesh2::kNone);
+  // The outer edges' constraints and references moved with them (nav2::flip's payload hook).
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    const std::uint32_t e = mesh.find_half_edge(k, (k + 1) % 4);
+    ASSERT_NE(e, Mesh2::kNone);
+    EXPECT_TRUE(mesh.is_constrained(e));
+    EXPECT_EQ(mesh.edge_ref(e), static_cast<int>(7 + k));
+  }
+}
+
+// The visibility walk of the shared core (nav2::locate) on Mesh2: a vertex, an edge, inside,
+// outside the hull, and stopped by constrained edges.
+TEST(Mesh2, LocateOnVertexEdgeInsideOutsideAndBlocked) {
+  MeshData2 data;
+  data.vertices = {{0, 0}, {2, 0}, {2, 2}, {0, 2}, {1, 1}};
+  data.triangles = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  data.edges = {{0, 4}, {2, 4}};  // with the hull: (2, 3, 4) and (0, 1, 4) on opposite sides
+  const Mesh2 mesh = mesh2_from_data(data);
+  const std::uint32_t start = Mesh2::triangle_of(mesh.find_half_edge(2, 3));  // (2, 3, 4)
+  auto vertices_of = [&](std::uint32_t t) {
+    return std::set<std::uint32_t>{mesh.vertex(t, 0), mesh.vertex(t, 1), mesh.vertex(t, 2)};
+  };
+  Mesh2::Location at = mesh.locate({1, 1}, start);
+  EXPECT_EQ(at.where, Mesh2::Where::Vertex);
+  EXPECT_EQ(at.handle, 4u);
+  at = mesh.locate({0.5, 0.5}, start);
+  ASSERT_EQ(at.where, Mesh2::Where::Edge);
+  EXPECT_EQ((std::set{mesh.origin(at.handle), mesh.destination(at.handle)}), (std::set<std::uint32_t>{0, 4}));
+  EXPECT_EQ(Mesh2::triangle_of(at.handle), at.triangle);
+  at = mesh.locate({1, 0.25}, start);
+  ASSERT_EQ(at.where, Mesh2::Where::Triangle);
+  EXPECT_EQ(vertices_of(at.triangle), (std::set<std::uint32_t>{0, 1, 4}));
+  at = mesh.locate({3, 1}, start);
+  ASSERT_EQ(at.where, Mesh2::Where::Outside);
+  EXPECT_TRUE(mesh.is_ghost(at.triangle));
+  at = mesh.locate({1, 0.25}, start, /*stop_at_constraints=*/true);
+  EXPECT_TRUE(at.blocked);
+  EXPECT_EQ(at.where, Mesh2::Where::Triangle);
+  EXPECT_NE(vertices_of(at.triangle), (std::set<std::uint32_t>{0, 1, 4}));
 }
 
 // The kernel with an isotropic metric keeps the mesh Delaunay: every unconstrained interior edge
