@@ -152,7 +152,7 @@ Mesh2::Location Mesh2::locate(const Vec2& p, std::uint32_t start, bool stop_at_c
   DTLAB_ASSERT(start < triangle_capacity() && is_alive(start));
   std::uint64_t rng = 0x9E3779B97F4A7C15ull ^ (static_cast<std::uint64_t>(start) * 0xBF58476D1CE4E5B9ull);
   return nav2::locate(*this, p, start, rng, 64ull * live_triangle_count() + 64,
-                      [&](std::uint32_t h) { return stop_at_constraints && constrained_[h]; });
+                      [this, stop_at_constraints](std::uint32_t h) { return stop_at_constraints && constrained_[h]; });
 }
 
 std::uint32_t Mesh2::flip(std::uint32_t h) {

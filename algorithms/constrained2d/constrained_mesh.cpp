@@ -92,8 +92,9 @@ void ConstrainedMesh2::write_triangle(std::uint32_t t, std::uint32_t a, std::uin
 
 void ConstrainedMesh2::note_written(std::uint32_t t) noexcept {
   written_.push_back(t);
-  for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h)
-    if (tri_.vertex_at(h) != kInf) vtri_[tri_.vertex_at(h)] = t;
+  const std::uint32_t* v = tri_.vertices().data() + 3 * t;
+  for (std::uint32_t i = 0; i < 3; ++i)
+    if (v[i] != kInf) vtri_[v[i]] = t;
 }
 
 std::uint32_t ConstrainedMesh2::find_half_edge(std::uint32_t u, std::uint32_t v) const {
