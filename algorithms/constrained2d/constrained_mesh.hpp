@@ -9,8 +9,8 @@
 // A sibling of Mesh2, not a layer over it: Mesh2 owns copies of the arrays and carries a metric
 // and flags per vertex, a reference per triangle, a flag and a reference per half-edge and free
 // lists, none of which these methods use; building a Mesh2 from a 200k-point Delaunay
-// triangulation takes 0.052 s against 0.021 s for this layer (and a copy back), at 43 B per
-// triangle and 45 B per vertex against 36 and 20.
+// triangulation takes 0.020 s against 0.0054 s for this layer (and a Mesh2 needs a copy back),
+// at 43 B per triangle and 45 B per vertex against 36 and 20.
 // Every loop is bounded; a broken structure gives InternalError, never a hang.
 #pragma once
 
