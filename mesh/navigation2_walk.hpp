@@ -22,8 +22,8 @@ namespace dtlab::nav2 {
 // their vertex. InternalError after `bound` steps (the walk ends with probability 1). Inlined:
 // the 2D mesher calls it millions of times, and as a call it costs 1% more instructions.
 template <class Mesh, class Blocked>
-[[gnu::always_inline]] inline Location locate(const Mesh& m, const Vec2& p, std::uint32_t start, std::uint64_t& rng, std::uint64_t bound,
-                Blocked&& blocked) {
+[[gnu::always_inline]] inline Location locate(const Mesh& m, const Vec2& p, std::uint32_t start, std::uint64_t& rng,
+                                              std::uint64_t bound, Blocked&& blocked) {
   std::uint32_t t = start;
   if (m.is_ghost(t)) t = Mesh::triangle_of(m.twin(3 * t));
   std::uint32_t came_from = kNone;
