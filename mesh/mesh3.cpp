@@ -87,7 +87,7 @@ Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_re
   metrics_.assign(n, metric);
   anisotropic_slots_ = metric.is_scalar() ? 0 : n;
   vertex_flags_.assign(n, kFixed);
-  vertex_tetrahedron_ = vertex_tetrahedra(tet, /*finite_first=*/false);
+  vertex_tetrahedron_ = vertex_tetrahedra(tet, Incident::First);
   changed_at_.assign(n, 0);
   vertices_.resize(4 * nt);
   neighbours_.resize(4 * nt);
