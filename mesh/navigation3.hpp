@@ -113,16 +113,19 @@ inline Walk visibility_walk(const Mesh& m, const Vec3& p, std::uint32_t t, std::
     if (m.is_ghost(t)) return {t, came_from, 0, Walk::End::Ghost};
     const std::uint32_t first_facet = first(step);
     std::uint32_t zero = 0, next = kNone;
-    for (std::uint32_t k = 0; k < 4 && next == kNone; ++k) {
+    for (std::uint32_t k = 0; k < 4; ++k) {
       const std::uint32_t h = 4 * t + ((first_facet + k) & 3u);
       if (h == came_from) continue;
       const auto f = m.facet_vertices(h);
       const Sign s = orient3d(m.point(f[0]), m.point(f[1]), m.point(f[2]), p);
+      if (s == Sign::Negative) {
+        const Beyond b = beyond(h);
+        if (b == Beyond::Stop) return {t, came_from, zero, Walk::End::Stopped};
+        if (b == Beyond::Skip) continue;
+        next = m.twin(h);
+        break;
+      }
       if (s == Sign::Zero) zero |= 1u << (h & 3u);
-      if (s != Sign::Negative) continue;
-      const Beyond b = beyond(h);
-      if (b == Beyond::Stop) return {t, came_from, zero, Walk::End::Stopped};
-      if (b == Beyond::Cross) next = m.twin(h);
     }
     if (next == kNone) return {t, came_from, zero, Walk::End::Found};
     came_from = next;

@@ -64,35 +64,29 @@ void ControlSpace3::build(const std::vector<Metric3>& metrics) {
     throw InputError("the control space has " + std::to_string(metrics.size()) + " metrics for " + std::to_string(n) +
                      " background vertices");
   }
-  std::vector<std::uint8_t> used(n, 0);
+  // A live vertex is a vertex of a finite tetrahedron (a ghost's lie on a hull facet).
+  for (std::uint32_t v = 0; v < n; ++v) {
+    const bool dead = mesh_.is_dead_vertex(v);
+    if (!dead && !metrics[v].is_positive_definite())
+      throw InputError("the metric at background vertex " + std::to_string(v + 1) + " is not positive definite", {v});
+    mesh_.set_metric(v, dead ? Metric3{} : metrics[v]);
+  }
   std::vector<bool> skip(capacity, true);
+  std::vector<std::array<std::uint32_t, 4>> tets(capacity, {0, 0, 0, 0});
+  uniform_.assign(capacity, 0);
+  constant_ = true;
   for (std::uint32_t t = 0; t < capacity; ++t) {
     if (!mesh_.is_alive(t) || mesh_.is_ghost(t)) continue;
     if (start_ == kNoHint) start_ = t;
     skip[t] = false;
     ++walk_bound_;
-    for (const std::uint32_t x : mesh_.tetrahedron(t)) used[x] = 1;
+    const auto v = tets[t] = mesh_.tetrahedron(t);
+    const auto m = [&](std::uint32_t i) -> const Metric3& { return mesh_.metric(v[i]); };
+    uniform_[t] = m(0) == m(1) && m(1) == m(2) && m(2) == m(3);
+    constant_ = constant_ && uniform_[t] && m(0) == mesh_.metric(mesh_.vertex(start_, 0));
   }
   if (start_ == kNoHint) throw InputError("the background mesh has no tetrahedron");
   walk_bound_ += 64;
-  for (std::uint32_t v = 0; v < n; ++v) {
-    if (used[v] && !metrics[v].is_positive_definite())
-      throw InputError("the metric at background vertex " + std::to_string(v + 1) + " is not positive definite", {v});
-    mesh_.set_metric(v, mesh_.is_dead_vertex(v) ? Metric3{} : metrics[v]);
-  }
-  uniform_.assign(capacity, 0);
-  constant_ = true;
-  const Metric3& m0 = mesh_.metric(mesh_.vertex(start_, 0));
-  for (std::uint32_t t = 0; t < capacity; ++t) {
-    if (skip[t]) continue;
-    const auto v = mesh_.tetrahedron(t);
-    const auto m = [&](std::uint32_t i) -> const Metric3& { return mesh_.metric(v[i]); };
-    uniform_[t] = m(0) == m(1) && m(1) == m(2) && m(2) == m(3);
-    constant_ = constant_ && uniform_[t] && m(0) == m0;
-  }
-  std::vector<std::array<std::uint32_t, 4>> tets(capacity, {0, 0, 0, 0});
-  for (std::uint32_t t = 0; t < capacity; ++t)
-    if (!skip[t]) tets[t] = mesh_.tetrahedron(t);
   grid_ = ElementGrid<Vec3>(mesh_.points(), std::span<const std::array<std::uint32_t, 4>>(tets), &skip);
 }
 
@@ -132,12 +126,8 @@ ControlSpace3 ControlSpace3::uniform(const Metric3& metric, const Vec3& lo, cons
 
 double ControlSpace3::median_largest_size() const {
   std::vector<double> h;
-  std::vector<std::uint8_t> used(mesh_.vertex_capacity(), 0);
-  for (std::uint32_t t = 0; t < mesh_.tetrahedron_capacity(); ++t)
-    if (mesh_.is_alive(t) && !mesh_.is_ghost(t))
-      for (const std::uint32_t x : mesh_.tetrahedron(t)) used[x] = 1;
-  for (std::uint32_t v = 0; v < used.size(); ++v)
-    if (used[v]) h.push_back(sizes(mesh_.metric(v))[0]);
+  for (std::uint32_t v = 0; v < mesh_.vertex_capacity(); ++v)
+    if (!mesh_.is_dead_vertex(v)) h.push_back(sizes(mesh_.metric(v))[0]);
   DTLAB_ASSERT(!h.empty());
   std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(h.size() / 2), h.end());
   return h[h.size() / 2];
