@@ -278,7 +278,9 @@ TEST(Mesh3, SharedWalkSkipsTheBoundaryOfANonConvexMesh) {
     // Across the hole the straight way leaves the mesh (the walk stops at the hole's wall); along
     // a convex side of the ring it reaches p.
     ASSERT_EQ(beyond_any, across) << k;
-    if (beyond_any) EXPECT_EQ(m.locate(p, w.tetrahedron).where, Mesh3::Where::Outside);
+    if (beyond_any) {
+      EXPECT_EQ(m.locate(p, w.tetrahedron).where, Mesh3::Where::Outside);
+    }
   }
 }
 
