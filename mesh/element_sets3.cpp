@@ -24,15 +24,16 @@ std::uint32_t index_of(const T3& tet, std::uint32_t t, std::uint32_t v) {
 
 }  // namespace
 
-std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet, bool finite_first) {
+std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet, Incident which) {
   std::vector<std::uint32_t> out(tet.point_count(), T3::kNone);
   const auto count = static_cast<std::uint32_t>(tet.tetrahedron_count());
+  const bool finite_first = which == Incident::FirstFinite, last = which == Incident::Last;
   for (int pass = 0; pass < (finite_first ? 2 : 1); ++pass) {  // finite first: ghosts fill the gaps
     for (std::uint32_t t = 0; t < count; ++t) {
       if (finite_first && tet.is_ghost(t) != (pass == 1)) continue;
       for (std::uint32_t i = 0; i < 4; ++i) {
         const std::uint32_t v = tet.vertex(t, i);
-        if (v != T3::kInfinite && v < out.size() && out[v] == T3::kNone) out[v] = t;
+        if (v != T3::kInfinite && v < out.size() && (last || out[v] == T3::kNone)) out[v] = t;
       }
     }
   }

@@ -12,10 +12,12 @@
 
 namespace dtlab {
 
-// For each vertex id, the first tetrahedron in storage order incident to it (with finite_first,
-// ghosts only if no finite one is), or Tetrahedralization3::kNone for points that no tetrahedron
-// uses (duplicates). O(size).
-std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet, bool finite_first = true);
+// Which tetrahedron vertex_tetrahedra gives a vertex, in storage order: the first (ghosts too,
+// as Mesh3 starts), the first finite one (a ghost only where no finite one is), the last.
+enum class Incident : std::uint8_t { First, FirstFinite, Last };
+// For each vertex id, one tetrahedron incident to it (`which`), or Tetrahedralization3::kNone for
+// points that no tetrahedron uses (duplicates). O(size).
+std::vector<std::uint32_t> vertex_tetrahedra(const Tetrahedralization3& tet, Incident which = Incident::FirstFinite);
 
 // Whether each of `edges` and `faces` (vertex ids in any order) is an edge or a face of a finite
 // tetrahedron: edge_present[k] for edges[k], face_present[k] for faces[k]. One search of the ball

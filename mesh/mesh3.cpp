@@ -87,7 +87,7 @@ Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_re
   metrics_.assign(n, metric);
   anisotropic_slots_ = metric.is_scalar() ? 0 : n;
   vertex_flags_.assign(n, kFixed);
-  vertex_tetrahedron_ = vertex_tetrahedra(tet, /*finite_first=*/false);
+  vertex_tetrahedron_ = vertex_tetrahedra(tet, Incident::First);
   changed_at_.assign(n, 0);
   vertices_.resize(4 * nt);
   neighbours_.resize(4 * nt);
@@ -130,6 +130,11 @@ Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_re
     }
     constrain_triangle(facet_of[i], c);
   }
+}
+
+void Mesh3::clear_constraints() {
+  constrained_edges_ = {};
+  std::fill(facet_refs_.begin(), facet_refs_.end(), kUnconstrained);
 }
 
 void Mesh3::constrain_triangle(std::uint32_t h, const MeshTriangle3& c) {
@@ -427,62 +432,49 @@ Mesh3::Location Mesh3::locate(const Vec3& p, std::uint32_t start, bool stop_at_c
   std::uint32_t t = start;
   if (is_ghost(t)) t = tetrahedron_of(neighbours_[4 * t]);
   if (region != nullptr && !in_region(t, *region)) return {Where::Inside, t, kNone, true};
+  // Stochastic (the first facet tested at random), stopped at constraints or the region's edge.
   std::uint64_t rng = 0x9E3779B97F4A7C15ull ^ (static_cast<std::uint64_t>(start) * 0xBF58476D1CE4E5B9ull);
-  const std::uint64_t bound = 64ull * live_tetrahedron_count() + 64;
-  std::uint32_t came_from = kNone;
-  for (std::uint64_t step = 0; step < bound; ++step) {
-    if (is_ghost(t)) return {Where::Outside, t, kNone, false};
-    // Stochastic visibility walk (Devillers, Pion, Teillaud 2002): test the facets from a random
-    // one, step across the first that has p strictly on its far side. Facet i followed by vertex
-    // i is positive, so orient3d(facet, p) < 0 puts p beyond it.
+  const auto first = [&rng](std::uint64_t) {
     rng ^= rng << 13;
     rng ^= rng >> 7;
     rng ^= rng << 17;
-    const std::uint32_t first = static_cast<std::uint32_t>(rng % 4);
-    bool moved = false;
-    std::uint32_t zero_mask = 0;
-    for (std::uint32_t k = 0; k < 4; ++k) {
-      const std::uint32_t i = (first + k) % 4;
-      const std::uint32_t h = 4 * t + i;
-      if (h == came_from) continue;
-      const auto f = facet_vertices(h);
-      const Sign s = orient3d(points_[f[0]], points_[f[1]], points_[f[2]], p);
-      if (s == Sign::Negative) {
-        if (stop_at_constraints && is_constrained(h)) return {Where::Inside, t, kNone, true};
-        if (region != nullptr && !in_region(tetrahedron_of(neighbours_[h]), *region)) return {Where::Inside, t, kNone, true};
-        came_from = neighbours_[h];
-        t = tetrahedron_of(came_from);
-        moved = true;
-        break;
-      }
-      if (s == Sign::Zero) zero_mask |= 1u << i;
-    }
-    if (moved) continue;
-    // came_from was skipped: p is not strictly beyond it (we came from there), but it may be on it.
-    if (came_from != kNone) {
-      const auto f = facet_vertices(came_from);
-      if (orient3d(points_[f[0]], points_[f[1]], points_[f[2]], p) == Sign::Zero)
-        zero_mask |= 1u << index_in_tetrahedron(came_from);
-    }
-    const int zeros = std::popcount(zero_mask);
-    if (zeros == 0) return {Where::Inside, t, kNone, false};
-    if (zeros == 1) return {Where::Facet, t, 4 * t + static_cast<std::uint32_t>(std::countr_zero(zero_mask)), false};
-    if (zeros == 2) {
-      // The edge lies on both zero facets: its vertices are the two not opposite them.
-      Location loc{Where::Edge, t, kNone, false};
-      for (std::uint32_t i = 0; i < 4; ++i) {
-        if (zero_mask & (1u << i)) continue;
-        (loc.edge_a == kNone ? loc.edge_a : loc.edge_b) = vertices_[4 * t + i];
-      }
-      return loc;
-    }
-    // Three zero facets meet at the one vertex none of them is opposite: p is that vertex.
-    for (std::uint32_t i = 0; i < 4; ++i)
-      if (!(zero_mask & (1u << i))) return {Where::Vertex, t, vertices_[4 * t + i], false};
-    throw InternalError("Mesh3::locate: p is on all four facets of tetrahedron " + std::to_string(t));
+    return static_cast<std::uint32_t>(rng % 4);
+  };
+  const auto beyond = [&](std::uint32_t h) {
+    const bool stop = (stop_at_constraints && is_constrained(h)) ||
+                      (region != nullptr && !in_region(tetrahedron_of(neighbours_[h]), *region));
+    return stop ? nav3::Beyond::Stop : nav3::Beyond::Cross;
+  };
+  const nav3::Walk w = nav3::visibility_walk(*this, p, t, 64ull * live_tetrahedron_count() + 64, first, beyond);
+  t = w.tetrahedron;
+  if (w.end == nav3::Walk::End::Bound)
+    throw InternalError("Mesh3::locate: no tetrahedron found for (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                        ", " + std::to_string(p.z) + ") within the step bound");
+  if (w.end == nav3::Walk::End::Ghost) return {Where::Outside, t, kNone, false};
+  if (w.end == nav3::Walk::End::Stopped) return {Where::Inside, t, kNone, true};
+  std::uint32_t zero_mask = w.zero_facets;
+  // came_from was skipped: p is not strictly beyond it (we came from there), but it may be on it.
+  if (w.came_from != kNone) {
+    const auto f = facet_vertices(w.came_from);
+    if (orient3d(points_[f[0]], points_[f[1]], points_[f[2]], p) == Sign::Zero)
+      zero_mask |= 1u << index_in_tetrahedron(w.came_from);
   }
-  throw InternalError("Mesh3::locate: no tetrahedron found for (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
-                      ", " + std::to_string(p.z) + ") within the step bound");
+  const int zeros = std::popcount(zero_mask);
+  if (zeros == 0) return {Where::Inside, t, kNone, false};
+  if (zeros == 1) return {Where::Facet, t, 4 * t + static_cast<std::uint32_t>(std::countr_zero(zero_mask)), false};
+  if (zeros == 2) {
+    // The edge lies on both zero facets: its vertices are the two not opposite them.
+    Location loc{Where::Edge, t, kNone, false};
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (zero_mask & (1u << i)) continue;
+      (loc.edge_a == kNone ? loc.edge_a : loc.edge_b) = vertices_[4 * t + i];
+    }
+    return loc;
+  }
+  // Three zero facets meet at the one vertex none of them is opposite: p is that vertex.
+  for (std::uint32_t i = 0; i < 4; ++i)
+    if (!(zero_mask & (1u << i))) return {Where::Vertex, t, vertices_[4 * t + i], false};
+  throw InternalError("Mesh3::locate: p is on all four facets of tetrahedron " + std::to_string(t));
 }
 
 void Mesh3::check() const {

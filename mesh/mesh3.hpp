@@ -177,6 +177,9 @@ class Mesh3 {
   bool is_constrained_edge(std::uint32_t a, std::uint32_t b) const;
   void set_constrained_edge(std::uint32_t a, std::uint32_t b, bool constrained);
   std::size_t constrained_edge_count() const noexcept { return constrained_edges_.size(); }
+  // Forgets every constrained facet and edge (for a copy that only locates points: the control
+  // space's background, algorithms/mesh3d/control_space.hpp).
+  void clear_constraints();
   // Constrains facet h on both sides with c.ref, and c's edges (ab, bc, ca) and vertices; c names
   // h's three vertices.
   void constrain_triangle(std::uint32_t h, const MeshTriangle3& c);

@@ -7,6 +7,7 @@
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/element_sets3.hpp"
 #include "mesh/navigation3.hpp"
 #include "mesh/tetrahedralization3_build.hpp"
 
@@ -38,13 +39,11 @@ std::string number(std::uint64_t i) { return std::to_string(i + 1); }
 void check_vertex_balls(const T3& tet) {
   const std::size_t n = tet.point_count();
   const auto& records = tet.records();
-  std::vector<std::uint32_t> incident(n, 0), first(n, T3::kNone);
-  for (std::uint32_t t = 0; t < records.size(); ++t)
-    for (const std::uint32_t v : records[t].vertex) {
-      if (v == T3::kInfinite) continue;
-      ++incident[v];
-      if (first[v] == T3::kNone) first[v] = t;
-    }
+  const std::vector<std::uint32_t> first = vertex_tetrahedra(tet, Incident::First);
+  std::vector<std::uint32_t> incident(n, 0);
+  for (const auto& r : records)
+    for (const std::uint32_t v : r.vertex)
+      if (v != T3::kInfinite) ++incident[v];
   std::vector<std::uint32_t> stamp(records.size(), T3::kNone), queue;
   for (std::uint32_t v = 0; v < n; ++v) {
     if (first[v] == T3::kNone) continue;

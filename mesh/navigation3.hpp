@@ -2,12 +2,16 @@
 // numbering drawn in mesh/tetrahedralization3.hpp (Tetrahedralization3, Mesh3): any Mesh with
 // vertex(t, i) and adjacent(t, i). The ball of a vertex (book §1.7) is not a cycle as in 2D, so
 // it is searched across the facets that hold the vertex; the shell of an edge (§8.3.2) is a cycle,
-// walked with the table below.
+// walked with the table below. The visibility walk of point location (Mesh3::locate and the
+// control space's background, algorithms/mesh3d/control_space.hpp) is at the end.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <vector>
+
+#include "kernel/predicates.hpp"
+#include "kernel/vec.hpp"
 
 namespace dtlab::nav3 {
 
@@ -84,6 +88,50 @@ inline std::array<std::uint32_t, 2> local_indices(const std::uint32_t* v, std::u
     if (v[i] == b) out[1] = i;
   }
   return out;
+}
+
+// The visibility walk (Devillers, Pion, Teillaud 2002) towards p from t, on any Mesh with
+// is_ghost, facet_vertices, point and twin. Each step tests t's facets from first(step) on, all
+// but the one it came in by (p is on its near side), and at the first with p strictly beyond it
+// (orient3d < 0: facet i followed by vertex i is positive) asks beyond(h) whether to cross it,
+// to skip it (test the next) or to stop in t. The callers' policies: Mesh3::locate starts at a
+// random facet and stops at constraints; the control space rotates the first facet with the
+// step (a deterministic break of the cycles a non-Delaunay mesh allows) and skips its boundary.
+enum class Beyond : std::uint8_t { Cross, Skip, Stop };
+struct Walk {
+  enum class End : std::uint8_t { Found, Stopped, Ghost, Bound };
+  std::uint32_t tetrahedron;
+  std::uint32_t came_from;    // the facet handle (in tetrahedron) it entered by; kNone at start
+  std::uint32_t zero_facets;  // Found: bit i when p is on facet i (came_from not tested)
+  End end;                    // Found: no facet has p beyond it that was not skipped
+};
+template <class Mesh, class First, class BeyondFn>
+inline Walk visibility_walk(const Mesh& m, const Vec3& p, std::uint32_t t, std::uint64_t bound, First&& first,
+                            BeyondFn&& beyond) {
+  std::uint32_t came_from = kNone;
+  for (std::uint64_t step = 0; step < bound; ++step) {
+    if (m.is_ghost(t)) return {t, came_from, 0, Walk::End::Ghost};
+    const std::uint32_t first_facet = first(step);
+    std::uint32_t zero = 0, next = kNone;
+    for (std::uint32_t k = 0; k < 4; ++k) {
+      const std::uint32_t h = 4 * t + ((first_facet + k) & 3u);
+      if (h == came_from) continue;
+      const auto f = m.facet_vertices(h);
+      const Sign s = orient3d(m.point(f[0]), m.point(f[1]), m.point(f[2]), p);
+      if (s == Sign::Negative) {
+        const Beyond b = beyond(h);
+        if (b == Beyond::Stop) return {t, came_from, zero, Walk::End::Stopped};
+        if (b == Beyond::Skip) continue;
+        next = m.twin(h);
+        break;
+      }
+      if (s == Sign::Zero) zero |= 1u << (h & 3u);
+    }
+    if (next == kNone) return {t, came_from, zero, Walk::End::Found};
+    came_from = next;
+    t = next >> 2;
+  }
+  return {t, came_from, 0, Walk::End::Bound};
 }
 
 }  // namespace dtlab::nav3

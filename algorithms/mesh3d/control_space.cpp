@@ -1,16 +1,18 @@
-// The 3D control space (control_space.hpp): the background's adjacency matched by sorted facet
-// keys, point location by a bounded visibility walk (exact orient3d), the metric interpolated from
-// the tetrahedron's vertices with barycentric weights (kernel/metric.hpp).
+// The 3D control space (control_space.hpp): point location in the background Mesh3 by the
+// visibility walk of mesh/navigation3.hpp (settled by a bucket grid when it leaves the domain),
+// the metric interpolated from the tetrahedron's vertices with barycentric weights
+// (kernel/metric.hpp).
 #include "algorithms/mesh3d/control_space.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
-#include "mesh/mesh3.hpp"
-#include "mesh/tetrahedralization3.hpp"
+#include "mesh/navigation3.hpp"
+#include "mesh/tetrahedralization3_build.hpp"
 
 namespace dtlab {
 
@@ -23,95 +25,74 @@ double det3(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return dot(u, cross(v, w));
 }
 
+// The background from a file as a Mesh3, after the checks its constructor documents.
+Mesh3 background_mesh(const MeshData3& background, std::size_t metrics) {
+  const auto& tets = background.tetrahedra;
+  const auto& points = background.vertices;
+  if (tets.empty()) throw InputError("the background mesh has no tetrahedron");
+  if (metrics != points.size()) {
+    throw InputError("the background mesh has " + std::to_string(points.size()) + " vertices but " +
+                     std::to_string(metrics) + " metrics are given");
+  }
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const auto& v = tets[t];
+    if (std::max({v[0], v[1], v[2], v[3]}) >= points.size())
+      throw InputError("background tetrahedron " + std::to_string(t + 1) + " uses a vertex out of range", {t});
+    if (orient3d(points[v[0]], points[v[1]], points[v[2]], points[v[3]]) != Sign::Positive)
+      throw InputError("background tetrahedron " + std::to_string(t + 1) + " is not positive (flat or inverted)", {t});
+  }
+  const Tetrahedralization3 tet = tetrahedralization_from_tetrahedra(points, tets);
+  return Mesh3(tet, std::vector<int>(tet.tetrahedron_count(), 0), {});
+}
+
 }  // namespace
 
 ControlSpace3::ControlSpace3(const MeshData3& background, std::vector<Metric3> metrics, MetricInterpolation mode)
-    : points_(background.vertices), metrics_(std::move(metrics)), tets_(background.tetrahedra), mode_(mode) {
-  if (tets_.empty()) throw InputError("the background mesh has no tetrahedron");
-  if (metrics_.size() != points_.size()) {
-    throw InputError("the background mesh has " + std::to_string(points_.size()) + " vertices but " +
-                     std::to_string(metrics_.size()) + " metrics are given");
-  }
-  for (std::size_t t = 0; t < tets_.size(); ++t) {
-    const auto& v = tets_[t];
-    if (std::max({v[0], v[1], v[2], v[3]}) >= points_.size())
-      throw InputError("background tetrahedron " + std::to_string(t + 1) + " uses a vertex out of range", {t});
-    if (orient3d(points_[v[0]], points_[v[1]], points_[v[2]], points_[v[3]]) != Sign::Positive)
-      throw InputError("background tetrahedron " + std::to_string(t + 1) + " is not positive (flat or inverted)", {t});
-  }
-  build(mode);
+    : mesh_(background_mesh(background, metrics.size())), mode_(mode) {
+  build(metrics);
 }
 
-ControlSpace3::ControlSpace3(const Mesh3& background, std::vector<Metric3> metrics, MetricInterpolation mode)
-    : points_(background.points().begin(), background.points().end()), metrics_(std::move(metrics)), mode_(mode) {
-  if (metrics_.size() < points_.size()) {
-    throw InputError("the control space has " + std::to_string(metrics_.size()) + " metrics for " +
-                     std::to_string(points_.size()) + " background vertices");
-  }
-  metrics_.resize(points_.size());
-  for (std::uint32_t t = 0; t < background.tetrahedron_capacity(); ++t) {
-    if (background.is_alive(t) && !background.is_ghost(t)) tets_.push_back(background.tetrahedron(t));
-  }
-  if (tets_.empty()) throw InputError("the background mesh has no tetrahedron");
-  // Dead vertex slots carry whatever metric; give them the identity so that validation passes.
-  for (std::uint32_t v = 0; v < background.vertex_capacity(); ++v) {
-    if (background.is_dead_vertex(v)) metrics_[v] = Metric3{};
-  }
-  build(mode);
+ControlSpace3::ControlSpace3(Mesh3 background, std::vector<Metric3> metrics, MetricInterpolation mode)
+    : mesh_(std::move(background)), mode_(mode) {
+  mesh_.clear_constraints();
+  build(metrics);
 }
 
-void ControlSpace3::build(MetricInterpolation mode) {
-  mode_ = mode;
-  std::vector<std::uint8_t> used(points_.size(), 0);
-  for (const auto& v : tets_)
-    for (const std::uint32_t x : v) used[x] = 1;
-  for (std::size_t v = 0; v < points_.size(); ++v) {
-    if (used[v] && !metrics_[v].is_positive_definite())
+void ControlSpace3::build(const std::vector<Metric3>& metrics) {
+  const std::uint32_t n = mesh_.vertex_capacity(), capacity = mesh_.tetrahedron_capacity();
+  if (metrics.size() < n) {
+    throw InputError("the control space has " + std::to_string(metrics.size()) + " metrics for " + std::to_string(n) +
+                     " background vertices");
+  }
+  // A live vertex is a vertex of a finite tetrahedron (a ghost's lie on a hull facet).
+  for (std::uint32_t v = 0; v < n; ++v) {
+    const bool dead = mesh_.is_dead_vertex(v);
+    if (!dead && !metrics[v].is_positive_definite())
       throw InputError("the metric at background vertex " + std::to_string(v + 1) + " is not positive definite", {v});
+    mesh_.set_metric(v, dead ? Metric3{} : metrics[v]);
   }
-  // Twins: the facets' sorted vertex triples, sorted; equal neighbours pair up.
-  struct Key {
-    std::array<std::uint32_t, 3> v;
-    std::uint32_t handle;
-  };
-  std::vector<Key> keys;
-  keys.reserve(4 * tets_.size());
-  for (std::uint32_t t = 0; t < tets_.size(); ++t) {
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      std::array<std::uint32_t, 3> f{tets_[t][kFacetVertex[i][0]], tets_[t][kFacetVertex[i][1]], tets_[t][kFacetVertex[i][2]]};
-      std::sort(f.begin(), f.end());
-      keys.push_back({f, 4 * t + i});
-    }
-  }
-  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.v != b.v ? a.v < b.v : a.handle < b.handle; });
-  neighbours_.assign(tets_.size(), {kNone, kNone, kNone, kNone});
-  for (std::size_t k = 0; k < keys.size();) {
-    std::size_t e = k + 1;
-    while (e < keys.size() && keys[e].v == keys[k].v) ++e;
-    if (e - k > 2) {
-      throw InputError("background facet (" + std::to_string(keys[k].v[0] + 1) + ", " + std::to_string(keys[k].v[1] + 1) +
-                       ", " + std::to_string(keys[k].v[2] + 1) + ") is shared by more than two tetrahedra");
-    }
-    if (e - k == 2) {
-      neighbours_[keys[k].handle >> 2][keys[k].handle & 3] = keys[k + 1].handle >> 2;
-      neighbours_[keys[k + 1].handle >> 2][keys[k + 1].handle & 3] = keys[k].handle >> 2;
-    }
-    k = e;
-  }
-  uniform_.resize(tets_.size());
-  for (std::size_t t = 0; t < tets_.size(); ++t) {
-    const auto& v = tets_[t];
-    uniform_[t] = metrics_[v[0]] == metrics_[v[1]] && metrics_[v[1]] == metrics_[v[2]] && metrics_[v[2]] == metrics_[v[3]];
-  }
+  std::vector<bool> skip(capacity, true);
+  std::vector<std::array<std::uint32_t, 4>> tets(capacity, {0, 0, 0, 0});
+  uniform_.assign(capacity, 0);
   constant_ = true;
-  for (std::size_t t = 0; t < tets_.size() && constant_; ++t)
-    constant_ = uniform_[t] && metrics_[tets_[t][0]] == metrics_[tets_[0][0]];
-  grid_ = ElementGrid<Vec3>(points_, std::span<const std::array<std::uint32_t, 4>>(tets_));
+  for (std::uint32_t t = 0; t < capacity; ++t) {
+    if (!mesh_.is_alive(t) || mesh_.is_ghost(t)) continue;
+    if (start_ == kNoHint) start_ = t;
+    skip[t] = false;
+    ++walk_bound_;
+    const auto v = tets[t] = mesh_.tetrahedron(t);
+    const auto m = [&](std::uint32_t i) -> const Metric3& { return mesh_.metric(v[i]); };
+    uniform_[t] = m(0) == m(1) && m(1) == m(2) && m(2) == m(3);
+    constant_ = constant_ && uniform_[t] && m(0) == mesh_.metric(mesh_.vertex(start_, 0));
+  }
+  if (start_ == kNoHint) throw InputError("the background mesh has no tetrahedron");
+  walk_bound_ += 64;
+  grid_ = ElementGrid<Vec3>(mesh_.points(), std::span<const std::array<std::uint32_t, 4>>(tets), &skip);
 }
 
 bool ControlSpace3::contains(std::uint32_t t, const Vec3& p) const {
-  const auto& v = tets_[t];
-  return closed_tetrahedron_holds(points_[v[0]], points_[v[1]], points_[v[2]], points_[v[3]], p);
+  const auto v = mesh_.tetrahedron(t);
+  return closed_tetrahedron_holds(mesh_.point(v[0]), mesh_.point(v[1]), mesh_.point(v[2]), mesh_.point(v[3]), p);
 }
 
 ControlSpace3 ControlSpace3::uniform_size(std::span<const Vec3> points, double h) {
@@ -145,50 +126,33 @@ ControlSpace3 ControlSpace3::uniform(const Metric3& metric, const Vec3& lo, cons
 
 double ControlSpace3::median_largest_size() const {
   std::vector<double> h;
-  std::vector<std::uint8_t> used(points_.size(), 0);
-  for (const auto& v : tets_)
-    for (const std::uint32_t x : v) used[x] = 1;
-  for (std::size_t v = 0; v < points_.size(); ++v)
-    if (used[v]) h.push_back(sizes(metrics_[v])[0]);
+  for (std::uint32_t v = 0; v < mesh_.vertex_capacity(); ++v)
+    if (!mesh_.is_dead_vertex(v)) h.push_back(sizes(mesh_.metric(v))[0]);
   DTLAB_ASSERT(!h.empty());
   std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(h.size() / 2), h.end());
   return h[h.size() / 2];
-}
-
-std::uint32_t ControlSpace3::walk(const Vec3& p, std::uint32_t t) const {
-  // The visibility walk may cycle in a non-Delaunay background: bounded, and the facet tried
-  // first rotates with the step so that a cycle is broken deterministically.
-  const std::size_t bound = tets_.size() + 64;
-  for (std::size_t step = 0; step < bound; ++step) {
-    std::uint32_t next = kNone;
-    for (std::uint32_t k = 0; k < 4; ++k) {
-      const std::uint32_t i = static_cast<std::uint32_t>((k + step) & 3u);
-      const auto& f = kFacetVertex[i];
-      const auto& v = tets_[t];
-      if (orient3d(points_[v[f[0]]], points_[v[f[1]]], points_[v[f[2]]], p) == Sign::Negative) {
-        if (neighbours_[t][i] == kNone) continue;  // beyond the background there
-        next = neighbours_[t][i];
-        break;
-      }
-    }
-    if (next == kNone) return t;  // inside t (or outside the background beyond t's boundary facets)
-    t = next;
-  }
-  return t;
 }
 
 Metric3 ControlSpace3::metric_at(const Vec3& p, std::uint32_t& hint) const {
   // The hint when it holds p (consecutive questions are usually close), else a walk from an
   // element of p's grid bucket: a walk from a far hint (the relocation sweep asks worst ball
   // first, anywhere in the domain) would cross the background.
-  if (constant_) return metrics_[tets_[0][0]];  // the size map of `--size`: nothing to locate
+  if (constant_) return mesh_.metric(mesh_.vertex(start_, 0));  // the size map of `--size`: nothing to locate
+  const bool valid = hint < mesh_.tetrahedron_capacity() && mesh_.is_alive(hint) && !mesh_.is_ghost(hint);
   std::uint32_t t;
-  if (hint < tets_.size() && contains(hint, p)) {
+  if (valid && contains(hint, p)) {
     t = hint;
   } else {
-    std::uint32_t start = hint < tets_.size() ? hint : 0;
+    std::uint32_t start = valid ? hint : start_;
     if (const auto near = grid_.candidates(p); !near.empty()) start = near.front();
-    t = walk(p, start);
+    // Deterministic (the first facet tested rotates with the step, breaking the cycles a
+    // non-Delaunay background allows), bounded, the background's boundary skipped.
+    const auto beyond = [this](std::uint32_t h) {
+      return mesh_.is_ghost(Mesh3::tetrahedron_of(mesh_.twin(h))) ? nav3::Beyond::Skip : nav3::Beyond::Cross;
+    };
+    t = nav3::visibility_walk(mesh_, p, start, walk_bound_, [](std::uint64_t step) { return static_cast<std::uint32_t>(step & 3u); },
+                              beyond)
+            .tetrahedron;
   }
   if (!contains(t, p)) {
     // The walk stopped at the boundary: through a hole or a concavity, or p is outside.
@@ -200,20 +164,20 @@ Metric3 ControlSpace3::metric_at(const Vec3& p, std::uint32_t& hint) const {
     }
   }
   hint = t;
-  const auto& v = tets_[t];
-  if (uniform_[t]) return metrics_[v[0]];
+  const auto v = mesh_.tetrahedron(t);
+  if (uniform_[t]) return mesh_.metric(v[0]);
   std::array<double, 4> w{};
   double sum = 0.0;
   for (std::uint32_t i = 0; i < 4; ++i) {
     const auto& f = kFacetVertex[i];
-    const Vec3 &a = points_[v[f[0]]], &b = points_[v[f[1]]], &c = points_[v[f[2]]];
-    const double whole = det3(a, b, c, points_[v[i]]);
+    const Vec3 &a = mesh_.point(v[f[0]]), &b = mesh_.point(v[f[1]]), &c = mesh_.point(v[f[2]]);
+    const double whole = det3(a, b, c, mesh_.point(v[i]));
     w[i] = std::clamp(det3(a, b, c, p) / whole, 0.0, 1.0);
     sum += w[i];
   }
   if (!(sum > 0.0)) w = {0.25, 0.25, 0.25, 0.25}, sum = 1.0;
   for (double& x : w) x /= sum;
-  const std::array<Metric3, 4> m{metrics_[v[0]], metrics_[v[1]], metrics_[v[2]], metrics_[v[3]]};
+  const std::array<Metric3, 4> m{mesh_.metric(v[0]), mesh_.metric(v[1]), mesh_.metric(v[2]), mesh_.metric(v[3])};
   return interpolate(std::span<const Metric3>(m), std::span<const double>(w), mode_);
 }
 

@@ -4,12 +4,10 @@
 // interpolated P1 on the empty mesh), isotropic (a size map h^-2 I) and anisotropic (a metric
 // map), the last two read from Medit .sol on a background mesh.
 //
-// The background is held as flat arrays (4 vertices and 4 neighbours per tetrahedron, kNone on
-// the background's boundary), built from any list of positive tetrahedra: a background from a
-// file need not be convex nor closed by ghosts.
+// The background is a Mesh3 (as ControlSpace2's is a Mesh2) holding the vertex metrics; one from
+// a file need not be convex: its boundary is closed by ghosts, which the walk does not enter.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -18,26 +16,25 @@
 #include "kernel/vec.hpp"
 #include "mesh/element_grid.hpp"
 #include "mesh/io/mesh_data3.hpp"
+#include "mesh/mesh3.hpp"
 
 namespace dtlab {
 
-class Mesh3;
-
 class ControlSpace3 {
  public:
-  static constexpr std::uint32_t kNone = 0xFFFFFFFFu;
   // Start a walk anywhere.
   static constexpr std::uint32_t kNoHint = 0xFFFFFFFFu;
 
   // A background mesh (its tetrahedra, positive) and one metric per vertex. Throws InputError
   // when the background has no tetrahedron, when the counts differ, naming a tetrahedron with a
-  // vertex out of range or not positive (exact orient3d), or the vertex whose metric is not
-  // positive definite (numbered from 1 in the message, 0-based in items()).
+  // vertex out of range or not positive (exact orient3d), a facet of more than two tetrahedra, a
+  // boundary that is not a closed 2-manifold (mesh/tetrahedralization3_build.hpp), or the vertex
+  // whose metric is not positive definite (numbered from 1 in the message, 0-based in items()).
   ControlSpace3(const MeshData3& background, std::vector<Metric3> metrics,
                 MetricInterpolation mode = MetricInterpolation::Sizes);
   // The finite live tetrahedra of a Mesh3 (the empty mesh, exterior included, in the classical
-  // case) with one metric per vertex slot.
-  ControlSpace3(const Mesh3& background, std::vector<Metric3> metrics,
+  // case: a copy, frozen while the mesh is refined) with one metric per vertex slot.
+  ControlSpace3(Mesh3 background, std::vector<Metric3> metrics,
                 MetricInterpolation mode = MetricInterpolation::Sizes);
 
   // The same metric everywhere: a background of six tetrahedra over the box [lo, hi] (a point
@@ -56,26 +53,23 @@ class ControlSpace3 {
   // nearest point, up to clamping, of the tetrahedron the walk stopped at.
   Metric3 metric_at(const Vec3& p, std::uint32_t& hint) const;
 
-  std::uint32_t tetrahedron_count() const noexcept { return static_cast<std::uint32_t>(tets_.size()); }
-  const std::vector<Vec3>& points() const noexcept { return points_; }
-  const std::vector<Metric3>& vertex_metrics() const noexcept { return metrics_; }
+  // The background, its metrics at its vertices.
+  const Mesh3& background() const noexcept { return mesh_; }
   // The largest size (h = lambda_min^-1/2) over the vertex metrics' median: a typical length of
   // the space, for grids.
   double median_largest_size() const;
 
  private:
-  void build(MetricInterpolation mode);
-  std::uint32_t walk(const Vec3& p, std::uint32_t start) const;
+  void build(const std::vector<Metric3>& metrics);
   bool contains(std::uint32_t t, const Vec3& p) const;
 
-  std::vector<Vec3> points_;
-  std::vector<Metric3> metrics_;
-  std::vector<std::array<std::uint32_t, 4>> tets_;
-  std::vector<std::array<std::uint32_t, 4>> neighbours_;  // tetrahedron across facet i, or kNone
-  std::vector<std::uint8_t> uniform_;                     // per tetrahedron: its four metrics equal
-  bool constant_ = false;                                 // one metric at every vertex of every tetrahedron
+  Mesh3 mesh_;
+  std::vector<std::uint8_t> uniform_;  // per tetrahedron slot: finite, its four metrics equal
+  std::uint32_t start_ = kNoHint;      // the first finite live tetrahedron
+  std::uint64_t walk_bound_ = 0;       // the finite live tetrahedra, and 64
+  bool constant_ = false;              // one metric at every vertex of every tetrahedron
   MetricInterpolation mode_ = MetricInterpolation::Sizes;
-  ElementGrid<Vec3> grid_;                                // the tetrahedra by bucket
+  ElementGrid<Vec3> grid_;  // the finite live tetrahedra by bucket
 };
 
 }  // namespace dtlab

@@ -12,7 +12,9 @@
 #include "algorithms/mesh2d/control_space.hpp"
 #include "algorithms/mesh2d/mesh2d.hpp"
 #include "algorithms/mesh3d/control_space.hpp"
+#include "kernel/error.hpp"
 #include "mesh/element_grid.hpp"
+#include "mesh/mesh3_from_data.hpp"
 #include "verify/generators/domains2d.hpp"
 #include "verify/generators/kuhn_cubes.hpp"
 
@@ -44,13 +46,18 @@ TEST(ControlSpace2, LocatesAcrossAHole) {
   EXPECT_LE(outside, 0.11 + 1e-12);
 }
 
-TEST(ControlSpace3, LocatesAcrossAHole) {
-  // A ring of 8 unit cells around the empty cell [1, 2] x [1, 2] x [0, 1]; size h = 0.1 + 0.1 y.
+// A ring of 8 unit cells around the empty cell [1, 2] x [1, 2] x [0, 1].
+MeshData3 ring_of_cells() {
   std::vector<std::array<int, 3>> cells;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       if (i != 1 || j != 1) cells.push_back({i, j, 0});
-  const MeshData3 background = gen::kuhn_cubes(cells);
+  return gen::kuhn_cubes(cells);
+}
+
+TEST(ControlSpace3, LocatesAcrossAHole) {
+  // Size h = 0.1 + 0.1 y.
+  const MeshData3 background = ring_of_cells();
   std::vector<Metric3> metrics;
   for (const Vec3& p : background.vertices) metrics.push_back(Metric3::isotropic(0.1 + 0.1 * p.y));
   const ControlSpace3 control(background, metrics);
@@ -59,6 +66,41 @@ TEST(ControlSpace3, LocatesAcrossAHole) {
   for (const Vec3& p : queries) {
     EXPECT_NEAR(size3(control.metric_at(p, hint)), 0.1 + 0.1 * p.y, 1e-12) << p.x << ", " << p.y << ", " << p.z;
   }
+}
+
+// The two constructors: a file's tetrahedra, and a Mesh3 (as the classical case gives it, with
+// ghosts, a dead slot and its constraints) of the same background give the same metric exactly,
+// in the ring and in its hole (where the bucket fallback finds nothing).
+TEST(ControlSpace3, MeshAndDataBackgroundsAgree) {
+  const MeshData3 data = ring_of_cells();
+  std::vector<Metric3> metrics;
+  for (const Vec3& p : data.vertices) metrics.push_back(Metric3::isotropic(0.1 + 0.1 * p.y + 0.05 * p.x * p.z));
+  Mesh3 mesh = mesh3_from_data(data);
+  const auto v = mesh.tetrahedron(0);
+  mesh.remove_tetrahedron(mesh.add_tetrahedron(v[0], v[1], v[2], v[3], 0));  // a free slot, not to be seen
+  const ControlSpace3 a(data, metrics), b(mesh, metrics);
+  std::uint32_t ha = ControlSpace3::kNoHint, hb = ControlSpace3::kNoHint;
+  for (int k = 0; k < 400; ++k) {
+    const Vec3 p{0.0075 * (k % 400), 0.0071 * ((k * 37) % 420), 0.0023 * ((k * 11) % 430)};
+    std::uint32_t fresh = ControlSpace3::kNoHint;
+    const Metric3 ma = a.metric_at(p, ha), mb = b.metric_at(p, hb);
+    ASSERT_EQ(ma, mb) << p.x << ", " << p.y << ", " << p.z;
+    ASSERT_EQ(ha, hb);
+    // Inside the ring the answer does not depend on the hint (up to rounding on a shared facet).
+    const bool in_ring = p.x <= 1 || p.x >= 2 || p.y <= 1 || p.y >= 2;
+    ASSERT_TRUE(!in_ring || std::abs(size3(b.metric_at(p, fresh)) - size3(mb)) < 1e-12) << p.x << ", " << p.y;
+  }
+  const Metric3 hole = a.metric_at({1.5, 1.5, 0.5}, ha);  // outside: the nearest point of a tetrahedron
+  EXPECT_GE(size3(hole), 0.1);
+  EXPECT_LE(size3(hole), 0.55);
+  // Two tetrahedra sharing only an edge: their boundary is no closed 2-manifold.
+  MeshData3 bowtie;
+  bowtie.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}};
+  bowtie.tetrahedra = {{0, 1, 2, 3}, {0, 4, 5, 3}};
+  for (auto& t : bowtie.tetrahedra)
+    if (orient3d(bowtie.vertices[t[0]], bowtie.vertices[t[1]], bowtie.vertices[t[2]], bowtie.vertices[t[3]]) != Sign::Positive)
+      std::swap(t[1], t[2]);
+  EXPECT_THROW(ControlSpace3(bowtie, std::vector<Metric3>(6)), InputError);
 }
 
 TEST(ElementGrid, ListsEveryElementMeetingABucket) {

@@ -19,8 +19,10 @@
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
+#include "mesh/element_grid.hpp"
 #include "mesh/mesh3.hpp"
 #include "mesh/mesh3_from_data.hpp"
+#include "mesh/navigation3.hpp"
 #include "verify/generators/kuhn_cubes.hpp"
 
 namespace dtlab {
@@ -236,6 +238,50 @@ TEST(Mesh3, LocateStopsAtConstraints) {
     }
   }
   EXPECT_GT(blocked, 0);
+}
+
+// The shared walk (mesh/navigation3.hpp) with the control space's policy, in a ring of eight
+// cubes around a hole (not convex): it ends in the tetrahedron holding p, or where every facet with p beyond it is on
+// the boundary (skipped), never in a ghost; Mesh3::locate's policy ends Outside there instead.
+TEST(Mesh3, SharedWalkSkipsTheBoundaryOfANonConvexMesh) {
+  std::vector<std::array<int, 3>> ring;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (i != 1 || j != 1) ring.push_back({i, j, 0});
+  const Mesh3 m = mesh3_from_data(gen::kuhn_cubes(ring));
+  const auto skip_boundary = [&](std::uint32_t h) {
+    return m.is_ghost(Mesh3::tetrahedron_of(m.twin(h))) ? nav3::Beyond::Skip : nav3::Beyond::Cross;
+  };
+  const auto rotate = [](std::uint64_t step) { return static_cast<std::uint32_t>(step & 3u); };
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.02, 0.98);
+  for (int k = 0; k < 300; ++k) {
+    const Vec3 p{u(rng) + (k % 2 ? 2 : 0), u(rng) + 1, u(rng)};  // left or right of the hole
+    const bool across = k % 4 < 2;
+    const Vec3 q{across == (p.x > 1) ? 0.5 : 2.5, p.y, p.z};
+    std::uint32_t start = 0;
+    while (m.is_ghost(start) || !closed_tetrahedron_holds(m.point(m.vertex(start, 0)), m.point(m.vertex(start, 1)),
+                                                          m.point(m.vertex(start, 2)), m.point(m.vertex(start, 3)), q))
+      ++start;
+    const nav3::Walk w = nav3::visibility_walk(m, p, start, 1000, rotate, skip_boundary);
+    ASSERT_EQ(w.end, nav3::Walk::End::Found);
+    ASSERT_FALSE(m.is_ghost(w.tetrahedron));
+    bool beyond_inner = false, beyond_any = false;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t h = Mesh3::facet(w.tetrahedron, i);
+      const auto f = m.facet_vertices(h);
+      if (orient3d(m.point(f[0]), m.point(f[1]), m.point(f[2]), p) != Sign::Negative) continue;
+      beyond_any = true;
+      beyond_inner = beyond_inner || !m.is_ghost(Mesh3::tetrahedron_of(m.twin(h)));
+    }
+    ASSERT_FALSE(beyond_inner);
+    // Across the hole the straight way leaves the mesh (the walk stops at the hole's wall); along
+    // a convex side of the ring it reaches p.
+    ASSERT_EQ(beyond_any, across) << k;
+    if (beyond_any) {
+      EXPECT_EQ(m.locate(p, w.tetrahedron).where, Mesh3::Where::Outside);
+    }
+  }
 }
 
 MeshData3 cubes(const std::vector<std::array<int, 3>>& corners, int ref_of_second = 0) {

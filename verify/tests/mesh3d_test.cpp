@@ -166,7 +166,7 @@ TEST(Mesh3d, SizeMapOnABackgroundMesh) {
   // size-map path of the CLI (one metric per background vertex).
   const ControlSpace3 box = ControlSpace3::uniform(Metric3::isotropic(1.0), {0, 0, 0}, {1, 1, 1});
   MeshData3 background;
-  background.vertices = box.points();
+  background.vertices.assign(box.background().points().begin(), box.background().points().end());
   background.vertex_refs.assign(background.vertices.size(), 0);
   // Kuhn's six tetrahedra around the diagonal, as uniform() makes them.
   const std::array<std::array<std::uint32_t, 3>, 6> orders{{{1, 2, 4}, {1, 4, 2}, {2, 1, 4}, {2, 4, 1}, {4, 1, 2}, {4, 2, 1}}};

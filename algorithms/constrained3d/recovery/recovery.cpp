@@ -14,6 +14,7 @@
 #include "kernel/coordinate_range.hpp"
 #include "kernel/error.hpp"
 #include "kernel/rounding.hpp"
+#include "mesh/element_sets3.hpp"
 #include "mesh/navigation3.hpp"
 
 namespace dtlab {
@@ -67,12 +68,7 @@ std::uint64_t coordinate_hash(const Vec3& p) {
 }  // namespace
 
 MeshIndex::MeshIndex(const Tetrahedralization3& mesh)
-    : mesh_(mesh), incident_(mesh.point_count(), T3::kNone), mark_(mesh.tetrahedron_count(), 0) {
-  const auto& records = mesh.records();
-  for (std::uint32_t t = 0; t < records.size(); ++t)
-    for (const std::uint32_t v : records[t].vertex)
-      if (v != T3::kInfinite) incident_[v] = t;
-}
+    : mesh_(mesh), incident_(vertex_tetrahedra(mesh, Incident::Last)), mark_(mesh.tetrahedron_count(), 0) {}
 
 // Depth first over the tetrahedra holding u (nav3::search_ball); stops early where f returns true.
 template <class F>
