@@ -87,7 +87,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
       // The empty mesh's flat tetrahedra in the domain (between boundary facets coplanar up to
       // rounding: a rotated box's faces) swapped away first: split, each would become many, all
       // of them boundary-bound where the optimization cannot reach them.
-      swap_pass3(result.mesh, kImprovementMargin3, {}, kFlatQuality);
+      swap_pass3(result.mesh, kImprovementMargin, {}, kFlatQuality);
       std::uint32_t field_hint = 0;
       const MetricField3 field = mesh_pipeline::metric_field<MetricField3>(control, field_hint);
       Split3Options split;
@@ -96,7 +96,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
       split.quality_limit = HUGE_VAL;
       split.max_vertices = bounded.max_vertices;
       result.stats.boundary_points = boundary_split_pass3(result.mesh, field, split);
-      swap_pass3(result.mesh, kImprovementMargin3, {}, kFlatQuality);  // and those the cut made
+      swap_pass3(result.mesh, kImprovementMargin, {}, kFlatQuality);  // and those the cut made
       if (result.mesh.live_vertex_count() >= bounded.max_vertices) {
         throw InputError("mesh3d: the surface cut in the size reached the vertex bound of " +
                          std::to_string(bounded.max_vertices) + " (max_vertices, max_elements)");
