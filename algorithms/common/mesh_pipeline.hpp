@@ -115,6 +115,19 @@ const auto& method_of(const char* mesher, const Options& options, const auto& bu
   return method;
 }
 
+// The field point loop's check before pass `pass` (0-based) of `method`: the interrupt, then the
+// pass bound (InputError naming it).
+template <class Options, class Stats>
+void check_pass(const char* mesher, const char* method, std::uint32_t pass, const Options& options, const Stats& stats) {
+  if (options.interrupt && options.interrupt())
+    throw Interrupted(std::string(mesher) + ": during the field points (" + method + ")");
+  if (pass == options.max_passes) {
+    throw InputError(std::string(mesher) + ": the " + method + " did not saturate within " +
+                     std::to_string(options.max_passes) + " passes (" + std::to_string(stats.field_points) +
+                     " field points so far)");
+  }
+}
+
 // Steps 3 and 4: field points by `method` and their insertion, timed.
 template <class Result, class Method, class ControlSpace, class Options>
 void field_points(Result& result, const Method& method, const ControlSpace& control, const Options& bounded) {
