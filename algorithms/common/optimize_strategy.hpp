@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -66,6 +67,30 @@ struct OperatorResult {
   std::uint64_t size_changes = 0;
   bool limit = false;
 };
+
+// The registries' size operators, alike in both dimensions (optimize2d/registry.cpp,
+// optimize3d/registry.cpp): `pass()` applies the operator once and returns its count, added to
+// `count`; the relocation's sweeps repeat until one moves no vertex.
+template <class Pass>
+OperatorResult size_operator(bool enabled, std::uint64_t& count, const Pass& pass) {
+  if (!enabled) return {};
+  const std::uint64_t c = pass();
+  count += c;
+  return {c};
+}
+template <class Options, class Stats, class Sweep>
+OperatorResult relocation_sweeps(const Options& options, Stats& stats, const Sweep& sweep) {
+  for (std::uint32_t k = 0; options.relocation && k < options.relocation_sweeps; ++k) {
+    const std::uint64_t moved = sweep();
+    stats.relocations += moved;
+    if (moved == 0) break;
+  }
+  return {};
+}
+inline constexpr std::string_view kCollapseDescription =
+    "collapses of the edges shorter than 1/sqrt2 in the metric, shortest first (§8.3.5; collapse.cpp)";
+inline constexpr std::string_view kSplitDescription =
+    "splits of the edges longer than sqrt2, longest first, each followed by swaps (§8.3.6; split.cpp)";
 
 namespace optimize_detail {
 

@@ -18,6 +18,14 @@
 
 namespace dtlab {
 
+// The usual entry: a name, a line of what it does, and its entry point, a function of type `Run`.
+template <class Run>
+struct NamedEntry {
+  std::string_view name;
+  std::string_view description;
+  Run* run;
+};
+
 template <class Entry>
 class Registry {
  public:

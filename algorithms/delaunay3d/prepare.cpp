@@ -2,12 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <numeric>
-#include <utility>
 
 #include "algorithms/spatial_sort.hpp"
-#include "kernel/coordinate_range.hpp"
-#include "kernel/error.hpp"
 #include "kernel/intersections.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/tetrahedralization3.hpp"
@@ -32,26 +28,13 @@ std::array<std::size_t, 4> first_simplex(std::span<const Vec3> points, std::span
 }
 
 PreparedPoints3 prepare_points3(std::span<const Vec3> points, std::uint64_t seed, WorkerTeam* team) {
-  if (points.size() > Tetrahedralization3::kMaxPoints)
-    throw InputError(std::to_string(points.size()) + " points: more than the " +
-                     std::to_string(Tetrahedralization3::kMaxPoints) + " a 3D tetrahedralization can index");
-  check_coordinates(points, "point", team);
-
-  PreparedPoints3 out;
-  out.points = points;
-  out.seed = seed;
-  DistinctPoints split = distinct_in_hilbert_order(points, team);
-  out.distinct = std::move(split.distinct);
-  out.duplicates = std::move(split.duplicates);
-  out.duplicate_of = std::move(split.duplicate_of);
-  std::vector<std::uint32_t>& ids = out.distinct;
-
+  PreparedPoints3 out = prepare_distinct(points, seed, Tetrahedralization3::kMaxPoints, "a 3D tetrahedralization", 4,
+                                         "tetrahedra", team, [](std::span<const Vec3> p, WorkerTeam* t) {
+                                           return distinct_in_hilbert_order(p, t);
+                                         });
+  if (!out.degenerate_message.empty()) return out;
+  const std::vector<std::uint32_t>& ids = out.distinct;
   const std::size_t m = ids.size();
-  if (m < 4) {
-    out.degenerate_message = "fewer than 4 distinct points (" + std::to_string(m) + " distinct among " +
-                             std::to_string(points.size()) + "): no tetrahedra";
-    return out;
-  }
   const auto simplex = first_simplex(points, ids);
   if (simplex[2] == m) {
     out.degenerate_message =

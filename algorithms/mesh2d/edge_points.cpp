@@ -33,11 +33,7 @@ void insert_edge_points(Mesh2& mesh, const ControlSpace2& control, const Mesh2dO
   std::vector<double> cuts;
   std::uint32_t hint = ControlSpace2::kNoHint;
   for (std::uint32_t pass = 0;; ++pass) {
-    poll_interrupt(options.interrupt, "mesh2d: during the field points (edge method)");
-    if (pass == options.max_passes) {
-      throw InputError("mesh2d: the edge method did not saturate within " + std::to_string(options.max_passes) +
-                       " passes (" + std::to_string(stats.field_points) + " field points so far)");
-    }
+    mesh_pipeline::check_pass("mesh2d", "edge method", pass, options, stats);
     candidates.clear();
     for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) {
       if (!mesh.in_domain(t)) continue;
@@ -61,30 +57,23 @@ void insert_edge_points(Mesh2& mesh, const ControlSpace2& control, const Mesh2dO
     std::uint64_t inserted = 0;
     for (const Candidate& c : candidates) {
       if (mesh.is_dead_vertex(c.a) || mesh.is_dead_vertex(c.b)) continue;
-      const Vec2 pa = mesh.point(c.a), pb = mesh.point(c.b);
-      const Vec2 ab = pb - pa;
-      const double la = mesh.metric(c.a).length(ab), lb = mesh.metric(c.b).length(ab);
-      const double euclid = norm(ab);
-      const std::uint32_t n = static_cast<std::uint32_t>(std::max(1.0, std::round(c.length)));
-      cut_points(euclid / la, euclid / lb, n, cuts);
-      for (const double s : cuts) {
-        const Vec2 p = pa + s * ab;
+      cut_edge(mesh, c.a, c.b, c.length, cuts, [&](const Vec2& p) {
         // The walk may pass through the exterior (c.a's triangle may be there); p itself lies on
         // an internal edge, so in the domain.
         const Mesh2::Location loc = mesh.locate(p, mesh.vertex_triangle(c.a));
         if (loc.where == Mesh2::Where::Outside || loc.where == Mesh2::Where::Vertex ||
             !mesh.in_domain(loc.triangle)) {
           ++stats.not_inserted;
-          continue;
+          return;
         }
         const Metric2 mp = control.metric_at(p, hint);
         if (!kernel.find_cavity(p, mp, loc.triangle)) {
           ++stats.not_inserted;
-          continue;
+          return;
         }
         if (kernel.nearest_cavity_vertex(p, mp) < options.filter_distance) {
           ++stats.filtered;
-          continue;
+          return;
         }
         if (mesh.live_vertex_count() >= options.max_vertices) {
           throw InputError("mesh2d: the mesh reached the vertex bound of " + std::to_string(options.max_vertices) +
@@ -92,7 +81,7 @@ void insert_edge_points(Mesh2& mesh, const ControlSpace2& control, const Mesh2dO
         }
         kernel.commit(p, mp);
         ++inserted;
-      }
+      });
     }
     stats.field_points += inserted;
     stats.passes = pass + 1;

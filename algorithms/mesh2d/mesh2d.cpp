@@ -19,10 +19,7 @@ using mesh_pipeline::seconds_since;
 
 Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   const auto start = mesh_pipeline::Clock::now();
-  const FieldPointMethod2& method = (options.methods ? *options.methods : mesh2d_methods()).at(options.method);
-  if (!(options.filter_distance > 0.0 && options.filter_distance < 1.0)) {
-    throw InputError("mesh2d: filter_distance must lie in (0, 1)");
-  }
+  const FieldPointMethod2& method = mesh_pipeline::method_of("mesh2d", options, mesh2d_methods());
   Mesh2dResult result;
   result.stats.input_points = input.points.size();
   result.stats.segments = input.segments.size();
@@ -109,27 +106,14 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   result.stats.seconds_control_space = seconds_since(phase);
   poll_interrupt(options.interrupt, "mesh2d: after the control space");
 
-  // 3.+4. Field points and their insertion.
-  phase = mesh_pipeline::Clock::now();
-  method.run(result.mesh, control, bounded, result.stats);
-  result.stats.seconds_field_points = seconds_since(phase);
+  mesh_pipeline::field_points(result, method, control, bounded);  // 3.+4.
 
   // 5. Optimization.
-  phase = mesh_pipeline::Clock::now();
-  if (options.optimize) {
-    // Moved and new points take their metric from the control space (one walk hint for all).
-    std::uint32_t field_hint = 0;
-    const MetricField2 field = mesh_pipeline::metric_field<MetricField2>(control, field_hint);
-    Optimize2dOptions optimization = mesh_pipeline::with_interrupt(options.optimization, options.interrupt);
-    optimization.max_elements = element_estimate::kNoElementLimit;  // estimated above
+  mesh_pipeline::optimize_step<MetricField2>(result, options, control, [&](const MetricField2& field, const auto& optimization) {
     const Optimize2dStats o = optimize2d(result.mesh, optimization, field);
     result.stats.swaps = o.swaps + o.valence_swaps;
-    result.stats.relocations = o.relocations;
-    result.stats.collapses = o.collapses;
-    result.stats.splits = o.splits;
-    result.stats.optimization_rounds = o.rounds;
-  }
-  result.stats.seconds_optimization = seconds_since(phase);
+    return o;
+  });
 
   mesh_pipeline::finish(result, start);
   return result;

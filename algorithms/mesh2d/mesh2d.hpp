@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/common/mesh_pipeline.hpp"
+#include "algorithms/common/registry.hpp"
 #include "algorithms/constrained2d/constrained2d.hpp"
 #include "algorithms/mesh2d/control_space.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
@@ -34,77 +36,40 @@ namespace dtlab {
 // constrained2d takes it (mesh/problems/constrained2.hpp).
 using Mesh2dInput = ConstrainedInput2;
 
-template <class Entry>
-class Registry;  // algorithms/common/registry.hpp
-struct FieldPointMethod2;  // registry.hpp
+struct Mesh2dOptions;
+struct Mesh2dStats;
+// A field point method (registry.hpp).
+using FieldPointMethod2 = NamedEntry<void(Mesh2&, const ControlSpace2&, const Mesh2dOptions&, Mesh2dStats&)>;
 
-struct Mesh2dOptions {
-  // Field point placement, a name from mesh2d_methods() (registry.hpp): "edge" (the edge method,
-  // §5 / §7.5-§7.7) or "front" (advancing-front placement, §5.8 / §7.8); looked up in `methods`
-  // when given.
-  std::string method = "edge";
-  const Registry<FieldPointMethod2>* methods = nullptr;
-  // The size specification; null: the classical case (sizes from the boundary discretisation),
-  // unless `input_metrics` holds one metric per input point: then the control space is the
-  // empty mesh with these metrics (a crossing point of the empty mesh takes the interpolation
-  // of its segments' ends).
-  const ControlSpace2* control = nullptr;
+// The 2D mesher's types and defaults (algorithms/common/mesh_pipeline.hpp).
+struct Mesh2dTraits {
+  using Method = FieldPointMethod2;
+  using ControlSpace = ControlSpace2;
+  using Optimization = Optimize2dOptions;  // step 5 (algorithms/optimize2d)
+  static constexpr std::uint64_t kMaxVertices = 200'000'000;
+  static Optimization optimization() { return {}; }
+};
+
+// The meshers' options (mesh_pipeline.hpp; "front" is §5.8, the boundary cut resample_boundary.cpp,
+// the element bound at element_estimate::kBytesPerTriangle) and 2D's own.
+struct Mesh2dOptions : MesherOptions<Mesh2dTraits> {
+  // With no `control`: when `input_metrics` holds one metric per input point, the control space
+  // is the empty mesh with these metrics (a crossing point of the empty mesh takes the
+  // interpolation of its segments' ends).
   std::span<const Metric2> input_metrics;
   MetricInterpolation interpolation = MetricInterpolation::Sizes;
-  bool optimize = true;
-  Optimize2dOptions optimization;  // step 5 (algorithms/optimize2d)
-  // With a size or metric given, the input segments longer than sqrt 2 in the metric are cut
-  // anew in it (boundary_resample.cpp), so that the size holds on the boundary too and a domain
-  // with no interior edge is still refined; keep_boundary keeps them as given (the mesh's quality
-  // near a long segment is then that segment's: `messages` counts them). Not in the classical
-  // case, whose sizes come from the segments themselves.
-  bool keep_boundary = false;
-  // A field point closer than this (metric length, in the metric at the point) to a vertex that
-  // would become its neighbour is filtered out.
-  double filter_distance = 0.7;
-  // Edges longer than this in the metric get field points.
-  double split_length = 1.4142135623730951;
-  // Bounds, each with a named error when reached: passes of the field point loop, and vertices
-  // in all (a multiple of the input's points plus an absolute floor).
-  std::uint32_t max_passes = 200;
-  std::uint64_t max_vertices = 200'000'000;
-  // The triangles the size or metric may ask for, estimated before any is made from the metric's
-  // complexity (algorithms/common/element_estimate.hpp): past it, InputError with the estimate,
-  // and the vertex bound is lowered to it. 0: half this machine's memory at
-  // element_estimate::kBytesPerTriangle. Not checked in the classical case.
-  std::uint64_t max_elements = 0;
   // Numbering of points and segments in messages (the input file's: Medit 1, .poly its own).
   std::uint32_t first_number = 0;
-  // Asked between the phases and at each pass of the field point loop (kernel/interrupt.hpp);
-  // yes: Interrupted. The optimization asks its own check, or this one when it has none.
-  InterruptCheck interrupt{};
 };
 
-struct Mesh2dStats {
-  double seconds_empty_mesh = 0, seconds_control_space = 0, seconds_field_points = 0, seconds_optimization = 0;
-  double seconds = 0;  // the whole call
-  std::uint32_t passes = 0;
-  std::uint64_t field_points = 0;          // inserted
-  std::uint64_t filtered = 0;              // candidates rejected as too close
-  std::uint64_t not_inserted = 0;          // candidates outside the domain or on an edge that cannot open
-  std::uint64_t cavity_corrections = 0;    // triangles taken out of cavities (star-shapedness, §2.6.3)
-  std::uint64_t input_points = 0, segments = 0;
-  std::uint64_t boundary_points = 0;  // cut points added on the input segments
+struct Mesh2dStats : MesherStats {
+  std::uint64_t segments = 0;
   std::uint64_t long_boundary_segments = 0;  // kept longer than sqrt 2 in the metric (keep_boundary)
   double estimated_triangles = 0;            // the up-front estimate (0 in the classical case)
-  // Optimization counts (algorithms/optimize2d), filled when it ran.
-  std::uint64_t swaps = 0, relocations = 0, collapses = 0, splits = 0;
-  std::uint32_t optimization_rounds = 0;
+  std::uint64_t swaps = 0;                   // optimization (algorithms/optimize2d)
 };
 
-struct Mesh2dResult {
-  Mesh2 mesh;          // the whole structure, exterior included
-  MeshData2 output;    // the domain: vertices, boundary edges with their markers, triangles with regions
-  std::vector<std::uint32_t> output_vertex_ids;  // the slot in `mesh` of each output vertex
-  std::vector<Metric2> output_metrics;           // the metric at each output vertex
-  Mesh2dStats stats;
-  std::vector<std::string> messages;  // from the empty mesh (duplicates, crossings ...)
-};
+using Mesh2dResult = MesherResult<Mesh2, MeshData2, Metric2, Mesh2dStats>;
 
 // Throws InputError (items 0-based) for bad input: as constrained2d, plus a domain with no
 // triangle, an open boundary (a segment endpoint of degree 1 with the domain on both sides), an

@@ -9,18 +9,10 @@
 // naming the bound (options.max_passes, options.max_vertices) it reaches.
 #pragma once
 
-#include <string_view>
-
 #include "algorithms/common/registry.hpp"
 #include "algorithms/mesh2d/mesh2d.hpp"
 
 namespace dtlab {
-
-struct FieldPointMethod2 {
-  std::string_view name;
-  std::string_view description;
-  void (*run)(Mesh2& mesh, const ControlSpace2& control, const Mesh2dOptions& options, Mesh2dStats& stats);
-};
 
 // Every registered method: the table of registry.cpp (algorithms/common/registry.hpp).
 const Registry<FieldPointMethod2>& mesh2d_methods();

@@ -9,7 +9,6 @@
 // Passes repeat over the new tetrahedra until no candidate is accepted (saturation), bounded.
 // Within a pass the edges are taken in Hilbert order of their midpoints (algorithms/spatial_sort).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -53,10 +52,6 @@ void set_hilbert_cells(const Mesh3& mesh, std::vector<Candidate>& candidates) {
   }
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dOptions& options, Mesh3dStats& stats) {
@@ -77,11 +72,7 @@ void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dO
   std::vector<FieldPoint> points;
   FieldPointInserter inserter(mesh, control, grid, options);
   for (std::uint32_t pass = 0;; ++pass) {
-    poll_interrupt(options.interrupt, "mesh3d: during the field points (edge method)");
-    if (pass == options.max_passes) {
-      throw InputError("mesh3d: the edge method did not saturate within " + std::to_string(options.max_passes) +
-                       " passes (" + std::to_string(stats.field_points) + " field points so far)");
-    }
+    mesh_pipeline::check_pass("mesh3d", "edge method", pass, options, stats);
     // Pass k > 0 looks only at the tetrahedra made in pass k - 1: an older edge was looked at
     // before, and each of its candidates was filtered (the filter only grows stricter as vertices
     // are added; the candidates depend on the edge's ends alone) or could not be inserted.
@@ -114,18 +105,11 @@ void insert_edge_points(Mesh3& mesh, const ControlSpace3& control, const Mesh3dO
       return x.b < y.b;
     });
     points.clear();
-    for (const Candidate& c : candidates) {
-      const Vec3 pa = mesh.point(c.a), pb = mesh.point(c.b);
-      const Vec3 ab = pb - pa;
-      const double la = mesh.metric(c.a).length(ab), lb = mesh.metric(c.b).length(ab);
-      const double euclid = norm(ab);
-      const std::uint32_t n = static_cast<std::uint32_t>(std::max(1.0, std::round(c.length)));
-      cut_points(euclid / la, euclid / lb, n, cuts);
-      for (const double s : cuts) points.push_back({pa + s * ab, c.a});
-    }
-    const auto insertion = std::chrono::steady_clock::now();
+    for (const Candidate& c : candidates)
+      cut_edge(mesh, c.a, c.b, c.length, cuts, [&](const Vec3& p) { points.push_back({p, c.a}); });
+    const auto insertion = mesh_pipeline::Clock::now();
     const std::uint64_t inserted = inserter.insert(points, stats, born, pass + 1);
-    stats.seconds_insertion += seconds_since(insertion);
+    stats.seconds_insertion += mesh_pipeline::seconds_since(insertion);
     stats.field_points += inserted;
     stats.passes = pass + 1;
     if (inserted == 0) break;

@@ -283,7 +283,7 @@ bool remesh_region(Mesh3& mesh, const Region& r, const MetricField3& field, cons
   if (!(new_measure.smallest_cos < old_measure.smallest_cos - kMargin &&
         new_measure.worst <= std::max(old_measure.worst, options.quality_limit) &&
         new_measure.largest_cos >= std::min(old_measure.largest_cos, std::cos(options.max_dihedral_deg * kRadians)) &&
-        new_measure.longest <= std::max(old_measure.longest, kLongEdgeLength3)))
+        new_measure.longest <= std::max(old_measure.longest, kLongEdgeLength)))
     return false;
   // In its place: the new vertices, the new tetrahedra, the old inside vertices removed.
   for (std::uint32_t k = 0; k < out.vertices.size(); ++k) {

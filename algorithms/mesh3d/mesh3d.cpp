@@ -43,10 +43,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   if (options.method == "front") {
     throw InputError("mesh3d: the advancing-front method (book §7.8) is not implemented in 3D yet (use edge)");
   }
-  const FieldPointMethod3& method = (options.methods ? *options.methods : mesh3d_methods()).at(options.method);
-  if (!(options.filter_distance > 0.0 && options.filter_distance < 1.0)) {
-    throw InputError("mesh3d: filter_distance must lie in (0, 1)");
-  }
+  const FieldPointMethod3& method = mesh_pipeline::method_of("mesh3d", options, mesh3d_methods());
   Mesh3dResult result;
   result.stats.input_points = input.points.size();
   result.stats.input_triangles = input.triangles.size();
@@ -90,7 +87,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
       // The empty mesh's flat tetrahedra in the domain (between boundary facets coplanar up to
       // rounding: a rotated box's faces) swapped away first: split, each would become many, all
       // of them boundary-bound where the optimization cannot reach them.
-      swap_pass3(result.mesh, kImprovementMargin3, {}, kFlatQuality);
+      swap_pass3(result.mesh, kImprovementMargin, {}, kFlatQuality);
       std::uint32_t field_hint = 0;
       const MetricField3 field = mesh_pipeline::metric_field<MetricField3>(control, field_hint);
       Split3Options split;
@@ -99,7 +96,7 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
       split.quality_limit = HUGE_VAL;
       split.max_vertices = bounded.max_vertices;
       result.stats.boundary_points = boundary_split_pass3(result.mesh, field, split);
-      swap_pass3(result.mesh, kImprovementMargin3, {}, kFlatQuality);  // and those the cut made
+      swap_pass3(result.mesh, kImprovementMargin, {}, kFlatQuality);  // and those the cut made
       if (result.mesh.live_vertex_count() >= bounded.max_vertices) {
         throw InputError("mesh3d: the surface cut in the size reached the vertex bound of " +
                          std::to_string(bounded.max_vertices) + " (max_vertices, max_elements)");
@@ -117,26 +114,15 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
   result.stats.seconds_control_space = seconds_since(phase);
   poll_interrupt(options.interrupt, "mesh3d: after the control space");
 
-  // 3.+4. Field points and their insertion.
-  phase = mesh_pipeline::Clock::now();
-  method.run(result.mesh, control, bounded, result.stats);
-  result.stats.seconds_field_points = seconds_since(phase);
+  mesh_pipeline::field_points(result, method, control, bounded);  // 3.+4.
 
   // 5. Optimization, on the mesh renumbered for locality (spatial_renumber.hpp).
-  phase = mesh_pipeline::Clock::now();
-  if (options.optimize) {
+  mesh_pipeline::optimize_step<MetricField3>(result, options, control, [&](const MetricField3& field,
+                                                                          const Optimize3dOptions& optimization) {
     renumber_spatially(result.mesh);
-    std::uint32_t field_hint = 0;
-    const MetricField3 field = mesh_pipeline::metric_field<MetricField3>(control, field_hint);
-    Optimize3dOptions optimization = mesh_pipeline::with_interrupt(options.optimization, options.interrupt);
-    optimization.max_elements = kNoElementLimit;  // estimated above
     const Optimize3dStats o = optimize3d(result.mesh, optimization, field);
     result.stats.face_swaps = o.face_swaps;
     result.stats.shell_transformations = o.shell_transformations;
-    result.stats.relocations = o.relocations;
-    result.stats.collapses = o.collapses;
-    result.stats.splits = o.splits;
-    result.stats.optimization_rounds = o.rounds;
     result.stats.optimization_stopped_by = o.stopped_by;
     // What the optimization leaves below the goal's smallest dihedral angle, meshed again
     // (local_remesh.hpp, whose regions are meshed with local_remesh off: no deeper nesting).
@@ -149,8 +135,8 @@ Mesh3dResult mesh3d(const Mesh3dInput& input, const Mesh3dOptions& options) {
       result.stats.remeshed_regions = r.remeshed;
       result.stats.remesh_work_bound_reached = r.work_bound_reached;
     }
-  }
-  result.stats.seconds_optimization = seconds_since(phase);
+    return o;
+  });
 
   // The domain (exterior dropped), regions and boundary triangles with their references.
   mesh_pipeline::finish(result, start);

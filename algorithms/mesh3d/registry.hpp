@@ -5,18 +5,10 @@
 // through a constrained facet; the mesh is the same for every options.threads.
 #pragma once
 
-#include <string_view>
-
 #include "algorithms/common/registry.hpp"
 #include "algorithms/mesh3d/mesh3d.hpp"
 
 namespace dtlab {
-
-struct FieldPointMethod3 {
-  std::string_view name;
-  std::string_view description;
-  void (*run)(Mesh3& mesh, const ControlSpace3& control, const Mesh3dOptions& options, Mesh3dStats& stats);
-};
 
 // Every registered method: the table of registry.cpp (algorithms/common/registry.hpp).
 const Registry<FieldPointMethod3>& mesh3d_methods();

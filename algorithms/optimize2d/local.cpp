@@ -4,9 +4,10 @@
 // decide on coordinates, this routine only rewires).
 #include "algorithms/optimize2d/local.hpp"
 
-#include <algorithm>
+#include <array>
 #include <string>
 
+#include "algorithms/common/replace_elements.hpp"
 #include "kernel/error.hpp"
 #include "kernel/quality.hpp"
 
@@ -44,77 +45,43 @@ bool is_free(const Mesh2& mesh, std::uint32_t v, std::vector<std::uint32_t>& rin
   return true;
 }
 
+namespace {
+
+// The 2D side of replace_elements (algorithms/common/replace_elements.hpp): half-edges, keyed
+// (origin, destination); a new one's copy runs the other way.
+struct TriangleSide {
+  static constexpr std::uint32_t kFacets = 3;
+  static constexpr const char* kWho = "optimize2d";
+  static constexpr const char* kElement = "triangle";
+  using Key = std::array<std::uint32_t, 2>;
+  static std::uint32_t facet(std::uint32_t t, std::uint32_t i) noexcept { return Mesh2::half_edge(t, i); }
+  static std::uint32_t element_of(std::uint32_t h) noexcept { return Mesh2::triangle_of(h); }
+  static Key key(const Mesh2& mesh, std::uint32_t h) noexcept { return {mesh.origin(h), mesh.destination(h)}; }
+  static Key mate(const Key& k) noexcept { return {k[1], k[0]}; }
+  static int ref(const Mesh2& mesh, std::uint32_t h) noexcept { return mesh.edge_ref(h); }
+  static void set_outer(Mesh2& mesh, std::uint32_t h, bool c, int r) { mesh.set_constraint(h, c, r); }
+  static void remove(Mesh2& mesh, std::uint32_t t) { mesh.remove_triangle(t); }
+  static std::uint32_t add(Mesh2& mesh, const NewTriangle& n) { return mesh.add_triangle(n.a, n.b, n.c, n.ref); }
+  static std::string describe(const Key& k) { return "edge " + std::to_string(k[0]) + " -> " + std::to_string(k[1]); }
+};
+
+}  // namespace
+
 void replace_triangles(Mesh2& mesh, std::span<const std::uint32_t> old_triangles,
                        std::span<const NewTriangle> new_triangles, std::span<const MeshEdge2> constrained,
                        std::vector<std::uint32_t>& slots) {
-  // The outer boundary: half-edges of old triangles whose twin lies in no old triangle.
-  struct Outer {
-    std::uint32_t from, to, twin;
-    bool constrained;
-    int ref;
-    bool used;
-  };
-  std::vector<Outer> outer;
-  auto is_old = [&](std::uint32_t t) {
-    return std::find(old_triangles.begin(), old_triangles.end(), t) != old_triangles.end();
-  };
-  for (const std::uint32_t t : old_triangles) {
-    DTLAB_ASSERT(mesh.is_alive(t));
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t h = Mesh2::half_edge(t, i);
-      const std::uint32_t g = mesh.twin(h);
-      if (is_old(Mesh2::triangle_of(g))) continue;
-      outer.push_back({mesh.origin(h), mesh.destination(h), g, mesh.is_constrained(h), mesh.edge_ref(h), false});
-    }
-  }
-  for (const std::uint32_t t : old_triangles) mesh.remove_triangle(t);
-  slots.clear();
-  for (const NewTriangle& n : new_triangles) slots.push_back(mesh.add_triangle(n.a, n.b, n.c, n.ref));
-  // Link each new half-edge: to the outside through the outer edge it repeats, else to its
-  // reversed copy in another new triangle. The sets are a handful of triangles: quadratic is fine.
-  for (std::size_t k = 0; k < slots.size(); ++k) {
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t h = Mesh2::half_edge(slots[k], i);
-      if (mesh.twin(h) != Mesh2::kNone) continue;
-      const std::uint32_t from = mesh.origin(h), to = mesh.destination(h);
-      bool linked = false;
-      for (Outer& o : outer) {
-        if (o.used || o.from != from || o.to != to) continue;
-        mesh.link(h, o.twin);
-        mesh.set_constraint(h, o.constrained, o.ref);
-        o.used = true;
-        linked = true;
-        break;
-      }
-      for (std::size_t m = k + 1; !linked && m < slots.size(); ++m) {
-        for (std::uint32_t j = 0; j < 3 && !linked; ++j) {
-          const std::uint32_t g = Mesh2::half_edge(slots[m], j);
-          if (mesh.twin(g) != Mesh2::kNone || mesh.origin(g) != to || mesh.destination(g) != from) continue;
-          mesh.link(h, g);
-          bool is_constrained = false;
-          int ref = 0;
-          for (const MeshEdge2& e : constrained) {
-            if ((e.a == from && e.b == to) || (e.a == to && e.b == from)) {
-              is_constrained = true;
-              ref = e.ref;
-            }
-          }
-          mesh.set_constraint_both(h, is_constrained, ref);
-          linked = true;
-        }
-      }
-      if (!linked) {
-        throw InternalError("optimize2d: new edge " + std::to_string(from) + " -> " + std::to_string(to) +
-                            " matches neither the outer boundary nor another new triangle");
+  // An edge between two new triangles is constrained when `constrained` lists it.
+  replace_elements<TriangleSide>(mesh, old_triangles, new_triangles, slots, [&](std::uint32_t h, const auto& key) {
+    bool is_constrained = false;
+    int ref = 0;
+    for (const MeshEdge2& e : constrained) {
+      if ((e.a == key[0] && e.b == key[1]) || (e.a == key[1] && e.b == key[0])) {
+        is_constrained = true;
+        ref = e.ref;
       }
     }
-  }
-  for (const Outer& o : outer) {
-    if (!o.used) {
-      throw InternalError("optimize2d: outer edge " + std::to_string(o.from) + " -> " + std::to_string(o.to) +
-                          " is left without a triangle");
-    }
-  }
+    mesh.set_constraint_both(h, is_constrained, ref);
+  });
 }
 
 }  // namespace dtlab::optimize2d_detail

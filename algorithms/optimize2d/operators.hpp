@@ -18,24 +18,15 @@
 #include <span>
 #include <vector>
 
+#include "algorithms/common/unit_mesh.hpp"
 #include "kernel/metric.hpp"
 #include "kernel/vec.hpp"
 #include "mesh/mesh2.hpp"
 
 namespace dtlab {
 
-// The control space: the metric wanted at any point of the domain (the generator's
-// ControlSpace2, a constant size, ...). An empty function means "interpolate from the
-// neighbouring vertices" (split) or "keep the vertex's metric" (relocation).
-using MetricField2 = std::function<Metric2(const Vec2&)>;
+using MetricField2 = MetricField<Metric2, Vec2>;  // algorithms/common/unit_mesh.hpp
 
-// The unit mesh of the book (§5.3, §9): edges of metric length in [1/sqrt2, sqrt2]. An edge
-// shorter is collapsed, one longer split; a collapse may not create an edge longer than the
-// upper bound, so that the two never undo each other.
-inline constexpr double kShortEdgeLength = 0.70710678118654752440;  // 1/sqrt2
-inline constexpr double kLongEdgeLength = 1.41421356237309504880;   // sqrt2
-// A strict improvement is one below (1 - margin) times the old value: no cycling on rounding.
-inline constexpr double kImprovementMargin = 1e-6;
 // A collapse may leave the ball's worst Q_K at the old worst or at this, whichever is larger
 // (Q <= 2: the book's first quality class, §8.2.2 and Tables 7.1-7.3).
 inline constexpr double kCollapseQualityLimit = 2.0;

@@ -7,18 +7,13 @@ namespace dtlab {
 namespace {
 
 OperatorResult collapse(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2&, Optimize2dStats& stats) {
-  if (!options.collapses) return {};
-  const std::uint64_t c = collapse_pass(mesh, options.collapse);
-  stats.collapses += c;
-  return {c};
+  return size_operator(options.collapses, stats.collapses, [&] { return collapse_pass(mesh, options.collapse); });
 }
 
 OperatorResult boundary_collapse(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2&,
                                  Optimize2dStats& stats) {
-  if (!options.boundary_collapses) return {};
-  const std::uint64_t c = boundary_collapse_pass(mesh, options.collapse);
-  stats.boundary_collapses += c;
-  return {c};
+  return size_operator(options.boundary_collapses, stats.boundary_collapses,
+                       [&] { return boundary_collapse_pass(mesh, options.collapse); });
 }
 
 OperatorResult split(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field, Optimize2dStats& stats) {
@@ -41,13 +36,7 @@ OperatorResult swap(Mesh2& mesh, const Optimize2dOptions& options, const MetricF
 
 OperatorResult relocate(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field,
                         Optimize2dStats& stats) {
-  if (!options.relocation) return {};
-  for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
-    const std::uint64_t moved = relocate_sweep(mesh, field, options.relocate);
-    stats.relocations += moved;
-    if (moved == 0) break;
-  }
-  return {};
+  return relocation_sweeps(options, stats, [&] { return relocate_sweep(mesh, field, options.relocate); });
 }
 
 OperatorResult valence(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field,
@@ -66,13 +55,11 @@ const Registry<Optimize2dOperator>& optimize2d_operators() {
                           "the triangles with Q_K > bad_quality, worst first: swap, relocation, swap with "
                           "relocation or collapse of the shortest edge, the first that helps (§8.6.3; strategy.cpp)",
                           &optimize2d_detail::treat_bad_triangles},
-       Optimize2dOperator{"collapse", "collapses of the edges shorter than 1/sqrt2 in the metric, shortest first "
-                                      "(§8.3.5; collapse.cpp)", &collapse},
+       Optimize2dOperator{"collapse", kCollapseDescription, &collapse},
        Optimize2dOperator{"boundary_collapse",
                           "with boundary_collapses: collapses of short boundary edges along the boundary (§9.3.1; "
                           "boundary_collapse.cpp)", &boundary_collapse},
-       Optimize2dOperator{"split", "splits of the edges longer than sqrt2, longest first, each followed by swaps "
-                                   "(§8.3.6; split.cpp)", &split},
+       Optimize2dOperator{"split", kSplitDescription, &split},
        Optimize2dOperator{"swap", "edge swaps until no pair's worst Q_K improves (§8.3.1; swap.cpp)", &swap},
        Optimize2dOperator{"relocate", "relocation_sweeps sweeps moving the free vertices toward the optimal point "
                                       "of their ball (§8.4.1; relocate.cpp)", &relocate},

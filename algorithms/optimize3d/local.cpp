@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include "algorithms/common/replace_elements.hpp"
 #include "kernel/error.hpp"
 #include "kernel/metric.hpp"
 #include "kernel/predicates.hpp"
@@ -140,76 +141,41 @@ double worst_quality(const Mesh3& mesh, std::span<const NewTetrahedron> tetrahed
 
 namespace {
 
-std::array<std::uint32_t, 3> sorted(std::array<std::uint32_t, 3> v) noexcept {
-  std::sort(v.begin(), v.end());
-  return v;
-}
+// The 3D side of replace_elements (algorithms/common/replace_elements.hpp): facets, keyed by
+// their sorted vertices, the same for both copies.
+struct TetrahedronSide {
+  static constexpr std::uint32_t kFacets = 4;
+  static constexpr const char* kWho = "optimize3d";
+  static constexpr const char* kElement = "tetrahedron";
+  using Key = std::array<std::uint32_t, 3>;
+  static std::uint32_t facet(std::uint32_t t, std::uint32_t i) noexcept { return Mesh3::facet(t, i); }
+  static std::uint32_t element_of(std::uint32_t h) noexcept { return Mesh3::tetrahedron_of(h); }
+  static Key key(const Mesh3& mesh, std::uint32_t h) noexcept {
+    Key v = mesh.facet_vertices(h);
+    std::sort(v.begin(), v.end());
+    return v;
+  }
+  static const Key& mate(const Key& k) noexcept { return k; }
+  static int ref(const Mesh3& mesh, std::uint32_t h) noexcept { return mesh.facet_ref(h); }
+  static void set_outer(Mesh3& mesh, std::uint32_t h, bool c, int r) { mesh.set_facet(h, c, r); }
+  static void remove(Mesh3& mesh, std::uint32_t t) { mesh.remove_tetrahedron(t); }
+  static std::uint32_t add(Mesh3& mesh, const NewTetrahedron& n) {
+    return mesh.add_tetrahedron(n.v[0], n.v[1], n.v[2], n.v[3], n.ref);
+  }
+  static std::string describe(const Key& k) {
+    return "facet (" + std::to_string(k[0]) + ", " + std::to_string(k[1]) + ", " + std::to_string(k[2]) + ")";
+  }
+};
 
 }  // namespace
 
+// vertex_tetrahedron of the boundary's vertices: add_tetrahedron sets it for every vertex of a
+// new tetrahedron, and every outer facet's vertices are in one. Facets between two new
+// tetrahedra are unconstrained.
 void replace_tetrahedra(Mesh3& mesh, std::span<const std::uint32_t> old_tetrahedra,
                         std::span<const NewTetrahedron> new_tetrahedra, std::vector<std::uint32_t>& slots) {
-  struct Outer {
-    std::array<std::uint32_t, 3> key;
-    std::uint32_t twin;
-    bool constrained;
-    int ref;
-    bool used;
-  };
-  std::vector<Outer> outer;
-  auto is_old = [&](std::uint32_t t) {
-    return std::find(old_tetrahedra.begin(), old_tetrahedra.end(), t) != old_tetrahedra.end();
-  };
-  for (const std::uint32_t t : old_tetrahedra) {
-    DTLAB_ASSERT(mesh.is_alive(t));
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      const std::uint32_t h = Mesh3::facet(t, i);
-      const std::uint32_t g = mesh.twin(h);
-      if (is_old(Mesh3::tetrahedron_of(g))) continue;
-      outer.push_back({sorted(mesh.facet_vertices(h)), g, mesh.is_constrained(h), mesh.facet_ref(h), false});
-    }
-  }
-  for (const std::uint32_t t : old_tetrahedra) mesh.remove_tetrahedron(t);
-  slots.clear();
-  for (const NewTetrahedron& n : new_tetrahedra) slots.push_back(mesh.add_tetrahedron(n.v[0], n.v[1], n.v[2], n.v[3], n.ref));
-  // The sets are a few dozen tetrahedra: quadratic matching is fine.
-  for (std::size_t k = 0; k < slots.size(); ++k) {
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      const std::uint32_t h = Mesh3::facet(slots[k], i);
-      if (mesh.twin(h) != Mesh3::kNone) continue;
-      const auto key = sorted(mesh.facet_vertices(h));
-      bool linked = false;
-      for (Outer& o : outer) {
-        if (o.used || o.key != key) continue;
-        mesh.link(h, o.twin);
-        mesh.set_facet(h, o.constrained, o.ref);
-        o.used = true;
-        linked = true;
-        break;
-      }
-      for (std::size_t m = k + 1; !linked && m < slots.size(); ++m) {
-        for (std::uint32_t j = 0; j < 4 && !linked; ++j) {
-          const std::uint32_t g = Mesh3::facet(slots[m], j);
-          if (mesh.twin(g) != Mesh3::kNone || sorted(mesh.facet_vertices(g)) != key) continue;
-          mesh.link(h, g);
-          mesh.set_facet_both(h, false);
-          linked = true;
-        }
-      }
-      if (!linked) {
-        throw InternalError("optimize3d: new facet (" + std::to_string(key[0]) + ", " + std::to_string(key[1]) + ", " +
-                            std::to_string(key[2]) + ") matches neither the outer boundary nor another new tetrahedron");
-      }
-    }
-  }
-  for (const Outer& o : outer) {
-    if (!o.used) {
-      throw InternalError("optimize3d: outer facet (" + std::to_string(o.key[0]) + ", " + std::to_string(o.key[1]) + ", " +
-                          std::to_string(o.key[2]) + ") is left without a tetrahedron");
-    }
-  }
-  // vertex_tetrahedron of the boundary's vertices: add_tetrahedron set it for every vertex of a
-  // new tetrahedron, and every outer facet's vertices are in one.
+  replace_elements<TetrahedronSide>(mesh, old_tetrahedra, new_tetrahedra, slots,
+                                    [&](std::uint32_t h, const auto&) { mesh.set_facet_both(h, false); });
 }
 
 }  // namespace dtlab::optimize3d_detail

@@ -14,25 +14,18 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <span>
 #include <vector>
 
+#include "algorithms/common/unit_mesh.hpp"
 #include "kernel/metric.hpp"
 #include "kernel/vec.hpp"
 #include "mesh/mesh3.hpp"
 
 namespace dtlab {
 
-// The control space: the metric wanted at any point of the domain. Empty: "interpolate from
-// the neighbouring vertices" (split) or "keep the vertex's metric" (relocation).
-using MetricField3 = std::function<Metric3(const Vec3&)>;
+using MetricField3 = MetricField<Metric3, Vec3>;  // algorithms/common/unit_mesh.hpp
 
-// The unit mesh (book §7, §9): edges of metric length in [1/sqrt2, sqrt2].
-inline constexpr double kShortEdgeLength3 = 0.70710678118654752440;  // 1/sqrt2
-inline constexpr double kLongEdgeLength3 = 1.41421356237309504880;   // sqrt2
-// A strict improvement is one below (1 - margin) times the old value: no cycling on rounding.
-inline constexpr double kImprovementMargin3 = 1e-6;
 // Size operators may leave the worst Q_K of what they touch at the old worst or at this,
 // whichever is larger (collapse: Q <= 3; split: Q <= 4 — tetrahedra are worse than triangles
 // for the same sizes: the book's Tables 7.1-7.3 and 8.2-8.3 put most of them in [1, 3]).
@@ -48,7 +41,7 @@ inline constexpr std::uint32_t kMaxShellSize = 12;
 // False (nothing changed) when h is locked (constrained, between regions, beside a ghost or an
 // exterior tetrahedron), when de already is an edge, or when the swap is invalid or no better.
 // `created` (optional) receives the new tetrahedra's slots.
-bool try_face_swap(Mesh3& mesh, std::uint32_t h, double margin = kImprovementMargin3,
+bool try_face_swap(Mesh3& mesh, std::uint32_t h, double margin = kImprovementMargin,
                    std::vector<std::uint32_t>* created = nullptr);
 
 // --- Shell transformation n -> 2n - 4 (book §8.3.3, Table 8.1) ---------------------------------
@@ -60,7 +53,7 @@ bool try_face_swap(Mesh3& mesh, std::uint32_t h, double margin = kImprovementMar
 // facet constrained, the shell leaving the domain or crossing regions) or no triangulation is
 // valid and better.
 // `hint`: a live tetrahedron with edge ab, or kNone.
-bool try_shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin = kImprovementMargin3,
+bool try_shell_transformation(Mesh3& mesh, std::uint32_t a, std::uint32_t b, double margin = kImprovementMargin,
                               std::vector<std::uint32_t>* created = nullptr, std::uint32_t hint = Mesh3::kNone);
 
 struct SwapPass3Result {
@@ -71,12 +64,12 @@ struct SwapPass3Result {
 // Face swaps and shell transformations until none improves: the tetrahedra of `seeds` (empty:
 // every domain tetrahedron whose Q_K exceeds `threshold`), worst first, each new tetrahedron
 // queued again when its Q_K exceeds `threshold`. At most 20 changes per live tetrahedron + 1000.
-SwapPass3Result swap_pass3(Mesh3& mesh, double margin = kImprovementMargin3, std::span<const std::uint32_t> seeds = {},
+SwapPass3Result swap_pass3(Mesh3& mesh, double margin = kImprovementMargin, std::span<const std::uint32_t> seeds = {},
                            double threshold = 0.0);
 
 // --- Relocation (book §8.4, (8.13)-(8.17)) ------------------------------------------------------
 struct Relocate3Options {
-  double margin = kImprovementMargin3;  // the ball's worst Q_K must improve by this, relative
+  double margin = kImprovementMargin;  // the ball's worst Q_K must improve by this, relative
   std::uint32_t tries = 6;              // relaxation w = 1, 1/2, ..., 2^-(tries-1)
 };
 // The optimal point P* of v's ball (book (8.17), optimal shape relocation): the mean, weighted by
@@ -109,10 +102,10 @@ bool try_relocate_dihedral3(Mesh3& mesh, std::uint32_t v, const MetricField3& fi
 
 // --- Collapse (book §8.3.5) ---------------------------------------------------------------------
 struct Collapse3Options {
-  double short_length = kShortEdgeLength3;  // collapse_pass3: edges shorter than this, in the metric
-  double long_length = kLongEdgeLength3;    // no new edge may be longer than this
+  double short_length = kShortEdgeLength;  // collapse_pass3: edges shorter than this, in the metric
+  double long_length = kLongEdgeLength;    // no new edge may be longer than this
   double quality_limit = kCollapseQualityLimit3;
-  double margin = kImprovementMargin3;
+  double margin = kImprovementMargin;
 };
 enum class Collapse3Criterion : std::uint8_t {
   NotWorse,  // the new worst Q_K of the ball is at most max(old worst, quality_limit): a size operation
@@ -130,10 +123,10 @@ std::uint64_t collapse_pass3(Mesh3& mesh, const Collapse3Options& options = {});
 
 // --- Split (book §8.3.6) ------------------------------------------------------------------------
 struct Split3Options {
-  double long_length = kLongEdgeLength3;    // split_pass3: edges longer than this, in the metric
-  double short_length = kShortEdgeLength3;  // no edge from the new vertex to the ring shorter than this
+  double long_length = kLongEdgeLength;    // split_pass3: edges longer than this, in the metric
+  double short_length = kShortEdgeLength;  // no edge from the new vertex to the ring shorter than this
   double quality_limit = kSplitQualityLimit3;
-  double margin = kImprovementMargin3;         // the swaps after each split
+  double margin = kImprovementMargin;         // the swaps after each split
   std::uint64_t max_vertices = 20'000'000;  // split_pass3 stops short of this many live vertices
 };
 // The point of edge ab where both halves have the same metric length (as optimize2d's).

@@ -62,7 +62,7 @@ struct Optimize3dOptions : OptimizeRoundOptions<Optimize3dRoundDefaults> {
   // Bad tetrahedra on four boundary vertices that no other operator cures get an interior
   // vertex (an edge split and the new vertex relocated, judged as one move; strategy.cpp).
   bool interior_vertices = true;
-  double margin = kImprovementMargin3;
+  double margin = kImprovementMargin;
   // Skip the shell transformations and relocations known to fail again (their piece of mesh
   // unchanged since they failed: Mesh3's change epochs). The same result either way, bit for
   // bit; off only to check that.

@@ -10,10 +10,8 @@ namespace {
 
 OperatorResult collapse(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3&, Optimize3dStats& stats,
                         const OperatorScope3& scope) {
-  if (!options.collapses) return {};
-  const std::uint64_t c = optimize3d_detail::collapse_pass(mesh, options.collapse, scope.region);
-  stats.collapses += c;
-  return {c};
+  return size_operator(options.collapses, stats.collapses,
+                       [&] { return optimize3d_detail::collapse_pass(mesh, options.collapse, scope.region); });
 }
 
 OperatorResult split(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field, Optimize3dStats& stats,
@@ -44,14 +42,9 @@ OperatorResult swap(Mesh3& mesh, const Optimize3dOptions& options, const MetricF
 
 OperatorResult relocate(Mesh3& mesh, const Optimize3dOptions& options, const MetricField3& field,
                         Optimize3dStats& stats, const OperatorScope3& scope) {
-  if (!options.relocation) return {};
-  for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k) {
-    const std::uint64_t moved =
-        optimize3d_detail::relocate_sweep(mesh, field, options.relocate, scope.memo, scope.region);
-    stats.relocations += moved;
-    if (moved == 0) break;
-  }
-  return {};
+  return relocation_sweeps(options, stats, [&] {
+    return optimize3d_detail::relocate_sweep(mesh, field, options.relocate, scope.memo, scope.region);
+  });
 }
 
 }  // namespace
@@ -63,10 +56,8 @@ const Registry<Optimize3dOperator>& optimize3d_operators() {
                           "the tetrahedra with Q_K > bad_quality, worst first: face swap or shell transformation, "
                           "relocation, collapse of the shortest edge, an interior vertex (§8.6; strategy.cpp)",
                           &optimize3d_detail::treat_bad_tetrahedra},
-       Optimize3dOperator{"collapse", "collapses of the edges shorter than 1/sqrt2 in the metric, shortest first "
-                                      "(§8.3.5; collapse.cpp)", &collapse},
-       Optimize3dOperator{"split", "splits of the edges longer than sqrt2, longest first, each followed by swaps "
-                                   "(§8.3.6; split.cpp)", &split},
+       Optimize3dOperator{"collapse", kCollapseDescription, &collapse},
+       Optimize3dOperator{"split", kSplitDescription, &split},
        Optimize3dOperator{"swap", "face swaps 2 -> 3 and shell transformations n -> 2n - 4 from the tetrahedra "
                                   "worse than swap_threshold (§8.3.2-§8.3.3; swap_pass.cpp)", &swap},
        Optimize3dOperator{"relocate", "relocation_sweeps sweeps moving the free vertices toward the optimal point "

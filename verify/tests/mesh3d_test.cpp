@@ -151,7 +151,7 @@ TEST(Mesh3d, TwoRegionsKeepTheirInternalFace) {
   Surface s;
   add_box(s, {0, 0, 0}, 1.0, 3, 1);
   add_box(s, {1, 0, 0}, 1.0, 3, 11, /*skip_face=*/0);  // shares the face x = 1 of the first box
-  const Mesh3dResult r = mesh3d(s.input(), {.optimize = false});
+  const Mesh3dResult r = mesh3d(s.input(), {{.optimize = false}});
   const MeshCheckReport3 c = expect_valid(s.input(), r);
   EXPECT_EQ(c.regions, 2u);
   EXPECT_NEAR(c.volume, 2.0, 1e-12);
@@ -309,8 +309,8 @@ TEST(Mesh3d, VertexBoundIsANamedError) {
 
 TEST(Mesh3d, UnknownAndUnimplementedMethodsAreRefused) {
   const Surface s = cube(2);
-  EXPECT_THROW((void)mesh3d(s.input(), {.method = "front"}), InputError);
-  EXPECT_THROW((void)mesh3d(s.input(), {.method = "octree"}), InputError);
+  EXPECT_THROW((void)mesh3d(s.input(), {{.method = "front"}}), InputError);
+  EXPECT_THROW((void)mesh3d(s.input(), {{.method = "octree"}}), InputError);
 }
 
 TEST(ControlSpace3, InterpolatesOnTheBackgroundAndRefusesBadMetrics) {

@@ -123,7 +123,7 @@ TEST(Optimize3d, FaceSwapTwoToThree) {
   ASSERT_NE(h, Mesh3::kNone);
   const double before = std::max(tetrahedron_quality(m, 0), tetrahedron_quality(m, 1));
   std::vector<std::uint32_t> created;
-  ASSERT_TRUE(try_face_swap(m, h, kImprovementMargin3, &created));
+  ASSERT_TRUE(try_face_swap(m, h, kImprovementMargin, &created));
   m.check();
   EXPECT_EQ(domain_count(m), 3u);
   EXPECT_EQ(boundary_of(m), b);
@@ -185,7 +185,7 @@ TEST(Optimize3d, EdgeRemovalThreeToTwo) {
   Mesh3 m = mesh3_from_data(shell_mesh(3, 1.5, 0.0, 1));
   const Boundary b = boundary_of(m);
   std::vector<std::uint32_t> created;
-  ASSERT_TRUE(try_shell_transformation(m, 0, 1, kImprovementMargin3, &created));
+  ASSERT_TRUE(try_shell_transformation(m, 0, 1, kImprovementMargin, &created));
   m.check();
   EXPECT_EQ(created.size(), 2u);
   EXPECT_EQ(domain_count(m), 2u);
@@ -220,8 +220,8 @@ TEST(Optimize3d, ShellTransformationIsTheBestTriangulation) {
       ASSERT_TRUE(m.shell(0, 1, shell, &ring));
       const double old = optimize3d_detail::worst_quality(m, shell);
       std::vector<std::uint32_t> created;
-      const bool done = try_shell_transformation(m, 0, 1, kImprovementMargin3, &created);
-      EXPECT_EQ(done, best < old * (1 - kImprovementMargin3)) << n << " " << seed;
+      const bool done = try_shell_transformation(m, 0, 1, kImprovementMargin, &created);
+      EXPECT_EQ(done, best < old * (1 - kImprovementMargin)) << n << " " << seed;
       if (!done) continue;
       m.check();
       EXPECT_EQ(created.size(), 2 * n - 4);
@@ -365,7 +365,7 @@ RC_GTEST_PROP(Optimize3dProperties, FaceSwapsKeepValidityAndImprove, ()) {
     const std::uint32_t u = Mesh3::tetrahedron_of(m.twin(h));
     const bool locked = optimize3d_detail::is_locked_facet(m, h);
     const double before = m.in_domain(u) ? std::max(tetrahedron_quality(m, t), tetrahedron_quality(m, u)) : 0.0;
-    if (!try_face_swap(m, h, kImprovementMargin3, &created)) continue;
+    if (!try_face_swap(m, h, kImprovementMargin, &created)) continue;
     RC_ASSERT(!locked);
     m.check();
     RC_ASSERT(optimize3d_detail::worst_quality(m, created) < before);
@@ -389,7 +389,7 @@ RC_GTEST_PROP(Optimize3dProperties, ShellTransformationsKeepValidityAndImprove, 
     bool in_domain = true;
     for (const std::uint32_t s : shell) in_domain = in_domain && m.in_domain(s);
     const double before = in_domain ? optimize3d_detail::worst_quality(m, shell) : 0.0;
-    if (!try_shell_transformation(m, v[i], v[j], kImprovementMargin3, &created)) continue;
+    if (!try_shell_transformation(m, v[i], v[j], kImprovementMargin, &created)) continue;
     RC_ASSERT(in_domain);
     RC_ASSERT(!m.is_constrained_edge(v[i], v[j]));
     m.check();
