@@ -1,15 +1,10 @@
-// The replacement of a set of elements by new ones over the same outer boundary, written once for
-// the 2D and 3D optimization operators (optimize2d/local.cpp, optimize3d/local.cpp: the
-// "effective application" of book §8.6.1; callers decide on coordinates, this only rewires). The
-// outer facets (edges in 2D, triangles in 3D) are recorded with their twin and constraint, the
-// old elements removed, the new ones added, and each new facet linked to the outer facet it
-// repeats, else to its copy in another new element. The sets are a few dozen elements: quadratic
-// matching is fine.
-//
-// Side, per dimension: kFacets, facet(t, i), element_of(h); Key, key(mesh, h) (equal for a new
-// facet and the outer one it repeats) and mate(key) (the key of its copy in another new element);
-// ref(mesh, h), set_outer(mesh, h, constrained, ref); remove(mesh, t), add(mesh, n); for
-// messages kWho, kElement and describe(key).
+// The replacement of a set of elements by new ones over the same outer boundary, once for the
+// 2D and 3D optimization operators (book §8.6.1's "effective application"; callers decide on
+// coordinates, this only rewires): outer facets recorded, old elements removed, new ones added,
+// each new facet linked to the outer facet it repeats, else to its copy in another new element.
+// Side, per dimension (optimize2d/local.cpp, optimize3d/local.cpp): kFacets, facet, element_of,
+// Key, key (equal for a new facet and the outer one it repeats), mate (its copy's key), ref,
+// set_outer, remove, add; kWho, kElement, describe for messages. Quadratic: sets are small.
 #pragma once
 
 #include <algorithm>
