@@ -107,22 +107,22 @@ SurfaceSupport3::SurfaceSupport3(std::span<const Vec3> points, std::span<const s
            std::get<1>(halves[end]) == std::get<1>(halves[k]))
       ++end;
     const auto [a, b, h] = halves[k];
-    if (end - k > 2)
+    if (end - k > 2 && !options.non_manifold_ridges)
       throw InputError("surface support: edge " + edge_name(a, b) + " is in " + std::to_string(end - k) +
                            " triangles (a manifold surface has at most two)",
                        {a, b});
     const auto e = static_cast<std::uint32_t>(edge_vertices_.size());
     edge_vertices_.push_back({a, b});
-    edge_[h] = e;
+    edge_halves_.push_back(h);
+    for (std::size_t j = k; j < end; ++j) edge_[std::get<2>(halves[j])] = e;
     if (end - k == 2) {
       const std::uint32_t g = std::get<2>(halves[k + 1]);
-      if (triangles_[h / 3][h % 3] == triangles_[g / 3][g % 3])
+      const bool flipped = triangles_[h / 3][h % 3] == triangles_[g / 3][g % 3];
+      if (flipped && !options.non_manifold_ridges)
         throw InputError("surface support: triangles " + std::to_string(h / 3 + 1) + " and " + std::to_string(g / 3 + 1) +
                              " are oriented differently across edge " + edge_name(a, b),
                          {h / 3, g / 3});
-      edge_[g] = e;
-      neighbours_[h] = g / 3;
-      neighbours_[g] = h / 3;
+      if (!flipped) neighbours_[h] = g / 3, neighbours_[g] = h / 3;
     }
     k = end;
   }
@@ -143,14 +143,16 @@ void SurfaceSupport3::build_features(double ridge_angle_degrees) {
       const std::uint32_t u = neighbours_[3 * t + i];
       const bool ridge = u == kNone || refs_[u] != refs_[t] || angle_between(face_normals_[t], face_normals_[u]) > limit;
       ridge_[3 * t + i] = ridge ? 1 : 0;
-      if (!ridge || (u != kNone && u < t)) continue;  // each ridge once
-      ++ridge_edges_;
-      const std::uint32_t a = triangles_[t][i], b = triangles_[t][(i + 1) % 3];
-      for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
-        if (degree[x] < 2) ridge_neighbours_[x][degree[x]] = y;
-        ++degree[x];
-      }
     }
+  for (std::uint32_t e = 0; e < edge_vertices_.size(); ++e) {
+    if (!ridge_[edge_halves_[e]]) continue;
+    ++ridge_edges_;
+    const auto [a, b] = edge_vertices_[e];
+    for (const auto& [x, y] : {std::pair{a, b}, std::pair{b, a}}) {
+      if (degree[x] < 2) ridge_neighbours_[x][degree[x]] = y;
+      ++degree[x];
+    }
+  }
   corner_.assign(points_.size(), 0);
   for (std::uint32_t v = 0; v < points_.size(); ++v) {
     if (degree[v] == 0) continue;

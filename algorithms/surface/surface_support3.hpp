@@ -38,6 +38,10 @@ namespace dtlab {
 struct SurfaceSupportOptions {
   // Adjacent normals turning by more than this make a ridge; ridges turning by more, a corner.
   double ridge_angle_degrees = 45.0;
+  // An edge in more than two triangles, or across which two triangles are oriented differently
+  // (internal interfaces of a volume mesh meeting the boundary): a ridge joining nothing, instead
+  // of an InputError.
+  bool non_manifold_ridges = false;
 };
 
 class SurfaceSupport3 {
@@ -105,6 +109,7 @@ class SurfaceSupport3 {
   // Per undirected edge: its vertices, lower first, and the two inner control points of its cubic
   // from the lower vertex.
   std::vector<std::array<std::uint32_t, 2>> edge_vertices_;
+  std::vector<std::uint32_t> edge_halves_;  // per undirected edge: one of its half-edges
   std::vector<std::array<Vec3, 2>> edge_controls_;
   std::vector<Vec3> centres_;  // per triangle: the control point b111
   std::uint32_t ridge_edges_ = 0, corners_ = 0;

@@ -3,7 +3,7 @@
 // stay flat and straight; the support of a sphere and of a cylinder is closer to the exact surface
 // than the facets by the figures below; the two triangles of an edge give the same bits on it;
 // project() finds the nearest facet (brute force) and lands on the sphere; bad input is refused
-// by name, numbered from 1.
+// by name, numbered from 1; the boundary of a volume mesh gives its support turned outward.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/mesh3d/mesh3d.hpp"
+#include "algorithms/surface/boundary_support3.hpp"
 #include "algorithms/surface/surface_support3.hpp"
 #include "kernel/error.hpp"
 
@@ -264,6 +266,38 @@ TEST(SurfaceSupport3, RefusesBadInputByName) {
   expect_refused(points, {{0, 1, 2}, {1, 0, 3}, {0, 1, 3}}, "edge 1-2 is in 3 triangles");
   expect_refused(points, {{0, 1, 2}, {0, 1, 3}}, "triangles 1 and 2 are oriented differently across edge 1-2");
   expect_refused(points, {{0, 1, 2}}, "2 references for 1 triangles", {1, 2});
+}
+
+TEST(BoundarySupport3, TheBoundaryOfAVolumeMeshTurnedOutward) {
+  const double r = 0.5;
+  const Surface s = cylinder(r, 32, 4);
+  Mesh3dInput input;
+  input.points = s.points;
+  input.triangles = s.triangles;
+  const Mesh3dResult result = mesh3d(input);
+  const BoundarySupport3 boundary = boundary_support3(result.mesh);
+  const SurfaceSupport3& support = boundary.support;
+  EXPECT_EQ(support.triangle_count(), s.triangles.size());
+  EXPECT_EQ(support.ridge_count(), 64u);
+  EXPECT_EQ(support.corner_count(), 0u);
+  for (std::uint32_t t = 0; t < support.triangle_count(); ++t) {
+    const auto& v = support.triangle(t);
+    const Vec3 a = support.point(v[0]), b = support.point(v[1]), c = support.point(v[2]);
+    const Vec3 centre = (1.0 / 3.0) * (a + b + c);
+    EXPECT_GT(dot(cross(b - a, c - a), centre - Vec3{0, 0, 0.5}), 0.0) << "facet " << t << " turned inward";
+    for (std::uint32_t i = 0; i < 3; ++i) EXPECT_EQ(result.mesh.point(boundary.mesh_vertex[v[i]]), support.point(v[i]));
+  }
+}
+
+TEST(SurfaceSupport3, NonManifoldEdgesAreRidgesWhenAsked) {
+  // Three triangles on edge 0-1 (a fin on a flat pair): refused, or three open ridges.
+  const std::vector<Vec3> points{{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}};
+  const Triangles triangles{{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  expect_refused(points, triangles, "edge 1-2 is in 3 triangles");
+  const SurfaceSupport3 support(points, triangles, {}, {.non_manifold_ridges = true});
+  EXPECT_TRUE(support.is_ridge(0, 0) && support.is_ridge(1, 0) && support.is_ridge(2, 0));
+  EXPECT_EQ(support.neighbour(0, 0), SurfaceSupport3::kNone);
+  EXPECT_EQ(support.ridge_count(), 7u);  // 0-1 once, and the six open edges
 }
 
 }  // namespace
