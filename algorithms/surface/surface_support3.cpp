@@ -271,7 +271,11 @@ Vec3 SurfaceSupport3::edge_curve(std::uint32_t e, double r) const {
   const auto [lo, hi] = edge_vertices_[e];
   const double q = 1.0 - r;
   const auto& ctrl = edge_controls_[e];
-  return (q * q * q) * points_[lo] + (3.0 * q * q * r) * ctrl[0] + (3.0 * q * r * r) * ctrl[1] + (r * r * r) * points_[hi];
+  const Vec3& origin = points_[lo];
+  // Relative to the first control point (the Bernstein weights sum to 1): a curve in a plane
+  // x = c keeps x = c exactly.
+  return origin + ((3.0 * q * q * r) * (ctrl[0] - origin) + (3.0 * q * r * r) * (ctrl[1] - origin) +
+                   (r * r * r) * (points_[hi] - origin));
 }
 
 Vec3 SurfaceSupport3::surface_point(std::uint32_t t, std::array<double, 3> w) const {
@@ -295,10 +299,12 @@ Vec3 SurfaceSupport3::surface_point(std::uint32_t t, std::array<double, 3> w) co
     const std::uint32_t e = edge_of(t, edge);
     return edge_controls_[e][v[near] == edge_vertices_[e][0] ? 0 : 1];
   };
-  return (u * u * u) * points_[v[0]] + (vv * vv * vv) * points_[v[1]] + (x * x * x) * points_[v[2]] +
-         (3.0 * u * u * vv) * control(0, 0) + (3.0 * u * vv * vv) * control(0, 1) +
-         (3.0 * vv * vv * x) * control(1, 1) + (3.0 * vv * x * x) * control(1, 2) +
-         (3.0 * x * x * u) * control(2, 2) + (3.0 * x * u * u) * control(2, 0) + (6.0 * u * vv * x) * centres_[t];
+  const Vec3& o = points_[v[0]];  // relative to it, as edge_curve
+  return o + ((vv * vv * vv) * (points_[v[1]] - o) + (x * x * x) * (points_[v[2]] - o) +
+              (3.0 * u * u * vv) * (control(0, 0) - o) + (3.0 * u * vv * vv) * (control(0, 1) - o) +
+              (3.0 * vv * vv * x) * (control(1, 1) - o) + (3.0 * vv * x * x) * (control(1, 2) - o) +
+              (3.0 * x * x * u) * (control(2, 2) - o) + (3.0 * x * u * u) * (control(2, 0) - o) +
+              (6.0 * u * vv * x) * (centres_[t] - o));
 }
 
 SurfaceSupport3::Foot SurfaceSupport3::project(const Vec3& p) const {
