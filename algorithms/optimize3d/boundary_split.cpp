@@ -83,8 +83,11 @@ std::uint32_t try_boundary_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b,
   };
   Vec3 pm = midpoint;
   if (support != nullptr) {
+    // On the support or not at all: a chord point would leave the wall there for good, while the
+    // operators between two passes may free the support's point (a sliver at the wall removed).
     const Vec3 on_surface = support->project(midpoint).surface;
-    if (on_surface != mesh.point(a) && on_surface != mesh.point(b) && all_positive(on_surface)) pm = on_surface;
+    if (on_surface == mesh.point(a) || on_surface == mesh.point(b) || !all_positive(on_surface)) return Mesh3::kNone;
+    pm = on_surface;
   }
   if (!all_positive(pm)) {
     bool found = false;

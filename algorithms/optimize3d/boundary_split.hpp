@@ -13,7 +13,7 @@ class SurfaceSupport3;  // algorithms/surface/surface_support3.hpp
 
 // Splits constrained edge ab at its metric midpoint m: on the segment (planar faces stay planar
 // up to the rounding of m), or with a `support`, the point of the support over it (curved walls
-// stay curved; the segment's midpoint where that point would make a tetrahedron not positive). Every tetrahedron of ab's closed shell, in the domain, exterior or
+// stay curved; refused where that point would make a tetrahedron not positive). Every tetrahedron of ab's closed shell, in the domain, exterior or
 // ghost, becomes two, (.., m, ..) in place of b and of a; each constrained facet (a, b, c) becomes
 // (a, m, c) and (m, b, c) with its reference; am, mb and every mc of such a facet become
 // constrained edges. m is flagged kOnBoundary | kFixed (the interior operators leave it).

@@ -202,7 +202,8 @@ void SurfaceSupport3::build_sectors() {
       const auto& tv = triangles_[c / 3];
       const std::uint32_t i = c % 3;
       const Vec3& p = points_[tv[i]];
-      sum = sum + angle_between(points_[tv[(i + 1) % 3]] - p, points_[tv[(i + 2) % 3]] - p) * face_normals_[c / 3];
+      const Vec3 e1 = points_[tv[(i + 1) % 3]] - p, e2 = points_[tv[(i + 2) % 3]] - p;
+      sum = sum + (1.0 / (dot(e1, e1) * dot(e2, e2))) * cross(e1, e2);
     }
     const auto s = static_cast<std::uint32_t>(sector_normals_.size());
     sector_normals_.push_back(norm(sum) > 0.0 ? unit(sum) : face_normals_[c0 / 3]);

@@ -8,8 +8,12 @@
 // triangles turn by more than the ridge angle, where their references differ, or where it has one
 // triangle (an open boundary). A vertex is a corner where other than two ridges meet, or where its
 // two ridges turn by more than the ridge angle. The triangles around a vertex fall into sectors
-// between its ridges; each sector has its own normal (the angle-weighted mean of its triangles'
-// normals, Thürmer and Wüthrich 1998), so a ridge stays sharp.
+// between its ridges; each sector has its own normal, so a ridge stays sharp: the sum of its
+// corners' e1 x e2 / (|e1|^2 |e2|^2) (Max, "Weights for computing vertex normals from facet
+// normals", 1999: exact when the vertex and its neighbours lie on a sphere; on the sphere test
+// 8.9e-5 off where angle-weighted normals leave the support 1.2e-3 off). One-sided at a ridge, so
+// biased there by about half a facet's turn (the UGAWG cube-cylinder's wall: 1.6e-3 at the
+// midpoints of the edges from its ridge vertices; a quadric fit would remove it).
 //
 // The surface: over each triangle a cubic Bézier triangle (Vlachos, Peters, Boyd, Mitchell, "Curved
 // PN triangles", 2001; MMGS builds its support the same way, Dapogny, Dobrzynski and Frey 2014),

@@ -1,7 +1,7 @@
 // The geometric support of a triangulated surface (algorithms/surface/surface_support3): ridges
 // and corners of a cube, of a cylinder's rims and of a reference change; a cube's faces and edges
 // stay flat and straight; the support of a sphere and of a cylinder is closer to the exact surface
-// than the facets by the figures below; the two triangles of an edge give the same bits on it;
+// than the facets by the figures below (a hundred times on the sphere); the two triangles of an edge give the same bits on it;
 // project() finds the nearest facet (brute force) and lands on the sphere; bad input is refused
 // by name, numbered from 1; the boundary of a volume mesh gives its support turned outward.
 #include <gtest/gtest.h>
@@ -71,7 +71,7 @@ TEST(SurfaceSupport3, ReferencesMakeRidges) {
   EXPECT_TRUE(different.is_corner(0) && different.is_corner(2));
 }
 
-TEST(SurfaceSupport3, SphereSupportIsTenTimesCloserThanTheFacets) {
+TEST(SurfaceSupport3, SphereSupportIsAHundredTimesCloserThanTheFacets) {
   const Surface3 s = gen::octahedron_sphere(3);  // 512 triangles
   const SurfaceSupport3 support(s.points, s.triangles);
   EXPECT_EQ(support.ridge_count(), 0u);
@@ -87,7 +87,7 @@ TEST(SurfaceSupport3, SphereSupportIsTenTimesCloserThanTheFacets) {
   }
   std::printf("sphere, 512 facets: facets %.2e off the sphere, support %.2e\n", flat, curved);
   EXPECT_GT(flat, 1e-2);
-  EXPECT_LT(curved, flat / 10.0) << "flat " << flat << " support " << curved;
+  EXPECT_LT(curved, flat / 100.0) << "flat " << flat << " support " << curved;
 }
 
 TEST(SurfaceSupport3, CylinderWallAndRimsStayRound) {
