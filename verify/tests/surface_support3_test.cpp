@@ -1,9 +1,10 @@
 // The geometric support of a triangulated surface (algorithms/surface/surface_support3): ridges
 // and corners of a cube, of a cylinder's rims and of a reference change; a cube's faces and edges
-// stay flat and straight; the support of a sphere and of a cylinder is closer to the exact surface
-// than the facets by the figures below (a hundred times on the sphere); the two triangles of an edge give the same bits on it;
-// project() finds the nearest facet (brute force) and lands on the sphere; bad input is refused
-// by name, numbered from 1; the boundary of a volume mesh gives its support turned outward.
+// stay flat and straight; the support of a sphere and of a cylinder is closer to the exact
+// surface than the facets by the figures below (a hundred times on the sphere); the two
+// triangles of an edge give the same bits on it; project() finds the nearest facet (brute force)
+// and lands on the sphere; bad input is refused by name, numbered from 1; the boundary of a
+// volume mesh gives its support turned outward.
 #include <gtest/gtest.h>
 
 #include <algorithm>
