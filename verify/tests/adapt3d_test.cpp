@@ -249,6 +249,32 @@ TEST(RunAdapt3, AdaptsAFileAndKeepsReferences) {
   EXPECT_EQ(refs_in, refs_out);
 }
 
+TEST(RunAdapt3, BoundaryOptionsActOrAreRefused) {
+  Files f;
+  const MeshData3 input = cube_mesh(3);
+  write_mesh3(f.path("cube.mesh"), input);
+  write_medit_sol(f.path("cube.sol"), sol_from_metrics(std::vector<Metric3>(input.vertices.size(), Metric3::isotropic(0.2))));
+  cli::AdaptRequest r;
+  r.mesh = f.path("cube.mesh");
+  r.metric = f.path("cube.sol");
+  r.output = f.path("out.mesh");
+  r.output_metric = f.path("out.sol");
+  r.keep_boundary = true;
+  EXPECT_EQ(cli::run_adapt3(r), 0);
+  const MeshData3 kept = read_mesh3(r.output);
+  EXPECT_EQ(kept.triangles.size(), input.triangles.size());  // no boundary split
+  EXPECT_GT(kept.tetrahedra.size(), input.tetrahedra.size());
+  EXPECT_EQ(read_metrics<Metric3>(r.output_metric, kept.vertices.size()).size(), kept.vertices.size());
+  r.keep_boundary = false;
+  r.boundary_deviation = 1e-3;
+  try {
+    cli::run_adapt3(r);
+    FAIL() << "--hausd accepted in 3D, where no boundary vertex is removed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--hausd"), std::string::npos) << e.what();
+  }
+}
+
 TEST(RunAdapt3, BadInputNamed) {
   Files f;
   const MeshData3 input = cube_mesh(2);
