@@ -51,7 +51,10 @@ int run_adapt3(const AdaptRequest& request) {
   if (request.method != "local") throw InputError("--method " + request.method + ": give local or reconstruct");
   if (request.max_rounds == 0 || request.max_rounds > 1000)
     throw InputError("--rounds " + std::to_string(request.max_rounds) + ": give 1 to 1000 rounds");
-  StagedOutputs outputs({request.output});
+  if (request.boundary_deviation)
+    throw InputError("--hausd: 3D adaptation removes no boundary vertex yet, so there is no deviation to bound (" +
+                     request.mesh + ")");
+  StagedOutputs outputs({request.output, request.output_metric});
   const MeshData3 input = read_mesh3(request.mesh);
   if (input.tetrahedra.empty()) throw InputError(request.mesh + ": no Tetrahedra (a 3D mesh is needed)");
   std::vector<Metric3> metrics = read_metrics<Metric3>(request.metric, input.vertices.size());
@@ -79,8 +82,18 @@ int run_adapt3(const AdaptRequest& request) {
   Adapt3dOptions options;
   options.max_rounds = request.max_rounds;
   options.max_elements = request.max_elements;
+  options.ridge_angle_degrees = request.ridge_angle;  // the surface support's ridges and corners
+  options.boundary = !request.keep_boundary;
   const Adapt3dStats stats = adapt3d(mesh, control, options);
   outputs.write(request.output, [&](const std::string& path) { write_mesh3(path, output_data(mesh, input)); });
+  outputs.write(request.output_metric, [&](const std::string& path) {
+    std::vector<std::uint32_t> ids;
+    mesh.domain(&ids);
+    std::vector<Metric3> at_vertices;
+    at_vertices.reserve(ids.size());
+    for (const std::uint32_t v : ids) at_vertices.push_back(mesh.metric(v));
+    write_medit_sol(path, sol_from_metrics(at_vertices));
+  });
   outputs.commit();
 
   std::cout << "before:\n" << quality_table(stats.before) << "after:\n" << quality_table(stats.after);

@@ -20,9 +20,10 @@ struct AdaptRequest {
   std::optional<double> hgrad;
   std::uint32_t max_rounds = 12;  // rounds of the local modification
   bool stats = false;             // one JSON line with the counts and both quality reports last
-  // The boundary: corners where it turns by more than ridge_angle degrees (kept); a removed
-  // boundary vertex within boundary_deviation of the new boundary (absent: 1e-3 of the bounding
-  // box's diagonal); keep_boundary: no boundary vertex added or removed.
+  // The boundary: corners where it turns by more than ridge_angle degrees (kept; in 3D the
+  // ridges and corners of the surface support); a removed boundary vertex within
+  // boundary_deviation of the new boundary (absent: 1e-3 of the bounding box's diagonal; 2D only,
+  // refused in 3D); keep_boundary: no boundary vertex added or removed.
   double ridge_angle = 45.0;
   std::optional<double> boundary_deviation;
   bool keep_boundary = false;

@@ -15,6 +15,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <limits>
 #include <span>
 #include <type_traits>
 #include <vector>
@@ -62,15 +64,23 @@ class ElementGrid {
       }
     }
     if (listed == 0) return;
-    // Cells as cubic as the box allows, about cells_per_element * listed of them, at most 2^24.
-    double volume = 1.0;
+    // Cells as cubic as the box allows, about cells_per_element * listed of them, at most 2^24. A
+    // side a million times thinner than the longest (a flat surface in 3D) is one cell thick.
     std::array<double, 3> extent{};
+    double longest = 0.0;
     for (int d = 0; d < kDim; ++d) {
       extent[d] = std::max(hi_[d] - lo_[d], 1e-300);
+      longest = std::max(longest, extent[d]);
+    }
+    double volume = 1.0;
+    int thick = 0;
+    for (int d = 0; d < kDim; ++d) {
+      if (extent[d] < 1e-6 * longest) continue;
       volume *= extent[d];
+      ++thick;
     }
     const double target = std::clamp(cells_per_element * static_cast<double>(listed), 1.0, 16777216.0);
-    const double side = std::pow(volume / target, 1.0 / kDim);
+    const double side = std::pow(volume / target, 1.0 / thick);
     std::uint64_t total = 1;
     for (int d = 0; d < kDim; ++d) {
       n_[d] = static_cast<std::uint32_t>(std::clamp(std::ceil(extent[d] / side), 1.0, 4096.0));
@@ -108,6 +118,52 @@ class ElementGrid {
   }
 
   bool empty() const noexcept { return items_.empty(); }
+
+  // The listed element nearest to p: the one with the least distance(e), the caller's distance
+  // from p to element e (to its closest point; never more than to any point of it), lowest number
+  // on ties; kNoElement when none is listed. Buckets are searched in shells around p's bucket
+  // until no bucket left can hold a nearer element (an element lies in every bucket its bounding
+  // box meets, so its closest point to p does); at most every bucket once.
+  static constexpr std::uint32_t kNoElement = 0xFFFFFFFFu;
+  template <class Distance>
+  std::uint32_t nearest(const Point& p, Distance&& distance) const {
+    if (items_.empty()) return kNoElement;
+    std::array<std::int64_t, 3> c{}, n{};
+    for (int d = 0; d < 3; ++d) {
+      c[d] = d < kDim ? cell(coord(p, d), d) : 0;
+      n[d] = n_[d];
+    }
+    std::uint32_t best = kNoElement;
+    double best_distance = std::numeric_limits<double>::infinity();
+    auto visit = [&](std::int64_t x, std::int64_t y, std::int64_t z) {
+      const std::uint64_t i = index(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), static_cast<std::uint32_t>(z));
+      for (std::uint64_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
+        const std::uint32_t e = items_[k];
+        const double dist = distance(e);
+        if (dist < best_distance || (dist == best_distance && e < best)) best = e, best_distance = dist;
+      }
+    };
+    const std::int64_t shells = std::max({n[0], n[1], n[2]});
+    for (std::int64_t r = 0; r < shells; ++r) {
+      std::array<std::int64_t, 3> a{}, b{};
+      for (int d = 0; d < 3; ++d) a[d] = std::max<std::int64_t>(c[d] - r, 0), b[d] = std::min(c[d] + r, n[d] - 1);
+      for (std::int64_t z = a[2]; z <= b[2]; ++z)
+        for (std::int64_t y = a[1]; y <= b[1]; ++y) {
+          const bool face = std::abs(z - c[2]) == r || std::abs(y - c[1]) == r;
+          for (std::int64_t x = a[0]; x <= b[0]; x += face || b[0] == a[0] ? 1 : b[0] - a[0]) {
+            if (face || std::abs(x - c[0]) == r) visit(x, y, z);
+          }
+        }
+      // Any bucket beyond shell r lies past a face of the block [c - r, c + r] that is not the grid's.
+      double beyond = std::numeric_limits<double>::infinity();
+      for (int d = 0; d < kDim; ++d) {
+        if (c[d] - r > 0) beyond = std::min(beyond, coord(p, d) - (lo_[d] + (c[d] - r) / scale_[d]));
+        if (c[d] + r < n[d] - 1) beyond = std::min(beyond, lo_[d] + (c[d] + r + 1) / scale_[d] - coord(p, d));
+      }
+      if (beyond == std::numeric_limits<double>::infinity() || beyond > best_distance) break;
+    }
+    return best;
+  }
   // The elements whose bounding box meets p's bucket (p outside the box: the nearest bucket).
   std::span<const std::uint32_t> candidates(const Point& p) const noexcept {
     if (items_.empty()) return {};

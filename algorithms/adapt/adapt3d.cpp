@@ -5,10 +5,12 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "algorithms/common/element_estimate.hpp"
 #include "algorithms/optimize3d/boundary_split.hpp"
+#include "algorithms/surface/boundary_support3.hpp"
 #include "kernel/error.hpp"
 
 namespace dtlab {
@@ -33,11 +35,17 @@ Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOpti
   if (checked.limit != element_estimate::kNoElementLimit)
     round.split.max_vertices = std::min<std::uint64_t>(options.max_vertices, checked.limit / 3 + mesh.live_vertex_count());
   round.max_elements = element_estimate::kNoElementLimit;  // estimated above
+  // The support of the boundary as given, before any split: new boundary vertices go onto it.
+  std::optional<BoundarySupport3> support;
+  if (options.boundary && options.surface_support)
+    support.emplace(boundary_support3(mesh, SurfaceSupportOptions{.ridge_angle_degrees = options.ridge_angle_degrees,
+                                                                  .non_manifold_ridges = true}));
   double share = stats.before.unit_edge_share;
   stats.stopped_by = "max_rounds";
   for (std::uint32_t r = 0; r < options.max_rounds; ++r) {
     // The boundary first (§9.3.1: the surface mesh conforms to the metric, then the volume).
-    const std::uint64_t boundary_splits = options.boundary ? boundary_split_pass3(mesh, field, round.split) : 0;
+    const std::uint64_t boundary_splits =
+        options.boundary ? boundary_split_pass3(mesh, field, round.split, support ? &support->support : nullptr) : 0;
     stats.boundary_splits += boundary_splits;
     const Optimize3dStats s = optimize3d(mesh, round, field);
     ++stats.rounds;

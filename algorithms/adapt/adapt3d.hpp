@@ -5,10 +5,11 @@
 // transformations and relocations, all with the operators of algorithms/optimize3d, repeated in
 // rounds until the metric edge lengths stop changing.
 //
-// Scope of this version: the interior, and the split of boundary edges (algorithms/optimize3d/boundary_split.hpp,
-// linear metric midpoint, references kept). Boundary collapse and the curved surface support are
-// not written yet (issue 18): boundary vertices are never removed and new ones lie on the
-// input's facets.
+// Scope of this version: the interior, and the split of boundary edges (algorithms/optimize3d/
+// boundary_split.hpp, references kept) at the point of the input surface's geometric support
+// (algorithms/surface/boundary_support3.hpp: a curved wall stays curved) over the metric
+// midpoint. Boundary collapse, swaps and relocation on the support are not written yet (issue
+// 44): boundary vertices are never removed nor moved.
 #pragma once
 
 #include <cstdint>
@@ -33,6 +34,10 @@ struct Adapt3dOptions {
   // vertex bound is lowered to a third of it. 0: half this machine's memory.
   std::uint64_t max_elements = 0;
   bool boundary = true;  // split constrained edges longer than sqrt2 (algorithms/optimize3d/boundary_split.hpp)
+  // New boundary vertices on the smooth support of the input's boundary facets (false: on the
+  // facets), with ridges and corners where the facets turn by more than ridge_angle_degrees.
+  bool surface_support = true;
+  double ridge_angle_degrees = 45.0;
 };
 
 struct Adapt3dStats {

@@ -1,6 +1,7 @@
 // Split of constrained edges for 3D adaptation (book §9.3.1, the edge split of §8.3.6 carried to
 // the boundary): both halves of each boundary facet keep its reference, the new vertex lies on the
-// boundary. Linear midpoint in the metric (the curved support is not written yet).
+// boundary: at the metric midpoint of the segment, or on the surface's geometric support
+// (algorithms/surface/surface_support3.hpp) over it.
 #include "algorithms/optimize3d/boundary_split.hpp"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "algorithms/optimize3d/local.hpp"
+#include "algorithms/surface/surface_support3.hpp"
 #include "kernel/predicates.hpp"
 
 namespace dtlab {
@@ -44,7 +46,7 @@ bool positive(const Mesh3& mesh, const std::array<std::uint32_t, 4>& t, std::uin
 }  // namespace
 
 std::uint32_t try_boundary_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b, const MetricField3& field,
-                                  const Split3Options& options) {
+                                  const Split3Options& options, const SurfaceSupport3* support) {
   if (a == Mesh3::kInfinite || b == Mesh3::kInfinite || !mesh.is_constrained_edge(a, b)) return Mesh3::kNone;
   std::vector<std::uint32_t> shell, ring;
   if (!mesh.shell(a, b, shell, &ring)) return Mesh3::kNone;
@@ -80,6 +82,13 @@ std::uint32_t try_boundary_split3(Mesh3& mesh, std::uint32_t a, std::uint32_t b,
     return true;
   };
   Vec3 pm = midpoint;
+  if (support != nullptr) {
+    // On the support or not at all: a chord point would leave the wall there for good, while the
+    // operators between two passes may free the support's point (a sliver at the wall removed).
+    const Vec3 on_surface = support->project(midpoint).surface;
+    if (on_surface == mesh.point(a) || on_surface == mesh.point(b) || !all_positive(on_surface)) return Mesh3::kNone;
+    pm = on_surface;
+  }
   if (!all_positive(pm)) {
     bool found = false;
     for (int k = 1; k < 27 && !found; ++k) {
@@ -183,7 +192,8 @@ std::uint64_t long_constrained_edges(const Mesh3& mesh, double long_length) {
   return static_cast<std::uint64_t>(std::unique(edges.begin(), edges.end()) - edges.begin());
 }
 
-std::uint64_t boundary_split_pass3(Mesh3& mesh, const MetricField3& field, const Split3Options& options) {
+std::uint64_t boundary_split_pass3(Mesh3& mesh, const MetricField3& field, const Split3Options& options,
+                                   const SurfaceSupport3* support) {
   using Item = std::tuple<double, std::uint32_t, std::uint32_t>;
   std::priority_queue<Item, std::vector<Item>, std::less<>> queue;
   auto consider = [&](std::uint32_t a, std::uint32_t b) {
@@ -206,7 +216,7 @@ std::uint64_t boundary_split_pass3(Mesh3& mesh, const MetricField3& field, const
     if (mesh.live_vertex_count() >= options.max_vertices) break;
     if (mesh.is_dead_vertex(a) || mesh.is_dead_vertex(b) || !mesh.is_constrained_edge(a, b) || length_of(mesh, a, b) != l)
       continue;
-    const std::uint32_t m = try_boundary_split3(mesh, a, b, field, options);
+    const std::uint32_t m = try_boundary_split3(mesh, a, b, field, options, support);
     if (m == Mesh3::kNone) continue;
     ++splits;
     // The halves, the edges that cut the facets of ab (m to each facet's third vertex), and the

@@ -16,12 +16,14 @@
 #include <unistd.h>
 
 #include "algorithms/adapt/adapt3d.hpp"
+#include "algorithms/mesh3d/mesh3d.hpp"
 #include "apps/adapt3.hpp"
 #include "mesh/io/any_format.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/io/medit_sol.hpp"
 #include "mesh/mesh3_from_data.hpp"
+#include "verify/generators/surfaces3.hpp"
 
 namespace dtlab {
 namespace {
@@ -170,6 +172,42 @@ TEST(Adapt3d, ConstantAnisotropicMetricConvergesInTheInterior) {
   EXPECT_EQ(quality_json(s2.after), quality_json(s.after));
 }
 
+// The wall's largest distance from the cylinder r = 0.5 over the boundary vertices off the caps.
+double wall_error(const Mesh3& mesh) {
+  double worst = 0.0;
+  const MeshData3 out = mesh.domain();
+  for (const auto& t : out.triangles)
+    for (const auto v : t) {
+      const Vec3& p = out.vertices[v];
+      if (p.z > 0.0 && p.z < 1.0) worst = std::max(worst, std::abs(std::hypot(p.x, p.y) - 0.5));
+    }
+  return worst;
+}
+
+TEST(Adapt3d, CylinderWallStaysRoundOnTheSurfaceSupport) {
+  // A cylinder of radius 0.5 with 32 vertices a circle: the facets' sagitta is 2.4e-3; refined to
+  // h = 0.06, new wall vertices at the facets' midpoints are that far off, on the support within
+  // the 2.5e-4 issue 44 asks (measured 1.0e-5 for the support itself).
+  const gen::Surface3 surface = gen::capped_cylinder(0.5, 32, 10);
+  Mesh3dInput input;
+  input.points = surface.points;
+  input.triangles = surface.triangles;
+  const Mesh3 start = mesh3d(input).mesh;
+  const ControlSpace3 size = uniform_space(Metric3::isotropic(0.06));
+  Mesh3 on_support = start, on_facets = start;
+  const Adapt3dStats s = adapt3d(on_support, size);
+  Adapt3dOptions flat;
+  flat.surface_support = false;
+  adapt3d(on_facets, size, flat);
+  on_support.check();
+  EXPECT_GT(s.boundary_splits, 200u);
+  EXPECT_EQ(s.after.inverted, 0u);
+  const double curved = wall_error(on_support), chords = wall_error(on_facets);
+  std::cout << "cylinder wall at h = 0.06: " << chords << " off r = 0.5 on the facets, " << curved << " on the support\n";
+  EXPECT_GT(chords, 1e-3);
+  EXPECT_LT(curved, 2.5e-4);
+}
+
 TEST(Adapt3d, RoundsAreBounded) {
   Mesh3 mesh = mesh3_from_data(cube_mesh(2));
   Adapt3dOptions o;
@@ -209,6 +247,32 @@ TEST(RunAdapt3, AdaptsAFileAndKeepsReferences) {
   std::set<int> refs_out(result.triangle_refs.begin(), result.triangle_refs.end());
   EXPECT_GT(result.triangles.size(), input.triangles.size());  // boundary edges split
   EXPECT_EQ(refs_in, refs_out);
+}
+
+TEST(RunAdapt3, BoundaryOptionsActOrAreRefused) {
+  Files f;
+  const MeshData3 input = cube_mesh(3);
+  write_mesh3(f.path("cube.mesh"), input);
+  write_medit_sol(f.path("cube.sol"), sol_from_metrics(std::vector<Metric3>(input.vertices.size(), Metric3::isotropic(0.2))));
+  cli::AdaptRequest r;
+  r.mesh = f.path("cube.mesh");
+  r.metric = f.path("cube.sol");
+  r.output = f.path("out.mesh");
+  r.output_metric = f.path("out.sol");
+  r.keep_boundary = true;
+  EXPECT_EQ(cli::run_adapt3(r), 0);
+  const MeshData3 kept = read_mesh3(r.output);
+  EXPECT_EQ(kept.triangles.size(), input.triangles.size());  // no boundary split
+  EXPECT_GT(kept.tetrahedra.size(), input.tetrahedra.size());
+  EXPECT_EQ(read_metrics<Metric3>(r.output_metric, kept.vertices.size()).size(), kept.vertices.size());
+  r.keep_boundary = false;
+  r.boundary_deviation = 1e-3;
+  try {
+    cli::run_adapt3(r);
+    FAIL() << "--hausd accepted in 3D, where no boundary vertex is removed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--hausd"), std::string::npos) << e.what();
+  }
 }
 
 TEST(RunAdapt3, BadInputNamed) {
