@@ -26,9 +26,16 @@ double gauss8(F&& f, double a, double b) {
 
 constexpr std::uint32_t kBSplineCells = 16;  // quadrature cells per knot span for the arc length
 
+void check_finite(const std::vector<Vec3>& points, const std::string& what) {
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y) || !std::isfinite(points[i].z))
+      throw InputError(what + ": point " + std::to_string(i + 1) + " is not finite", {i});
+}
+
 }  // namespace
 
 Curve3 Curve3::segment(const Vec3& a, const Vec3& b) {
+  check_finite({a, b}, "segment");
   Curve3 c;
   c.kind_ = Kind::Segment;
   c.points_ = {a, b};
@@ -37,6 +44,7 @@ Curve3 Curve3::segment(const Vec3& a, const Vec3& b) {
 
 Curve3 Curve3::polyline(std::vector<Vec3> points) {
   if (points.size() < 2) throw InputError("polyline: needs at least two points");
+  check_finite(points, "polyline");
   Curve3 c;
   c.kind_ = Kind::Polyline;
   c.lengths_.assign(1, 0.0);
@@ -53,6 +61,7 @@ Curve3 Curve3::polyline(std::vector<Vec3> points) {
 }
 
 Curve3 Curve3::circle_arc(const Vec3& centre, const Vec3& start, const Vec3& axis, double angle) {
+  check_finite({centre, start, axis}, "circle arc (centre, start, axis)");
   const Vec3 r = start - centre;
   if (!(norm(r) > 0.0)) throw InputError("circle arc: the start is the centre");
   if (std::abs(norm(axis) - 1.0) > 1e-12) throw InputError("circle arc: the axis is not a unit vector");
@@ -68,6 +77,7 @@ Curve3 Curve3::circle_arc(const Vec3& centre, const Vec3& start, const Vec3& axi
 Curve3 Curve3::bspline(std::vector<Vec3> controls, std::vector<double> knots, std::uint32_t degree) {
   const std::size_t n = controls.size();
   if (degree < 1) throw InputError("B-spline: the degree must be at least 1");
+  check_finite(controls, "B-spline control");
   if (n < degree + 1) throw InputError("B-spline: degree " + std::to_string(degree) + " needs at least " +
                                        std::to_string(degree + 1) + " control points");
   if (knots.size() != n + degree + 1)
@@ -108,9 +118,9 @@ Vec3 Curve3::point(double t) const {
   switch (kind_) {
     case Kind::Segment: return points_[0] + t * (points_[1] - points_[0]);
     case Kind::Polyline: {
-      const double s = t * lengths_.back();
-      const std::size_t i = std::min<std::size_t>(
-          std::upper_bound(lengths_.begin(), lengths_.end(), s) - lengths_.begin(), lengths_.size() - 1);
+      const double s = std::clamp(t, 0.0, 1.0) * lengths_.back();
+      const std::size_t i = std::clamp<std::size_t>(
+          std::upper_bound(lengths_.begin(), lengths_.end(), s) - lengths_.begin(), 1, lengths_.size() - 1);
       const double u = (s - lengths_[i - 1]) / (lengths_[i] - lengths_[i - 1]);
       return points_[i - 1] + u * (points_[i] - points_[i - 1]);
     }
@@ -140,9 +150,9 @@ Vec3 Curve3::derivative(double t) const {
   switch (kind_) {
     case Kind::Segment: return points_[1] - points_[0];
     case Kind::Polyline: {
-      const double s = t * lengths_.back();
-      const std::size_t i = std::min<std::size_t>(
-          std::upper_bound(lengths_.begin(), lengths_.end(), s) - lengths_.begin(), lengths_.size() - 1);
+      const double s = std::clamp(t, 0.0, 1.0) * lengths_.back();
+      const std::size_t i = std::clamp<std::size_t>(
+          std::upper_bound(lengths_.begin(), lengths_.end(), s) - lengths_.begin(), 1, lengths_.size() - 1);
       return (lengths_.back() / (lengths_[i] - lengths_[i - 1])) * (points_[i] - points_[i - 1]);
     }
     case Kind::Arc: {

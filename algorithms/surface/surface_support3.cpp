@@ -76,6 +76,11 @@ SurfaceSupport3::SurfaceSupport3(std::span<const Vec3> points, std::span<const s
     throw InputError("surface support: the ridge angle must lie in [0, 180] degrees");
   refs_ = triangle_refs.empty() ? std::vector<int>(triangles_.size(), 0)
                                 : std::vector<int>(triangle_refs.begin(), triangle_refs.end());
+  for (std::size_t v = 0; v < points_.size(); ++v) {
+    const Vec3& p = points_[v];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw InputError("surface support: point " + std::to_string(v + 1) + " is not finite", {v});
+  }
   const auto n = static_cast<std::uint32_t>(triangles_.size());
   face_normals_.resize(n);
   for (std::uint32_t t = 0; t < n; ++t) {

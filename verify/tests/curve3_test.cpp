@@ -143,6 +143,11 @@ TEST(CurveMesh, RefusesBadCurvesAndMapsByName) {
   expect_refused([] { Curve3::bspline({{0, 0, 0}, {1, 0, 0}}, {0, 0, 1}, 1); }, "3 knots for 2 control points");
   expect_refused([] { Curve3::bspline({{0, 0, 0}, {1, 0, 0}, {2, 1, 0}}, {0, 0.1, 0.5, 1, 1}, 1); }, "not clamped");
   expect_refused([] { Curve3::circle_arc({0, 0, 0}, {1, 0, 1}, {0, 0, 1}, 1.0); }, "not in the plane");
+  const double nan = std::nan("");
+  expect_refused([&] { Curve3::segment({0, 0, 0}, {nan, 0, 0}); }, "segment: point 2 is not finite");
+  expect_refused([&] { Curve3::polyline({{0, 0, 0}, {1, 0, 0}, {1, HUGE_VAL, 0}}); }, "polyline: point 3 is not finite");
+  expect_refused([&] { Curve3::bspline({{0, 0, 0}, {nan, 0, 0}}, {0, 0, 1, 1}, 1); }, "B-spline control: point 2");
+  expect_refused([&] { Curve3::circle_arc({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, nan); }, "the angle must be finite");
   const Curve3 segment = Curve3::segment({0, 0, 0}, {1, 0, 0});
   expect_refused([&] { mesh_curve(segment, sized({0, 0}, {1, 1})); }, "abscissa 2");
   expect_refused([&] { mesh_curve(segment, sized({0}, {-1})); }, "size 1");

@@ -199,6 +199,7 @@ TEST(SurfaceSupport3, RefusesBadInputByName) {
   expect_refused(points, {{0, 1, 2}, {1, 0, 3}, {0, 1, 3}}, "edge 1-2 is in 3 triangles");
   expect_refused(points, {{0, 1, 2}, {0, 1, 3}}, "triangles 1 and 2 are oriented differently across edge 1-2");
   expect_refused(points, {{0, 1, 2}}, "2 references for 1 triangles", {1, 2});
+  expect_refused({{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}, {{0, 1, 2}}, "point 3 is not finite");
 }
 
 TEST(BoundarySupport3, TheBoundaryOfAVolumeMeshTurnedOutward) {
