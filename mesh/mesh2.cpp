@@ -17,16 +17,12 @@ namespace dtlab {
 
 Mesh2::Mesh2(const Triangulation2& tri, std::span<const int> triangle_refs, std::span<const MeshEdge2> constrained,
              const Metric2& metric) {
-  const std::size_t n = tri.point_count();
   const std::size_t nt = tri.triangle_count();
   if (triangle_refs.size() != nt) {
     throw InputError("Mesh2: " + std::to_string(triangle_refs.size()) + " triangle references for " +
                      std::to_string(nt) + " triangles");
   }
-  points_.assign(tri.points().begin(), tri.points().end());
-  metrics_.assign(n, metric);
-  vertex_flags_.assign(n, kFixed);
-  vertex_triangle_ = vertex_triangles(tri, /*finite_first=*/false);
+  adopt_vertices(tri.points(), metric, vertex_triangles(tri, /*finite_first=*/false));
   vertices_ = tri.vertices();
   neighbours_ = tri.neighbours();
   refs_.assign(triangle_refs.begin(), triangle_refs.end());
@@ -34,14 +30,6 @@ Mesh2::Mesh2(const Triangulation2& tri, std::span<const int> triangle_refs, std:
   edge_refs_.assign(vertices_.size(), 0);
   for (std::uint32_t t = 0; t < nt; ++t)
     if (is_ghost(t)) refs_[t] = kExterior;
-  // Vertices no triangle uses (duplicates of the input) are dead slots.
-  for (std::uint32_t v = 0; v < n; ++v) {
-    if (vertex_triangle_[v] == kNone) {
-      vertex_flags_[v] = kDead;
-      free_vertices_.push_back(v);
-    }
-  }
-  std::reverse(free_vertices_.begin(), free_vertices_.end());
   if (constrained.empty()) return;
   std::unordered_map<std::uint64_t, std::uint32_t> by_edge;
   by_edge.reserve(constrained.size() * 2);
@@ -69,28 +57,11 @@ Mesh2::Mesh2(const Triangulation2& tri, std::span<const int> triangle_refs, std:
 
 std::uint32_t Mesh2::add_vertex(const Vec2& p, const Metric2& m, std::uint8_t flags) {
   DTLAB_ASSERT((flags & kDead) == 0);
-  if (!free_vertices_.empty()) {
-    const std::uint32_t v = free_vertices_.back();
-    free_vertices_.pop_back();
-    points_[v] = p;
-    metrics_[v] = m;
-    vertex_flags_[v] = flags;
-    vertex_triangle_[v] = kNone;
-    return v;
-  }
-  DTLAB_ASSERT(points_.size() < Triangulation2::kMaxPoints);
-  points_.push_back(p);
-  metrics_.push_back(m);
-  vertex_flags_.push_back(flags);
-  vertex_triangle_.push_back(kNone);
-  return static_cast<std::uint32_t>(points_.size() - 1);
-}
-
-void Mesh2::remove_vertex(std::uint32_t v) {
-  DTLAB_ASSERT(!is_dead_vertex(v));
-  vertex_flags_[v] = kDead;
-  vertex_triangle_[v] = kNone;
-  free_vertices_.push_back(v);
+  const std::uint32_t v = take_slot(Triangulation2::kMaxPoints);
+  points_[v] = p;
+  metrics_[v] = m;
+  vertex_flags_[v] = flags;
+  return v;
 }
 
 std::uint32_t Mesh2::add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c, int r) {
@@ -117,9 +88,9 @@ std::uint32_t Mesh2::add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_
     constrained_[3 * t + i] = 0;
     edge_refs_[3 * t + i] = 0;
   }
-  if (a != kInfinite) vertex_triangle_[a] = t;
-  vertex_triangle_[b] = t;
-  vertex_triangle_[c] = t;
+  if (a != kInfinite) vertex_element_[a] = t;
+  vertex_element_[b] = t;
+  vertex_element_[c] = t;
   return t;
 }
 
@@ -131,7 +102,7 @@ void Mesh2::remove_triangle(std::uint32_t t) {
 
 void Mesh2::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
   out.clear();
-  const std::uint32_t t0 = vertex_triangle_[v];
+  const std::uint32_t t0 = vertex_element_[v];
   DTLAB_ASSERT(t0 != kNone && is_alive(t0));
   const std::uint32_t h0 = nav2::opposite(*this, t0, v);
   DTLAB_ASSERT(h0 != kNone);
@@ -143,7 +114,7 @@ void Mesh2::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
 }
 
 std::uint32_t Mesh2::find_half_edge(std::uint32_t u, std::uint32_t v) const {
-  const std::uint32_t t0 = vertex_triangle_[u];
+  const std::uint32_t t0 = vertex_element_[u];
   DTLAB_ASSERT(t0 != kNone && is_alive(t0));
   return nav2::find_half_edge(*this, nav2::opposite(*this, t0, u), v, live_triangle_count() + 1);
 }
@@ -167,8 +138,8 @@ std::uint32_t Mesh2::flip(std::uint32_t h) {
       vertices_.data(), neighbours_.data(), h, [&](std::uint32_t e) { return Payload{constrained_[e], edge_refs_[e]}; },
       [&](std::uint32_t e, const Payload& x) { constrained_[e] = x.constrained, edge_refs_[e] = x.ref; }, Payload{});
   // t1 = (p, a, q), t2 = (q, b, p).
-  vertex_triangle_[vertices_[3 * t1]] = vertex_triangle_[vertices_[3 * t1 + 1]] = vertex_triangle_[vertices_[3 * t1 + 2]] = t1;
-  vertex_triangle_[vertices_[3 * t2 + 1]] = t2;
+  vertex_element_[vertices_[3 * t1]] = vertex_element_[vertices_[3 * t1 + 1]] = vertex_element_[vertices_[3 * t1 + 2]] = t1;
+  vertex_element_[vertices_[3 * t2 + 1]] = t2;
   return d;
 }
 
@@ -214,7 +185,7 @@ void Mesh2::check() const {
   }
   for (std::uint32_t v = 0; v < vertex_capacity(); ++v) {
     if (is_dead_vertex(v)) continue;
-    const std::uint32_t t = vertex_triangle_[v];
+    const std::uint32_t t = vertex_element_[v];
     if (t == kNone || t >= nt || !is_alive(t) ||
         (vertices_[3 * t] != v && vertices_[3 * t + 1] != v && vertices_[3 * t + 2] != v)) {
       fail("vertex_triangle of vertex " + std::to_string(v) + " is stale");
@@ -224,27 +195,12 @@ void Mesh2::check() const {
 }
 
 MeshData2 Mesh2::domain(std::vector<std::uint32_t>* vertex_ids) const {
-  MeshData2 out;
-  const std::vector<std::uint32_t> number = number_domain_vertices<3>(
-      std::span<const std::uint32_t>(vertices_), std::span<const Vec2>(points_),
-      [this](std::uint32_t t) { return in_domain(t); }, out.vertices, out.vertex_refs, vertex_ids);
-  const std::uint32_t nt = triangle_capacity();
-  for (std::uint32_t t = 0; t < nt; ++t) {
-    if (!in_domain(t)) continue;
-    out.triangles.push_back({number[vertices_[3 * t]], number[vertices_[3 * t + 1]], number[vertices_[3 * t + 2]]});
-    out.triangle_refs.push_back(refs_[t]);
-    for (std::uint32_t i = 0; i < 3; ++i) {
-      const std::uint32_t h = 3 * t + i;
-      if (!constrained_[h]) continue;
-      const std::uint32_t g = neighbours_[h];
-      // Each edge once: from the side with the smaller half-edge among the domain sides.
-      if (in_domain(triangle_of(g)) && g < h) continue;
-      std::uint32_t a = number[origin(h)], b = number[destination(h)];
-      out.edges.push_back({a, b});
-      out.edge_refs.push_back(edge_refs_[h]);
-    }
-  }
-  return out;
+  const auto emit_edge = [this](MeshData2& out, std::span<const std::uint32_t> number, std::uint32_t h) {
+    out.edges.push_back({number[origin(h)], number[destination(h)]});
+    out.edge_refs.push_back(edge_refs_[h]);
+  };
+  return mesh_domain<3, MeshData2>(*this, vertices_, neighbours_, refs_, &MeshData2::triangles, &MeshData2::triangle_refs,
+                                   vertex_ids, [this](std::uint32_t h) { return constrained_[h] != 0; }, emit_edge);
 }
 
 }  // namespace dtlab

@@ -28,6 +28,7 @@
 #include "kernel/metric.hpp"
 #include "kernel/vec.hpp"
 #include "mesh/io/mesh_data.hpp"
+#include "mesh/mesh_vertices.hpp"
 #include "mesh/navigation2.hpp"
 #include "mesh/triangulation2.hpp"
 
@@ -39,17 +40,14 @@ struct MeshEdge2 {
   int ref = 0;
 };
 
-class Mesh2 {
+class Mesh2 : public MeshVertices<Vec2, Metric2> {
  public:
   static constexpr std::uint32_t kNone = Triangulation2::kNone;
   static constexpr std::uint32_t kInfinite = Triangulation2::kInfinite;
   // The reference of a triangle outside the domain (exterior of the boundary, holes, ghosts).
   static constexpr int kExterior = std::numeric_limits<int>::min();
 
-  // Vertex flags (a bit set).
-  static constexpr std::uint8_t kFixed = 1;       // an input vertex or a recovery Steiner point: never moved or removed
-  static constexpr std::uint8_t kOnBoundary = 2;  // lies on a constrained edge
-  static constexpr std::uint8_t kDead = 4;        // a free slot
+  // Vertex flags kFixed, kOnBoundary, kDead: mesh/mesh_vertices.hpp.
 
   Mesh2() = default;
   // From a closed triangulation (ghosts included): `triangle_refs` one per stored triangle of
@@ -66,27 +64,15 @@ class Mesh2 {
   static constexpr std::uint32_t next(std::uint32_t h) noexcept { return h % 3 == 2 ? h - 2 : h + 1; }
   static constexpr std::uint32_t prev(std::uint32_t h) noexcept { return h % 3 == 0 ? h + 2 : h - 1; }
 
-  // --- Vertices ------------------------------------------------------------------------------
-  // Slots, dead ones included.
-  std::uint32_t vertex_capacity() const noexcept { return static_cast<std::uint32_t>(points_.size()); }
-  std::uint32_t live_vertex_count() const noexcept { return vertex_capacity() - static_cast<std::uint32_t>(free_vertices_.size()); }
-  const Vec2& point(std::uint32_t v) const noexcept { return points_[v]; }
-  std::span<const Vec2> points() const noexcept { return points_; }
-  const Metric2& metric(std::uint32_t v) const noexcept { return metrics_[v]; }
-  std::span<const Metric2> metrics() const noexcept { return metrics_; }
-  std::uint8_t flags(std::uint32_t v) const noexcept { return vertex_flags_[v]; }
-  bool is_dead_vertex(std::uint32_t v) const noexcept { return (vertex_flags_[v] & kDead) != 0; }
+  // --- Vertices (slots, points, metrics, flags, remove_vertex: mesh/mesh_vertices.hpp) --------
   // Moving a vertex is the caller's responsibility for validity (check orientation first).
   void set_point(std::uint32_t v, const Vec2& p) noexcept { points_[v] = p; }
   void set_metric(std::uint32_t v, const Metric2& m) noexcept { metrics_[v] = m; }
-  void set_flags(std::uint32_t v, std::uint8_t f) noexcept { vertex_flags_[v] = f; }
   // One live triangle incident to v (kNone for a dead vertex). Operators keep it current.
-  std::uint32_t vertex_triangle(std::uint32_t v) const noexcept { return vertex_triangle_[v]; }
-  void set_vertex_triangle(std::uint32_t v, std::uint32_t t) noexcept { vertex_triangle_[v] = t; }
+  std::uint32_t vertex_triangle(std::uint32_t v) const noexcept { return vertex_element_[v]; }
+  void set_vertex_triangle(std::uint32_t v, std::uint32_t t) noexcept { vertex_element_[v] = t; }
   // A new vertex (reusing a dead slot if any); no triangle yet.
   std::uint32_t add_vertex(const Vec2& p, const Metric2& m, std::uint8_t flags = 0);
-  // Marks v dead and frees its slot; no live triangle may still use it.
-  void remove_vertex(std::uint32_t v);
 
   // --- Triangles -----------------------------------------------------------------------------
   std::uint32_t triangle_capacity() const noexcept { return static_cast<std::uint32_t>(vertices_.size() / 3); }
@@ -161,12 +147,6 @@ class Mesh2 {
   MeshData2 domain(std::vector<std::uint32_t>* vertex_ids = nullptr) const;
 
  private:
-  std::vector<Vec2> points_;
-  std::vector<Metric2> metrics_;
-  std::vector<std::uint8_t> vertex_flags_;
-  std::vector<std::uint32_t> vertex_triangle_;
-  std::vector<std::uint32_t> free_vertices_;
-
   std::vector<std::uint32_t> vertices_;    // 3 per triangle; vertices_[3t] == kNone: dead
   std::vector<std::uint32_t> neighbours_;  // 3 per triangle: twin half-edges
   std::vector<int> refs_;                  // 1 per triangle

@@ -83,11 +83,8 @@ Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_re
     throw InputError("Mesh3: " + std::to_string(tetrahedron_refs.size()) + " tetrahedron references for " +
                      std::to_string(nt) + " tetrahedra");
   }
-  points_.assign(tet.points().begin(), tet.points().end());
-  metrics_.assign(n, metric);
+  adopt_vertices(tet.points(), metric, vertex_tetrahedra(tet, Incident::First));
   anisotropic_slots_ = metric.is_scalar() ? 0 : n;
-  vertex_flags_.assign(n, kFixed);
-  vertex_tetrahedron_ = vertex_tetrahedra(tet, Incident::First);
   changed_at_.assign(n, 0);
   vertices_.resize(4 * nt);
   neighbours_.resize(4 * nt);
@@ -102,14 +99,6 @@ Mesh3::Mesh3(const Tetrahedralization3& tet, std::span<const int> tetrahedron_re
   facet_refs_.assign(vertices_.size(), kUnconstrained);
   for (std::uint32_t t = 0; t < nt; ++t)
     if (is_ghost(t)) refs_[t] = kExterior;
-  // Vertices no tetrahedron uses (duplicates of the input) are dead slots.
-  for (std::uint32_t v = 0; v < n; ++v) {
-    if (vertex_tetrahedron_[v] == kNone) {
-      vertex_flags_[v] = kDead;
-      free_vertices_.push_back(v);
-    }
-  }
-  std::reverse(free_vertices_.begin(), free_vertices_.end());
   if (constrained.empty()) return;
   std::unordered_map<std::array<std::uint32_t, 3>, std::uint32_t, TripleHash> by_facet;
   by_facet.reserve(constrained.size() * 2);
@@ -147,47 +136,17 @@ void Mesh3::constrain_triangle(std::uint32_t h, const MeshTriangle3& c) {
 
 std::uint32_t Mesh3::add_vertex(const Vec3& p, const Metric3& m, std::uint8_t flags) {
   DTLAB_ASSERT((flags & kDead) == 0);
-  if (!free_vertices_.empty()) {
-    const std::uint32_t v = free_vertices_.back();
-    free_vertices_.pop_back();
-    points_[v] = p;
-    replace_metric(v, m);
-    vertex_flags_[v] = flags;
-    vertex_tetrahedron_[v] = kNone;
-    touch(v);
-    return v;
-  }
-  DTLAB_ASSERT(points_.size() < Tetrahedralization3::kMaxPoints);
-  points_.push_back(p);
-  metrics_.push_back(m);
-  anisotropic_slots_ += !m.is_scalar();
-  vertex_flags_.push_back(flags);
-  vertex_tetrahedron_.push_back(kNone);
-  changed_at_.push_back(epoch_);
-  return static_cast<std::uint32_t>(points_.size() - 1);
-}
-
-void Mesh3::remove_vertex(std::uint32_t v) {
-  DTLAB_ASSERT(v < vertex_capacity() && !is_dead_vertex(v));
-  vertex_flags_[v] = kDead;
-  vertex_tetrahedron_[v] = kNone;
-  free_vertices_.push_back(v);
+  const std::uint32_t v = take_vertex_slot();
+  points_[v] = p;
+  replace_metric(v, m);
+  vertex_flags_[v] = flags;
+  touch(v);
+  return v;
 }
 
 std::uint32_t Mesh3::take_vertex_slot() {
-  std::uint32_t v;
-  if (!free_vertices_.empty()) {
-    v = free_vertices_.back();
-    free_vertices_.pop_back();
-  } else {
-    DTLAB_ASSERT(points_.size() < Tetrahedralization3::kMaxPoints);
-    v = static_cast<std::uint32_t>(points_.size());
-    points_.push_back({});
-    metrics_.push_back({});
-    vertex_flags_.push_back(kDead);
-    vertex_tetrahedron_.push_back(kNone);
-    changed_at_.push_back(epoch_);
-  }
+  const std::uint32_t v = take_slot(Tetrahedralization3::kMaxPoints);
+  if (v == changed_at_.size()) changed_at_.push_back(epoch_);  // a new slot
   replace_metric(v, Metric3{});
   vertex_flags_[v] = kDead;
   return v;
@@ -229,7 +188,7 @@ void Mesh3::fill_tetrahedron(std::uint32_t t, std::uint32_t a, std::uint32_t b, 
     neighbours_[4 * t + i] = kNone;
     facet_refs_[4 * t + i] = kUnconstrained;
     if (v[i] != kInfinite) {
-      vertex_tetrahedron_[v[i]] = t;
+      vertex_element_[v[i]] = t;
       touch(v[i]);
     }
   }
@@ -299,8 +258,8 @@ void Mesh3::renumber(std::span<const std::uint32_t> vertex_order, std::span<cons
       std::count_if(metrics_.begin(), metrics_.end(), [](const Metric3& m) { return !m.is_scalar(); }));
   permute(vertex_flags_, vertex_order);
   permute(changed_at_, vertex_order);
-  permute(vertex_tetrahedron_, vertex_order);
-  for (std::uint32_t& t : vertex_tetrahedron_) t = t == kNone ? kNone : tetrahedron_of_old[t];
+  permute(vertex_element_, vertex_order);
+  for (std::uint32_t& t : vertex_element_) t = t == kNone ? kNone : tetrahedron_of_old[t];
   free_vertices_.clear();
   permute(vertices_, tetrahedron_order, 4);
   for (std::uint32_t& v : vertices_) v = new_vertex(v);
@@ -334,7 +293,7 @@ void Mesh3::set_constrained_edge(std::uint32_t a, std::uint32_t b, bool constrai
 void Mesh3::ball(std::uint32_t v, std::vector<std::uint32_t>& out) const {
   out.clear();
   DTLAB_ASSERT(v < vertex_capacity() && !is_dead_vertex(v));
-  const std::uint32_t t0 = vertex_tetrahedron_[v];
+  const std::uint32_t t0 = vertex_element_[v];
   DTLAB_ASSERT(t0 != kNone && is_alive(t0));
   // Breadth first: the order depends only on the structure, so it is deterministic. Each slot
   // enters once, so the search ends; the bound is checked after it, out of the hot loop.
@@ -531,7 +490,7 @@ void Mesh3::check() const {
   }
   for (std::uint32_t v = 0; v < vertex_capacity(); ++v) {
     if (is_dead_vertex(v)) continue;
-    const std::uint32_t t = vertex_tetrahedron_[v];
+    const std::uint32_t t = vertex_element_[v];
     if (t == kNone || t >= nt || !is_alive(t) ||
         (vertices_[4 * t] != v && vertices_[4 * t + 1] != v && vertices_[4 * t + 2] != v && vertices_[4 * t + 3] != v))
       fail("vertex_tetrahedron of vertex " + std::to_string(v) + " is stale");
@@ -550,28 +509,15 @@ void Mesh3::check() const {
 }
 
 MeshData3 Mesh3::domain(std::vector<std::uint32_t>* vertex_ids) const {
-  MeshData3 out;
-  const std::vector<std::uint32_t> number = number_domain_vertices<4>(
-      std::span<const std::uint32_t>(vertices_), std::span<const Vec3>(points_),
-      [this](std::uint32_t t) { return in_domain(t); }, out.vertices, out.vertex_refs, vertex_ids);
-  const std::uint32_t nt = tetrahedron_capacity();
-  for (std::uint32_t t = 0; t < nt; ++t) {
-    if (!in_domain(t)) continue;
-    const auto v = tetrahedron(t);
-    out.tetrahedra.push_back({number[v[0]], number[v[1]], number[v[2]], number[v[3]]});
-    out.tetrahedron_refs.push_back(refs_[t]);
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      const std::uint32_t h = 4 * t + i;
-      if (!is_constrained(h)) continue;
-      const std::uint32_t u = tetrahedron_of(neighbours_[h]);
-      // Each facet once: from the domain side with the smaller slot.
-      if (in_domain(u) && u < t) continue;
-      const auto f = facet_vertices(h);
-      out.triangles.push_back({number[f[0]], number[f[1]], number[f[2]]});
-      out.triangle_refs.push_back(facet_refs_[h]);
-    }
-  }
-  return out;
+  // A facet as seen from the domain side with the smaller slot.
+  const auto emit_facet = [this](MeshData3& out, std::span<const std::uint32_t> number, std::uint32_t h) {
+    const auto f = facet_vertices(h);
+    out.triangles.push_back({number[f[0]], number[f[1]], number[f[2]]});
+    out.triangle_refs.push_back(facet_refs_[h]);
+  };
+  return mesh_domain<4, MeshData3>(*this, vertices_, neighbours_, refs_, &MeshData3::tetrahedra,
+                                   &MeshData3::tetrahedron_refs, vertex_ids,
+                                   [this](std::uint32_t h) { return is_constrained(h); }, emit_facet);
 }
 
 }  // namespace dtlab

@@ -31,6 +31,7 @@
 #include "kernel/metric.hpp"
 #include "kernel/vec.hpp"
 #include "mesh/io/mesh_data3.hpp"
+#include "mesh/mesh_vertices.hpp"
 #include "mesh/tetrahedralization3.hpp"
 
 namespace dtlab {
@@ -41,7 +42,7 @@ struct MeshTriangle3 {
   int ref = 0;
 };
 
-class Mesh3 {
+class Mesh3 : public MeshVertices<Vec3, Metric3> {
  public:
   static constexpr std::uint32_t kNone = Tetrahedralization3::kNone;
   static constexpr std::uint32_t kInfinite = Tetrahedralization3::kInfinite;
@@ -49,10 +50,7 @@ class Mesh3 {
   // The reference of a tetrahedron outside the domain (exterior, holes, ghosts).
   static constexpr int kExterior = std::numeric_limits<int>::min();
 
-  // Vertex flags (a bit set).
-  static constexpr std::uint8_t kFixed = 1;       // an input vertex or a recovery Steiner point: never moved or removed
-  static constexpr std::uint8_t kOnBoundary = 2;  // lies on a constrained facet or edge
-  static constexpr std::uint8_t kDead = 4;        // a free slot
+  // Vertex flags kFixed, kOnBoundary, kDead: mesh/mesh_vertices.hpp.
 
   Mesh3() = default;
   // From a closed tetrahedralization (ghosts included): `tetrahedron_refs` one per stored
@@ -68,15 +66,7 @@ class Mesh3 {
   static constexpr std::uint32_t index_in_tetrahedron(std::uint32_t h) noexcept { return h & 3u; }
   static constexpr std::uint32_t facet(std::uint32_t t, std::uint32_t i) noexcept { return 4 * t + i; }
 
-  // --- Vertices ----------------------------------------------------------------------------------
-  std::uint32_t vertex_capacity() const noexcept { return static_cast<std::uint32_t>(points_.size()); }
-  std::uint32_t live_vertex_count() const noexcept { return vertex_capacity() - static_cast<std::uint32_t>(free_vertices_.size()); }
-  const Vec3& point(std::uint32_t v) const noexcept { return points_[v]; }
-  std::span<const Vec3> points() const noexcept { return points_; }
-  const Metric3& metric(std::uint32_t v) const noexcept { return metrics_[v]; }
-  std::span<const Metric3> metrics() const noexcept { return metrics_; }
-  std::uint8_t flags(std::uint32_t v) const noexcept { return vertex_flags_[v]; }
-  bool is_dead_vertex(std::uint32_t v) const noexcept { return (vertex_flags_[v] & kDead) != 0; }
+  // --- Vertices (slots, points, metrics, flags, remove_vertex: mesh/mesh_vertices.hpp) ----------
   // Moving a vertex is the caller's responsibility for validity (check orientation first).
   void set_point(std::uint32_t v, const Vec3& p) noexcept {
     points_[v] = p;
@@ -89,14 +79,11 @@ class Mesh3 {
   // Whether every vertex slot's metric is scalar (lambda I): Q_K is then the Euclidean one, and
   // the optimizer's quality tests need not read the metrics.
   bool metrics_all_scalar() const noexcept { return anisotropic_slots_ == 0; }
-  void set_flags(std::uint32_t v, std::uint8_t f) noexcept { vertex_flags_[v] = f; }
   // One live tetrahedron incident to v (kNone for a dead vertex). Operators keep it current.
-  std::uint32_t vertex_tetrahedron(std::uint32_t v) const noexcept { return vertex_tetrahedron_[v]; }
-  void set_vertex_tetrahedron(std::uint32_t v, std::uint32_t t) noexcept { vertex_tetrahedron_[v] = t; }
+  std::uint32_t vertex_tetrahedron(std::uint32_t v) const noexcept { return vertex_element_[v]; }
+  void set_vertex_tetrahedron(std::uint32_t v, std::uint32_t t) noexcept { vertex_element_[v] = t; }
   // A new vertex (reusing a dead slot if any); no tetrahedron yet.
   std::uint32_t add_vertex(const Vec3& p, const Metric3& m, std::uint8_t flags = 0);
-  // Marks v dead and frees its slot; no live tetrahedron may still use it.
-  void remove_vertex(std::uint32_t v);
 
   // --- Tetrahedra --------------------------------------------------------------------------------
   std::uint32_t tetrahedron_capacity() const noexcept { return static_cast<std::uint32_t>(vertices_.size() / 4); }
@@ -146,7 +133,7 @@ class Mesh3 {
     points_[v] = p;
     metrics_[v] = m;
     vertex_flags_[v] = flags;
-    vertex_tetrahedron_[v] = kNone;
+    vertex_element_[v] = kNone;
     changed_at_[v] = epoch_;
   }
   void settle_vertex(std::uint32_t v) noexcept { anisotropic_slots_ += static_cast<std::uint64_t>(!metrics_[v].is_scalar()); }
@@ -267,12 +254,7 @@ class Mesh3 {
  private:
   static constexpr int kUnconstrained = std::numeric_limits<int>::max();
 
-  std::vector<Vec3> points_;
-  std::vector<Metric3> metrics_;
   std::uint64_t anisotropic_slots_ = 0;  // vertex slots (dead ones too) whose metric is not scalar
-  std::vector<std::uint8_t> vertex_flags_;
-  std::vector<std::uint32_t> vertex_tetrahedron_;
-  std::vector<std::uint32_t> free_vertices_;
   std::vector<std::uint64_t> changed_at_;  // per vertex: the epoch of its last change
   std::uint64_t epoch_ = 0;
   // k new dead slots at the end of the tetrahedron arrays; the first one's id.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "algorithms/common/uniform_size_box.hpp"
 #include "kernel/error.hpp"
 #include "mesh/mesh2_from_data.hpp"
 
@@ -47,15 +48,8 @@ ControlSpace2::ControlSpace2(Mesh2 background, std::vector<Metric2> metrics, Met
 }
 
 ControlSpace2 ControlSpace2::uniform_size(std::span<const Vec2> points, double h) {
-  if (!(h > 0.0) || !std::isfinite(h))
-    throw InputError("size: give a positive finite size H (the metric H^-2 I)");
-  if (points.empty()) throw InputError("a uniform size needs a domain: no points");
-  Vec2 lo = points.front(), hi = lo;
-  for (const Vec2& p : points) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-  }
-  return uniform(Metric2::isotropic(h), lo - Vec2{1, 1}, hi + Vec2{1, 1});
+  const auto [lo, hi] = uniform_size_box(points, h);
+  return uniform(Metric2::isotropic(h), lo, hi);
 }
 
 ControlSpace2 ControlSpace2::uniform(const Metric2& metric, const Vec2& lo, const Vec2& hi) {

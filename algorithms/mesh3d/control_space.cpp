@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "algorithms/common/uniform_size_box.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "mesh/navigation3.hpp"
@@ -96,15 +97,8 @@ bool ControlSpace3::contains(std::uint32_t t, const Vec3& p) const {
 }
 
 ControlSpace3 ControlSpace3::uniform_size(std::span<const Vec3> points, double h) {
-  if (!(h > 0.0) || !std::isfinite(h))
-    throw InputError("size: give a positive finite size H (the metric H^-2 I)");
-  if (points.empty()) throw InputError("a uniform size needs a domain: no points");
-  Vec3 lo = points.front(), hi = lo;
-  for (const Vec3& p : points) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return uniform(Metric3::isotropic(h), lo - Vec3{1, 1, 1}, hi + Vec3{1, 1, 1});
+  const auto [lo, hi] = uniform_size_box(points, h);
+  return uniform(Metric3::isotropic(h), lo, hi);
 }
 
 ControlSpace3 ControlSpace3::uniform(const Metric3& metric, const Vec3& lo, const Vec3& hi) {
