@@ -9,6 +9,7 @@ packages=(
   libcgal-dev                          # reference implementation, verify/ and bench/ only
   libbenchmark-dev libgtest-dev libgmock-dev librapidcheck-dev
   libtbb-dev libeigen3-dev libcli11-dev
+  libopenmpi-dev openmpi-bin           # dtlab-mpi (mpi/) and its mpirun tests
   tetgen                               # peer in bench/ (Debian binary)
   libcgal-demo                         # real scanned point clouds and surfaces for tests
   python3-meshio                       # reads what `dtlab convert` writes (cli_convert_read_by_meshio)

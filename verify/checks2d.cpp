@@ -1,5 +1,7 @@
 #include "verify/checks2d.hpp"
 
+#include "mesh/canonical_element.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <tuple>
@@ -479,10 +481,7 @@ CheckReport2 verify_delaunay2d(std::span<const Vec2> points, std::span<const Tri
 std::vector<TriangleIds> canonical_triangle_set(std::span<const TriangleIds> triangles) {
   std::vector<TriangleIds> out;
   out.reserve(triangles.size());
-  for (const TriangleIds& t : triangles) {
-    const std::size_t k = static_cast<std::size_t>(std::min_element(t.begin(), t.end()) - t.begin());
-    out.push_back({t[k], t[(k + 1) % 3], t[(k + 2) % 3]});
-  }
+  for (const TriangleIds& t : triangles) out.push_back(canonical_triangle(t));
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -1,5 +1,7 @@
 #include "verify/checks3d.hpp"
 
+#include "mesh/canonical_element.hpp"
+
 #include <gmp.h>
 
 #include <algorithm>
@@ -596,18 +598,7 @@ CheckReport3 verify_delaunay3d(std::span<const Vec3> points, const Tetrahedraliz
 std::vector<TetrahedronIds> canonical_tetrahedron_set(std::span<const TetrahedronIds> tetrahedra) {
   std::vector<TetrahedronIds> out;
   out.reserve(tetrahedra.size());
-  for (TetrahedronIds t : tetrahedra) {
-    // Even permutations moving the smallest id to position 0: double transpositions.
-    switch (std::min_element(t.begin(), t.end()) - t.begin()) {
-      case 1: t = {t[1], t[0], t[3], t[2]}; break;
-      case 2: t = {t[2], t[3], t[0], t[1]}; break;
-      case 3: t = {t[3], t[2], t[1], t[0]}; break;
-      default: break;
-    }
-    // A 3-cycle of the last three (even) until the smallest of them comes first.
-    while (t[1] > t[2] || t[1] > t[3]) t = {t[0], t[2], t[3], t[1]};
-    out.push_back(t);
-  }
+  for (const TetrahedronIds& t : tetrahedra) out.push_back(canonical_tetrahedron(t));
   std::sort(out.begin(), out.end());
   return out;
 }

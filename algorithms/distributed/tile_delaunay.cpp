@@ -10,6 +10,7 @@
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/perturbation.hpp"
+#include "mesh/canonical_element.hpp"
 
 namespace dtlab {
 namespace {
@@ -154,34 +155,170 @@ bool box_beyond(const TileBox<Vec3>& box, const std::array<Vec3, 4>& f) {
   return false;
 }
 
+// The half-space beyond a hull facet (outward normal n, offset n . f0), with a margin, for the
+// cell test of the Beyond answers: a box is kept when its farthest corner along n is on or beyond
+// the plane, less the margin; O(1) a box.
 template <class Vec>
-bool inside_ball(const Vec& p, const Vec& centre, double radius) {
-  return !std::isfinite(radius) || norm(p - centre) <= radius;
+struct Beyond {
+  Vec n;
+  double offset, margin;
+  bool meets(const Vec& lo, const Vec& hi) const {
+    const Vec centre = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    double reach = dot(n, centre) + std::abs(n.x) * half.x + std::abs(n.y) * half.y;
+    if constexpr (sizeof(Vec) == 3 * sizeof(double)) reach += std::abs(n.z) * half.z;
+    return reach >= offset - margin;
+  }
+};
+Beyond<Vec2> beyond_half_space(const std::array<Vec2, 3>& f, double extent) {
+  const Vec2 t = f[1] - f[0];
+  Vec2 n{t.y, -t.x};
+  if (dot(n, f[2] - f[0]) > 0) n = -1.0 * n;
+  return {n, dot(n, f[0]), 1e-9 * norm(n) * (norm(t) + extent) + 1e-300};
+}
+Beyond<Vec3> beyond_half_space(const std::array<Vec3, 4>& f, double extent) {
+  Vec3 n = cross(f[1] - f[0], f[2] - f[0]);
+  if (dot(n, f[3] - f[0]) > 0) n = -1.0 * n;
+  return {n, dot(n, f[0]), 1e-9 * norm(n) * (norm(f[1] - f[0]) + extent) + 1e-300};
+}
+
+constexpr std::uint32_t kNoPoint = 0xFFFFFFFFu;
+constexpr std::size_t kPerBall = 2;
+
+template <class Vec>
+constexpr int kDimOf = sizeof(Vec) / sizeof(double);
+template <class Vec>
+double coordinate(const Vec& p, int a) {
+  if constexpr (kDimOf<Vec> == 3) return a == 0 ? p.x : a == 1 ? p.y : p.z;
+  else return a == 0 ? p.x : p.y;
+}
+
+// A uniform grid over a tile's own points, about two points a cell, for the ball questions.
+template <class Vec>
+class PointGrid {
+ public:
+  static constexpr int kD = kDimOf<Vec>;
+  explicit PointGrid(std::span<const Vec> points) {
+    if (points.empty()) return;
+    for (int a = 0; a < kD; ++a) lo_[a] = hi_[a] = coordinate(points[0], a);
+    for (const Vec& p : points) {
+      for (int a = 0; a < kD; ++a) {
+        lo_[a] = std::min(lo_[a], coordinate(p, a));
+        hi_[a] = std::max(hi_[a], coordinate(p, a));
+      }
+    }
+    const double per_side = std::max(1.0, std::floor(std::pow(double(points.size()) / 2.0, 1.0 / kD)));
+    std::size_t cells = 1;
+    for (int a = 0; a < kD; ++a) {
+      n_[a] = hi_[a] > lo_[a] ? static_cast<std::uint32_t>(std::min(per_side, 1024.0)) : 1u;
+      scale_[a] = hi_[a] > lo_[a] ? n_[a] / (hi_[a] - lo_[a]) : 0.0;
+      cells *= n_[a];
+    }
+    start_.assign(cells + 1, 0);
+    std::vector<std::uint32_t> cell_of(points.size());
+    for (std::uint32_t i = 0; i < points.size(); ++i) ++start_[(cell_of[i] = cell(points[i])) + 1];
+    for (std::size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
+    ids_.resize(points.size());
+    std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+    for (std::uint32_t i = 0; i < points.size(); ++i) ids_[next[cell_of[i]]++] = i;
+  }
+  // Visits the cells that meet the box [lo, hi] ring by ring (Chebyshev distance in cells) around
+  // the cell of `centre`: point(i) for every point of a cell that cell_ok(cell_lo, cell_hi)
+  // accepts; after each ring, stops when done() says so. Bounded by the cells in the box.
+  template <class CellOk, class PointFn, class Done>
+  void visit_rings(const Vec& centre, const Vec& lo, const Vec& hi, CellOk cell_ok, PointFn point, Done done) const {
+    if (ids_.empty()) return;
+    std::array<std::int64_t, 3> first{}, last{}, c{};
+    for (int a = 0; a < kD; ++a) {
+      if (coordinate(hi, a) < lo_[a] || coordinate(lo, a) > hi_[a]) return;
+      first[a] = index(coordinate(lo, a), a);
+      last[a] = index(coordinate(hi, a), a);
+      c[a] = std::clamp<std::int64_t>(index(coordinate(centre, a), a), first[a], last[a]);
+    }
+    std::int64_t rings = 0;
+    for (int a = 0; a < kD; ++a) rings = std::max({rings, c[a] - first[a], last[a] - c[a]});
+    for (std::int64_t r = 0; r <= rings; ++r) {
+      const auto from = [&](int a) { return std::max(first[a], c[a] - r); };
+      const auto to = [&](int a) { return std::min(last[a], c[a] + r); };
+      const std::int64_t z0 = kD == 3 ? from(2) : 0, z1 = kD == 3 ? to(2) : 0;
+      for (std::int64_t z = z0; z <= z1; ++z) {
+        const bool z_on_ring = kD == 3 && std::abs(z - c[2]) == r;
+        for (std::int64_t y = from(1); y <= to(1); ++y) {
+          const bool whole_row = z_on_ring || std::abs(y - c[1]) == r;
+          if (whole_row || r == 0) {
+            for (std::int64_t x = from(0); x <= to(0); ++x) visit_cell({x, y, z}, cell_ok, point);
+          } else {  // only the row's two ends are on the ring
+            if (c[0] - r >= first[0]) visit_cell({c[0] - r, y, z}, cell_ok, point);
+            if (c[0] + r <= last[0]) visit_cell({c[0] + r, y, z}, cell_ok, point);
+          }
+        }
+      }
+      if (done()) return;
+    }
+  }
+
+ private:
+  template <class CellOk, class PointFn>
+  void visit_cell(const std::array<std::int64_t, 3>& k, CellOk& cell_ok, PointFn& point) const {
+    Vec cell_lo{}, cell_hi{};
+    for (int a = 0; a < kD; ++a) {
+      const double l = scale_[a] > 0 ? lo_[a] + static_cast<double>(k[a]) / scale_[a] : lo_[a];
+      const double h = scale_[a] > 0 ? lo_[a] + static_cast<double>(k[a] + 1) / scale_[a] : hi_[a];
+      set_coordinate(cell_lo, a, l);
+      set_coordinate(cell_hi, a, h);
+    }
+    if (!cell_ok(cell_lo, cell_hi)) return;
+    const std::size_t cell = (static_cast<std::size_t>(k[2]) * n_[1] + static_cast<std::size_t>(k[1])) * n_[0] +
+                             static_cast<std::size_t>(k[0]);
+    for (std::uint32_t j = start_[cell]; j < start_[cell + 1]; ++j) point(ids_[j]);
+  }
+  static void set_coordinate(Vec& p, int a, double v) {
+    if (a == 0) p.x = v;
+    else if (a == 1) p.y = v;
+    else if constexpr (kD == 3) p.z = v;
+  }
+  std::uint32_t index(double v, int a) const {
+    const double t = std::floor((v - lo_[a]) * scale_[a]);
+    return t <= 0 ? 0u : t >= n_[a] - 1 ? n_[a] - 1 : static_cast<std::uint32_t>(t);
+  }
+  std::uint32_t cell(const Vec& p) const {
+    std::uint32_t c = 0;
+    for (int a = kD - 1; a >= 0; --a) c = c * n_[a] + index(coordinate(p, a), a);
+    return c;
+  }
+  std::array<double, 3> lo_{}, hi_{}, scale_{};
+  std::array<std::uint32_t, 3> n_{1, 1, 1};
+  std::vector<std::uint32_t> start_, ids_;
+};
+
+// Among points beyond a hull facet, the one a Delaunay element on the facet's outer side would
+// take (gift wrapping, Edelsbrunner's "Delaunay neighbour"): the spheres through the facet have
+// their centres on the line c0 + t n (n outward); the first point met as t grows has the lowest
+// t = (|p - c0|^2 - R0^2) / (2 (p - c0) . n). In doubles: a choice, not a decision (any point
+// beyond keeps the rounds correct; this one keeps them few). Points on the facet's plane rank last.
+double wrap_parameter(const std::array<Vec2, 3>& f, const Vec2& p) {
+  const Vec2 c0 = 0.5 * (f[0] + f[1]);
+  const Vec2 t = f[1] - f[0];
+  Vec2 n{t.y, -t.x};
+  if (dot(n, f[2] - f[0]) > 0) n = -1.0 * n;
+  const double h = 2.0 * dot(p - c0, n);
+  if (!(h > 0)) return std::numeric_limits<double>::infinity();
+  return (dot(p - c0, p - c0) - dot(f[0] - c0, f[0] - c0)) / h;
+}
+double wrap_parameter(const std::array<Vec3, 4>& f, const Vec3& p) {
+  const Vec3 b = f[1] - f[0], c = f[2] - f[0];
+  Vec3 n = cross(b, c);
+  const double nn = dot(n, n);
+  const Vec3 c0 = f[0] + (1.0 / (2.0 * nn)) * (dot(b, b) * cross(c, n) + dot(c, c) * cross(n, b));
+  if (dot(n, f[3] - f[0]) > 0) n = -1.0 * n;
+  const double h = 2.0 * dot(p - c0, n);
+  if (!(h > 0)) return std::numeric_limits<double>::infinity();
+  return (dot(p - c0, p - c0) - dot(f[0] - c0, f[0] - c0)) / h;
 }
 
 }  // namespace
 
-template <std::size_t K>
-std::array<std::uint32_t, K> canonical_element(std::array<std::uint32_t, K> e) {
-  const auto m = static_cast<std::size_t>(std::min_element(e.begin(), e.end()) - e.begin());
-  if constexpr (K == 3) {
-    std::rotate(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(m), e.end());
-  } else {
-    static_assert(K == 4);
-    // Bring the lowest to the front by one swap, and keep the parity by a second among the rest.
-    if (m != 0) {
-      std::swap(e[0], e[m]);
-      const std::size_t a = m == 1 ? 2 : 1, b = m == 3 ? 2 : 3;
-      std::swap(e[a], e[b]);
-    }
-    // Rotate the other three (an even permutation) so that the lowest of them comes second.
-    const auto k = static_cast<std::size_t>(std::min_element(e.begin() + 1, e.end()) - e.begin());
-    std::rotate(e.begin() + 1, e.begin() + static_cast<std::ptrdiff_t>(k), e.end());
-  }
-  return e;
-}
-template std::array<std::uint32_t, 3> canonical_element(std::array<std::uint32_t, 3>);
-template std::array<std::uint32_t, 4> canonical_element(std::array<std::uint32_t, 4>);
+std::array<std::uint32_t, 3> canonical_element(const std::array<std::uint32_t, 3>& e) { return canonical_triangle(e); }
+std::array<std::uint32_t, 4> canonical_element(const std::array<std::uint32_t, 4>& e) { return canonical_tetrahedron(e); }
 
 template <int kDim>
 TileDelaunay<kDim>::TileDelaunay(std::uint32_t tile, std::vector<TileBox<Vec>> boxes, std::vector<std::uint32_t> own_ids,
@@ -192,6 +329,7 @@ TileDelaunay<kDim>::TileDelaunay(std::uint32_t tile, std::vector<TileBox<Vec>> b
   if (own_ids_.size() != own_points_.size()) throw InputError("TileDelaunay: ids and points differ in number");
   if (!std::is_sorted(own_ids_.begin(), own_ids_.end())) throw InputError("TileDelaunay: own ids not ascending");
   sent_.assign(boxes_.size(), std::vector<std::uint8_t>(own_ids_.size(), 0));
+  answered_empty_.resize(boxes_.size());
 }
 
 template <int kDim>
@@ -254,25 +392,84 @@ template <int kDim>
 auto TileDelaunay<kDim>::answer(const std::vector<std::vector<Question>>& questions) -> std::vector<std::vector<Ghost>> {
   if (questions.size() != boxes_.size()) throw InputError("TileDelaunay::answer: one list per tile expected");
   std::vector<std::vector<Ghost>> out(boxes_.size());
+  const PointGrid<Vec> grid{std::span<const Vec>(own_points_)};
+  const TileBox<Vec>& own_box = boxes_[tile_];
+  std::vector<std::pair<double, std::uint32_t>> nearest;
   for (std::uint32_t s = 0; s < questions.size(); ++s) {
     std::vector<std::uint8_t>& sent = sent_[s];
+    const auto send = [&](std::uint32_t i) {
+      sent[i] = 1;
+      out[s].push_back(Ghost{own_ids_[i], tile_, own_points_[i]});
+      ++counts_.ghosts_sent;
+    };
+    std::unordered_set<std::string>& empty = answered_empty_[s];
     for (const Question& q : questions[s]) {
-      const auto ball = q.kind == Question::Ball ? safe_ball(q.points) : decltype(safe_ball(q.points)){};
-      for (std::uint32_t i = 0; i < own_points_.size(); ++i) {
-        if (sent[i]) continue;
-        const Vec& p = own_points_[i];
-        bool send = false;
-        switch (q.kind) {
-          case Question::Ball: send = inside_ball(p, ball.centre, ball.radius) && in_conflict(q.points, p); break;
-          case Question::Beyond: send = beyond(q.points, p); break;
-          case Question::Everything: send = true; break;
-          default: throw InputError("TileDelaunay::answer: unknown question kind " + std::to_string(q.kind));
+      std::string key(reinterpret_cast<const char*>(&q), sizeof(Question));
+      if (empty.count(key) != 0) continue;
+      const std::size_t sent_before = out[s].size();
+      switch (q.kind) {
+        case Question::Ball: {
+          // The conflicting points nearest the element, at most kPerBall of them, found ring by
+          // ring around its centroid: a large ball (an element on the hull of what the asker
+          // knows) holds many points of which only those near the element become its
+          // neighbours; the next round's smaller balls ask for what is still missing.
+          const auto ball = safe_ball(q.points);
+          Vec centroid = q.points[0];
+          for (int k = 1; k <= kDim; ++k) centroid = centroid + q.points[k];
+          centroid = (1.0 / (kDim + 1)) * centroid;
+          nearest.clear();
+          const bool bounded = std::isfinite(ball.radius);
+          Vec lo = own_box.lo, hi = own_box.hi;
+          if (bounded) {
+            lo = ball.centre, hi = ball.centre;
+            lo.x -= ball.radius, hi.x += ball.radius;
+            lo.y -= ball.radius, hi.y += ball.radius;
+            if constexpr (kDim == 3) lo.z -= ball.radius, hi.z += ball.radius;
+          }
+          grid.visit_rings(
+              centroid, lo, hi,
+              [&](const Vec& l, const Vec& h) {
+                return !bounded || ball_meets(ball, TileBox<Vec>{l, h, false});
+              },
+              [&](std::uint32_t i) {
+                if (!sent[i] && in_conflict(q.points, own_points_[i]))
+                  nearest.push_back({norm(own_points_[i] - centroid), i});
+              },
+              [&] { return nearest.size() >= kPerBall; });
+          const std::size_t keep = std::min<std::size_t>(nearest.size(), kPerBall);
+          std::partial_sort(nearest.begin(), nearest.begin() + static_cast<std::ptrdiff_t>(keep), nearest.end());
+          for (std::size_t k = 0; k < keep; ++k) send(nearest[k].second);
+          break;
         }
-        if (!send) continue;
-        sent[i] = 1;
-        out[s].push_back(Ghost{own_ids_[i], tile_, p});
-        ++counts_.ghosts_sent;
+        case Question::Beyond: {
+          // One point a question, found ring by ring from the facet: the facet's likely Delaunay
+          // neighbour among the first points beyond; the next round's balls bring the rest.
+          std::uint32_t best = kNoPoint;
+          double best_t = 0.0;
+          Vec centre = q.points[0];
+          for (int k = 1; k < kDim; ++k) centre = centre + q.points[k];
+          centre = (1.0 / kDim) * centre;
+          int rings_after = -1;
+          const auto half_space = beyond_half_space(q.points, norm(own_box.hi - own_box.lo) + norm(centre - own_box.lo));
+          grid.visit_rings(
+              centre, own_box.lo, own_box.hi,
+              [&](const Vec& l, const Vec& h) { return half_space.meets(l, h); },
+              [&](std::uint32_t i) {
+                if (sent[i] || !beyond(q.points, own_points_[i])) return;
+                const double t = wrap_parameter(q.points, own_points_[i]);
+                if (best == kNoPoint || t < best_t) best = i, best_t = t;
+              },
+              [&] { return best != kNoPoint && ++rings_after >= 1; });
+          if (best != kNoPoint) send(best);
+          break;
+        }
+        case Question::Everything:
+          for (std::uint32_t i = 0; i < own_points_.size(); ++i)
+            if (!sent[i]) send(i);
+          break;
+        default: throw InputError("TileDelaunay::answer: unknown question kind " + std::to_string(q.kind));
       }
+      if (out[s].size() == sent_before) empty.insert(std::move(key));
     }
   }
   return out;

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "algorithms/distributed/kd_tiles.hpp"
@@ -51,8 +52,8 @@ class TileDelaunay {
 
   // What a tile asks another: the points in conflict with an element.
   struct Question {
-    enum Kind : std::uint32_t { Ball = 0, Beyond = 1, Everything = 2 };
-    std::uint32_t kind = Ball;
+    enum Kind : std::uint64_t { Ball = 0, Beyond = 1, Everything = 2 };  // 64 bits: no padding (questions are compared as bytes)
+    std::uint64_t kind = Ball;
     // Ball: the element's vertices (positively oriented). Beyond: a hull facet's kDim vertices,
     // then the element's other vertex (the side that is not beyond).
     std::array<Vec, kDim + 1> points{};
@@ -63,6 +64,8 @@ class TileDelaunay {
     std::uint32_t tile = 0;
     Vec point{};
   };
+
+  static_assert(sizeof(Question) == 8 + (kDim + 1) * sizeof(Vec), "no padding in a question");
 
   struct Counts {
     std::uint64_t rounds = 0;
@@ -98,6 +101,10 @@ class TileDelaunay {
   std::vector<Vec> own_points_;
   std::vector<Ghost> ghosts_;                    // received, any order
   std::vector<std::vector<std::uint8_t>> sent_;  // [tile][own index]: sent to that tile
+  // [tile]: the questions (their bytes) that tile asked and got nothing for. The answer stays
+  // nothing (own points are fixed, what was sent only grows): a question asked again in a later
+  // round, as most are, is not searched again.
+  std::vector<std::unordered_set<std::string>> answered_empty_;
   // The last triangulation: its points' global ids and tiles, its elements in local indices.
   std::vector<std::uint32_t> local_ids_, local_tiles_;
   std::vector<Element> local_elements_;
@@ -105,9 +112,9 @@ class TileDelaunay {
   Counts counts_;
 };
 
-// An element turned so that its lowest id comes first, with the same orientation (2D: a
-// rotation; 3D: an even permutation).
-template <std::size_t K>
-std::array<std::uint32_t, K> canonical_element(std::array<std::uint32_t, K> e);
+// An element turned so that its lowest id comes first, with the same orientation
+// (mesh/canonical_element.hpp).
+std::array<std::uint32_t, 3> canonical_element(const std::array<std::uint32_t, 3>& e);
+std::array<std::uint32_t, 4> canonical_element(const std::array<std::uint32_t, 4>& e);
 
 }  // namespace dtlab
