@@ -1,0 +1,262 @@
+// DynamicDelaunay2 (algorithms/delaunay2d/dynamic_delaunay2.hpp): after any sequence of
+// insertions, removals and moves, the finite triangles equal, as a canonical set of point
+// tuples, those of delaunay2d() run from scratch on the survivors, for every registered variant
+// (the registry is looped, so a new variant is checked without editing this file), on random
+// and on degenerate generators (grids, exact circles, collinear runs). Bad input gets its named
+// error. DTLAB_LONG=1 runs more and larger cases.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "algorithms/delaunay2d/delaunay2d.hpp"
+#include "algorithms/delaunay2d/dynamic_delaunay2.hpp"
+#include "algorithms/delaunay2d/registry.hpp"
+#include "verify/generators/points2d.hpp"
+
+namespace dtlab {
+namespace {
+
+using Tri = std::array<Vec2, 3>;
+
+bool long_runs() {
+  const char* v = std::getenv("DTLAB_LONG");
+  return v != nullptr && std::string(v) == "1";
+}
+
+// Uniform whatever rapidcheck's current size (inRange scales its range with the size).
+int int_in(int lo, int hi) { return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi + 1)); }
+
+bool lex_less(const Vec2& a, const Vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+
+// A triangle as its points, rotated (orientation kept) so that the lexicographically smallest
+// comes first: a key independent of vertex numbering.
+Tri canonical(const Vec2& a, const Vec2& b, const Vec2& c) {
+  if (lex_less(b, a) && lex_less(b, c)) return {b, c, a};
+  if (lex_less(c, a) && lex_less(c, b)) return {c, a, b};
+  return {a, b, c};
+}
+bool tri_less(const Tri& s, const Tri& t) {
+  for (int k = 0; k < 3; ++k) {
+    if (lex_less(s[k], t[k])) return true;
+    if (lex_less(t[k], s[k])) return false;
+  }
+  return false;
+}
+
+std::vector<Tri> canonical_set(const DynamicDelaunay2& d) {
+  std::vector<Tri> out;
+  for (const auto& [a, b, c] : d.finite_triangles())
+    out.push_back(canonical(d.mesh().point(a), d.mesh().point(b), d.mesh().point(c)));
+  std::sort(out.begin(), out.end(), tri_less);
+  return out;
+}
+
+std::vector<Tri> from_scratch(const std::vector<Vec2>& points, const std::string& variant, bool* degenerate) {
+  const Delaunay2dResult r = delaunay2d(points, {.algorithm = variant});
+  *degenerate = !r.degenerate_message.empty();
+  std::vector<Tri> out;
+  for (const auto& [a, b, c] : r.triangulation.finite_triangles())
+    out.push_back(canonical(points[a], points[b], points[c]));
+  std::sort(out.begin(), out.end(), tri_less);
+  return out;
+}
+
+// The survivors, from the triangulation's own live vertices.
+std::vector<Vec2> survivors(const DynamicDelaunay2& d) {
+  std::vector<Vec2> out;
+  for (std::uint32_t v = 0; v < d.mesh().vertex_capacity(); ++v)
+    if (d.contains(v)) out.push_back(d.mesh().point(v));
+  return out;
+}
+
+// "" or what differs from the from-scratch triangulation of every registered variant.
+std::string compare_with_every_variant(const DynamicDelaunay2& d) {
+  d.mesh().check();
+  const std::vector<Tri> mine = canonical_set(d);
+  const std::vector<Vec2> points = survivors(d);
+  for (const Delaunay2dVariant& variant : delaunay2d_variants()) {
+    bool degenerate = false;
+    const std::vector<Tri> ref = from_scratch(points, std::string(variant.name), &degenerate);
+    if (degenerate) return "survivors degenerate for " + std::string(variant.name);
+    if (mine != ref)
+      return std::to_string(mine.size()) + " triangles against " + std::to_string(ref.size()) + " from scratch by " +
+             std::string(variant.name) + " on " + std::to_string(points.size()) + " points";
+  }
+  return "";
+}
+
+// The degenerate and random generators the sequences draw their points from.
+const std::vector<std::string>& distributions() {
+  static const std::vector<std::string> names{"uniform", "grid", "exact_circle", "collinear", "clustered", "duplicates"};
+  return names;
+}
+
+// A pool of distinct points of `distribution` (duplicates dropped), in generator order.
+std::vector<Vec2> pool(const std::string& distribution, std::size_t n, std::uint64_t seed) {
+  std::vector<Vec2> raw = generate_points2d(distribution, n, seed), out;
+  std::vector<Vec2> seen;
+  for (const Vec2& p : raw) {
+    if (std::find(seen.begin(), seen.end(), p) != seen.end()) continue;
+    seen.push_back(p);
+    out.push_back(p);
+  }
+  return out;
+}
+
+// One random sequence: start from the first `initial` points of the pool, then `steps` random
+// insertions (of pool points, alive or not), removals and moves, each checked against every
+// variant. Errors are accepted only where they are due, and must leave the triangulation as it was.
+void run_sequence(const std::string& distribution, std::size_t n, std::size_t initial, std::size_t steps,
+                  std::uint64_t seed) {
+  const std::vector<Vec2> points = pool(distribution, n, seed);
+  RC_PRE(points.size() >= 3);
+  initial = std::clamp<std::size_t>(initial, 3, points.size());
+  const std::vector<Vec2> start(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(initial));
+  bool degenerate = false;
+  (void)from_scratch(start, "incremental", &degenerate);
+  if (degenerate) {
+    RC_ASSERT_THROWS_AS(DynamicDelaunay2{start}, DegenerateRemovalError);
+    return;
+  }
+  DynamicDelaunay2 d(start);
+  RC_ASSERT(compare_with_every_variant(d) == "");
+  std::mt19937_64 rng(seed);
+  for (std::size_t step = 0; step < steps; ++step) {
+    const int op = static_cast<int>(rng() % 3);
+    const Vec2 p = points[rng() % points.size()];
+    std::vector<std::uint32_t> live;
+    for (std::uint32_t v = 0; v < d.mesh().vertex_capacity(); ++v)
+      if (d.contains(v)) live.push_back(v);
+    const std::uint32_t v = live[rng() % live.size()];
+    const bool p_alive = std::any_of(live.begin(), live.end(), [&](std::uint32_t u) { return d.mesh().point(u) == p; });
+    const std::vector<Tri> before = canonical_set(d);
+    if (op == 0) {
+      if (p_alive) {
+        RC_ASSERT_THROWS_AS(d.insert(p), DuplicatePointError);
+        RC_ASSERT(canonical_set(d) == before);
+      } else {
+        const std::uint32_t id = d.insert(p);
+        RC_ASSERT(d.contains(id) && d.mesh().point(id) == p);
+      }
+    } else {
+      std::vector<Vec2> rest;
+      for (const std::uint32_t u : live)
+        if (u != v) rest.push_back(d.mesh().point(u));
+      bool rest_degenerate = rest.size() < 3;
+      if (!rest_degenerate) (void)from_scratch(rest, "incremental", &rest_degenerate);
+      const bool duplicate = op == 2 && p_alive && d.mesh().point(v) != p;
+      if (duplicate) {
+        RC_ASSERT_THROWS_AS(d.move(v, p), DuplicatePointError);
+      } else if (rest_degenerate && !(op == 2 && d.mesh().point(v) == p)) {
+        if (op == 1) RC_ASSERT_THROWS_AS(d.remove(v), DegenerateRemovalError);
+        else RC_ASSERT_THROWS_AS(d.move(v, p), DegenerateRemovalError);
+      } else if (op == 1) {
+        d.remove(v);
+        RC_ASSERT(!d.contains(v) || d.mesh().point(v) != d.mesh().point(v));
+      } else {
+        const std::uint32_t id = d.move(v, p);
+        RC_ASSERT(d.contains(id) && d.mesh().point(id) == p);
+      }
+      if (duplicate || (rest_degenerate && !(op == 2 && d.mesh().point(v) == p))) RC_ASSERT(canonical_set(d) == before);
+    }
+    const std::string difference = compare_with_every_variant(d);
+    RC_ASSERT(difference == "");
+  }
+}
+
+RC_GTEST_PROP(DynamicDelaunay2, AnySequenceEqualsFromScratch, ()) {
+  const std::string distribution = *rc::gen::elementOf(distributions());
+  const int big = long_runs() ? 400 : 120;
+  const auto n = static_cast<std::size_t>(int_in(3, big));
+  const auto initial = static_cast<std::size_t>(int_in(3, big));
+  const auto steps = static_cast<std::size_t>(int_in(1, long_runs() ? 200 : 40));
+  const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
+  RC_TAG(distribution);
+  run_sequence(distribution, n, initial, steps, seed);
+}
+
+// Every interior and hull vertex of a cocircular grid removed in turn, checked after each
+// removal: the case where the perturbation decides every ear.
+TEST(DynamicDelaunay2, GridRemovedToTheEnd) {
+  const std::size_t side = long_runs() ? 30 : 12;
+  std::vector<Vec2> grid;
+  for (std::size_t i = 0; i < side; ++i)
+    for (std::size_t j = 0; j < side; ++j) grid.push_back({static_cast<double>(i), static_cast<double>(j)});
+  DynamicDelaunay2 d(grid);
+  std::vector<std::uint32_t> order(grid.size());
+  for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(7));
+  std::size_t removed = 0, refused = 0;
+  for (const std::uint32_t v : order) {
+    try {
+      d.remove(v);
+      ++removed;
+    } catch (const DegenerateRemovalError&) {
+      ++refused;
+    }
+    ASSERT_EQ(compare_with_every_variant(d), "") << "after removing vertex " << v;
+  }
+  EXPECT_EQ(d.vertex_count(), grid.size() - removed);
+  EXPECT_GE(refused, 1u);  // the last three points are never all removed
+}
+
+// Insert then remove every point of an exact circle around its centre, and the centre itself.
+TEST(DynamicDelaunay2, InsertThenRemoveOnACircle) {
+  const std::vector<Vec2> circle = generate_points2d("exact_circle", 64, 3);
+  DynamicDelaunay2 d(circle);
+  const std::vector<Tri> without = canonical_set(d);
+  const std::uint32_t centre = d.insert({0.0, 0.0});
+  EXPECT_EQ(compare_with_every_variant(d), "");
+  d.remove(centre);
+  EXPECT_EQ(canonical_set(d), without);
+  for (std::uint32_t v = 0; v < 40; ++v) {
+    const Vec2 p = d.mesh().point(v);
+    const std::vector<Tri> before = canonical_set(d);
+    d.remove(v);
+    EXPECT_EQ(compare_with_every_variant(d), "");
+    const std::uint32_t back = d.insert(p);
+    EXPECT_EQ(canonical_set(d), before) << "vertex " << v << " back as " << back;
+  }
+}
+
+TEST(DynamicDelaunay2, BadInputGetsNamedErrors) {
+  const std::vector<Vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  DynamicDelaunay2 d(square);
+  EXPECT_THROW(d.remove(9), UnknownVertexError);
+  try {
+    d.insert({1, 1});
+    ADD_FAILURE() << "duplicate accepted";
+  } catch (const DuplicatePointError& e) {
+    EXPECT_EQ(e.items(), std::vector<std::uint64_t>{2});
+  }
+  EXPECT_THROW(d.move(0, {1, 0}), DuplicatePointError);
+  d.remove(3);
+  EXPECT_THROW(d.remove(3), UnknownVertexError);  // twice
+  try {
+    d.remove(0);  // would leave two points
+    ADD_FAILURE() << "removal to two points accepted";
+  } catch (const DegenerateRemovalError& e) {
+    EXPECT_EQ(e.items(), std::vector<std::uint64_t>{0});
+  }
+  EXPECT_EQ(d.finite_triangle_count(), 1u);
+  // Three collinear survivors: refused too.
+  DynamicDelaunay2 line(std::vector<Vec2>{{0, 0}, {1, 0}, {2, 0}, {1, 5}});
+  EXPECT_THROW(line.remove(3), DegenerateRemovalError);
+  EXPECT_EQ(compare_with_every_variant(line), "");
+  EXPECT_THROW(DynamicDelaunay2(std::vector<Vec2>{{0, 0}, {1, 0}, {2, 0}}), DegenerateRemovalError);
+  EXPECT_THROW(DynamicDelaunay2(std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}, {1, 0}}), DuplicatePointError);
+  EXPECT_THROW(d.insert({std::numeric_limits<double>::quiet_NaN(), 0}), InputError);
+}
+
+}  // namespace
+}  // namespace dtlab
