@@ -1,0 +1,276 @@
+// DynamicDelaunay3 (algorithms/delaunay3d/dynamic_delaunay3.hpp): after any sequence of
+// insertions, removals and moves, the finite tetrahedra equal, as a canonical set of point
+// tuples, those of delaunay3d() run from scratch on the survivors, for every registered variant
+// (the registry is looped), on random and on degenerate generators (grids, exact spheres,
+// coplanar and collinear sets). Bad input gets its named error. DTLAB_LONG=1 runs more and
+// larger cases.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "algorithms/delaunay3d/delaunay3d.hpp"
+#include "algorithms/delaunay3d/dynamic_delaunay3.hpp"
+#include "algorithms/delaunay3d/registry.hpp"
+#include "verify/generators/points3d.hpp"
+
+namespace dtlab {
+namespace {
+
+using Tet = std::array<Vec3, 4>;
+
+bool long_runs() {
+  const char* v = std::getenv("DTLAB_LONG");
+  return v != nullptr && std::string(v) == "1";
+}
+
+int int_in(int lo, int hi) { return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi + 1)); }
+
+bool lex_less(const Vec3& a, const Vec3& b) {
+  return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
+}
+
+// A tetrahedron as its points, permuted evenly (orientation kept) so that the lexicographically
+// smallest comes first and the other three start with their smallest: a key independent of
+// vertex numbering.
+Tet canonical(Tet t) {
+  std::size_t m = 0;
+  for (std::size_t k = 1; k < 4; ++k)
+    if (lex_less(t[k], t[m])) m = k;
+  if (m == 1) t = {t[1], t[0], t[3], t[2]};
+  if (m == 2) t = {t[2], t[3], t[0], t[1]};
+  if (m == 3) t = {t[3], t[2], t[1], t[0]};
+  // Rotate the last three cyclically (an even permutation).
+  while (lex_less(t[2], t[1]) || lex_less(t[3], t[1])) t = {t[0], t[2], t[3], t[1]};
+  return t;
+}
+bool tet_less(const Tet& s, const Tet& t) {
+  for (int k = 0; k < 4; ++k) {
+    if (lex_less(s[k], t[k])) return true;
+    if (lex_less(t[k], s[k])) return false;
+  }
+  return false;
+}
+
+std::vector<Tet> canonical_set(const DynamicDelaunay3& d) {
+  std::vector<Tet> out;
+  for (const auto& q : d.finite_tetrahedra())
+    out.push_back(canonical({d.mesh().point(q[0]), d.mesh().point(q[1]), d.mesh().point(q[2]), d.mesh().point(q[3])}));
+  std::sort(out.begin(), out.end(), tet_less);
+  return out;
+}
+
+std::vector<Tet> from_scratch(const std::vector<Vec3>& points, const std::string& variant, bool* degenerate) {
+  const Delaunay3dResult r = delaunay3d(points, {.algorithm = variant});
+  *degenerate = !r.degenerate_message.empty();
+  std::vector<Tet> out;
+  for (const auto& q : r.tetrahedralization.finite_tetrahedra())
+    out.push_back(canonical({points[q[0]], points[q[1]], points[q[2]], points[q[3]]}));
+  std::sort(out.begin(), out.end(), tet_less);
+  return out;
+}
+
+std::vector<Vec3> survivors(const DynamicDelaunay3& d) {
+  std::vector<Vec3> out;
+  for (std::uint32_t v = 0; v < d.mesh().vertex_capacity(); ++v)
+    if (d.contains(v)) out.push_back(d.mesh().point(v));
+  return out;
+}
+
+// "" or what differs from the from-scratch tetrahedralization of every registered variant.
+std::string compare_with_every_variant(const DynamicDelaunay3& d) {
+  d.mesh().check();
+  const std::vector<Tet> mine = canonical_set(d);
+  const std::vector<Vec3> points = survivors(d);
+  for (const Delaunay3dVariant& variant : delaunay3d_variants()) {
+    bool degenerate = false;
+    const std::vector<Tet> ref = from_scratch(points, std::string(variant.name), &degenerate);
+    if (degenerate) return "survivors degenerate for " + std::string(variant.name);
+    if (mine != ref)
+      return std::to_string(mine.size()) + " tetrahedra against " + std::to_string(ref.size()) + " from scratch by " +
+             std::string(variant.name) + " on " + std::to_string(points.size()) + " points";
+  }
+  return "";
+}
+
+const std::vector<std::string>& distributions() {
+  static const std::vector<std::string> names{"uniform", "grid", "exact_sphere", "coplanar", "collinear", "duplicates"};
+  return names;
+}
+
+std::vector<Vec3> pool(const std::string& distribution, std::size_t n, std::uint64_t seed) {
+  std::vector<Vec3> out;
+  for (const Vec3& p : generate_points3d(distribution, n, seed))
+    if (std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
+  return out;
+}
+
+// As in dynamic_delaunay2_test.cpp: a random sequence from the pool, each step checked against
+// every variant; errors only where due, leaving the structure as it was.
+void run_sequence(const std::string& distribution, std::size_t n, std::size_t initial, std::size_t steps,
+                  std::uint64_t seed) {
+  const std::vector<Vec3> points = pool(distribution, n, seed);
+  RC_PRE(points.size() >= 4);
+  initial = std::clamp<std::size_t>(initial, 4, points.size());
+  const std::vector<Vec3> start(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(initial));
+  bool degenerate = false;
+  (void)from_scratch(start, "incremental", &degenerate);
+  if (degenerate) {
+    RC_ASSERT_THROWS_AS(DynamicDelaunay3{start}, DegenerateRemovalError);
+    return;
+  }
+  DynamicDelaunay3 d(start);
+  RC_ASSERT(compare_with_every_variant(d) == "");
+  std::mt19937_64 rng(seed);
+  for (std::size_t step = 0; step < steps; ++step) {
+    const int op = static_cast<int>(rng() % 3);
+    const Vec3 p = points[rng() % points.size()];
+    std::vector<std::uint32_t> live;
+    for (std::uint32_t v = 0; v < d.mesh().vertex_capacity(); ++v)
+      if (d.contains(v)) live.push_back(v);
+    const std::uint32_t v = live[rng() % live.size()];
+    const bool p_alive = std::any_of(live.begin(), live.end(), [&](std::uint32_t u) { return d.mesh().point(u) == p; });
+    const std::vector<Tet> before = canonical_set(d);
+    if (op == 0) {
+      if (p_alive) {
+        RC_ASSERT_THROWS_AS(d.insert(p), DuplicatePointError);
+        RC_ASSERT(canonical_set(d) == before);
+      } else {
+        const std::uint32_t id = d.insert(p);
+        RC_ASSERT(d.contains(id) && d.mesh().point(id) == p);
+      }
+    } else {
+      std::vector<Vec3> rest;
+      for (const std::uint32_t u : live)
+        if (u != v) rest.push_back(d.mesh().point(u));
+      bool rest_degenerate = rest.size() < 4;
+      if (!rest_degenerate) (void)from_scratch(rest, "incremental", &rest_degenerate);
+      const bool same = op == 2 && d.mesh().point(v) == p;
+      const bool duplicate = op == 2 && p_alive && !same;
+      if (duplicate) {
+        RC_ASSERT_THROWS_AS(d.move(v, p), DuplicatePointError);
+        RC_ASSERT(canonical_set(d) == before);
+      } else if (rest_degenerate && !same) {
+        if (op == 1) RC_ASSERT_THROWS_AS(d.remove(v), DegenerateRemovalError);
+        else RC_ASSERT_THROWS_AS(d.move(v, p), DegenerateRemovalError);
+        RC_ASSERT(canonical_set(d) == before);
+      } else if (op == 1) {
+        d.remove(v);
+      } else {
+        const std::uint32_t id = d.move(v, p);
+        RC_ASSERT(d.contains(id) && d.mesh().point(id) == p);
+      }
+    }
+    const std::string difference = compare_with_every_variant(d);
+    RC_ASSERT(difference == "");
+  }
+}
+
+RC_GTEST_PROP(DynamicDelaunay3, AnySequenceEqualsFromScratch, ()) {
+  const std::string distribution = *rc::gen::elementOf(distributions());
+  const int big = long_runs() ? 300 : 60;
+  const auto n = static_cast<std::size_t>(int_in(4, big));
+  const auto initial = static_cast<std::size_t>(int_in(4, big));
+  const auto steps = static_cast<std::size_t>(int_in(1, long_runs() ? 120 : 25));
+  const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
+  RC_TAG(distribution);
+  run_sequence(distribution, n, initial, steps, seed);
+}
+
+// Every vertex of a cospherical grid removed in turn, checked after each removal.
+TEST(DynamicDelaunay3, GridRemovedToTheEnd) {
+  const std::size_t side = long_runs() ? 8 : 4;
+  std::vector<Vec3> grid;
+  for (std::size_t i = 0; i < side; ++i)
+    for (std::size_t j = 0; j < side; ++j)
+      for (std::size_t k = 0; k < side; ++k)
+        grid.push_back({static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)});
+  DynamicDelaunay3 d(grid);
+  std::vector<std::uint32_t> order(grid.size());
+  for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(7));
+  std::size_t removed = 0, refused = 0;
+  for (const std::uint32_t v : order) {
+    try {
+      d.remove(v);
+      ++removed;
+    } catch (const DegenerateRemovalError&) {
+      ++refused;
+    }
+    ASSERT_EQ(compare_with_every_variant(d), "") << "after removing vertex " << v;
+  }
+  EXPECT_EQ(d.vertex_count(), grid.size() - removed);
+  EXPECT_GE(refused, 1u);
+}
+
+// Insert then remove the centre of an exact sphere, then each sphere point in turn.
+TEST(DynamicDelaunay3, InsertThenRemoveOnASphere) {
+  const std::vector<Vec3> sphere = generate_points3d("exact_sphere", 60, 3);
+  DynamicDelaunay3 d(sphere);
+  const std::vector<Tet> without = canonical_set(d);
+  const std::uint32_t centre = d.insert({0.0, 0.0, 0.0});
+  EXPECT_EQ(compare_with_every_variant(d), "");
+  d.remove(centre);
+  EXPECT_EQ(canonical_set(d), without);
+  for (std::uint32_t v = 0; v < 30; ++v) {
+    const Vec3 p = d.mesh().point(v);
+    const std::vector<Tet> before = canonical_set(d);
+    d.remove(v);
+    EXPECT_EQ(compare_with_every_variant(d), "");
+    d.insert(p);
+    EXPECT_EQ(canonical_set(d), before) << "vertex " << v;
+  }
+}
+
+// A hull vertex whose link is flat (the apex of a pyramid over a square, a point below): the
+// square becomes hull facets, split as the perturbation says.
+TEST(DynamicDelaunay3, HullVertexAboveAFlatLink) {
+  DynamicDelaunay3 d(std::vector<Vec3>{{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {1, 1, 3}, {1, 1, -3}});
+  d.remove(4);
+  EXPECT_EQ(d.stats().flat_links, 1u);
+  EXPECT_EQ(compare_with_every_variant(d), "");
+  d.insert({1, 1, 3});
+  EXPECT_EQ(compare_with_every_variant(d), "");
+  d.remove(5);
+  EXPECT_EQ(compare_with_every_variant(d), "");
+}
+
+TEST(DynamicDelaunay3, BadInputGetsNamedErrors) {
+  const std::vector<Vec3> cube{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+  DynamicDelaunay3 d(cube);
+  EXPECT_THROW(d.remove(9), UnknownVertexError);
+  try {
+    d.insert({0, 1, 0});
+    ADD_FAILURE() << "duplicate accepted";
+  } catch (const DuplicatePointError& e) {
+    EXPECT_EQ(e.items(), std::vector<std::uint64_t>{2});
+  }
+  EXPECT_THROW(d.move(0, {1, 0, 0}), DuplicatePointError);
+  d.remove(4);
+  EXPECT_THROW(d.remove(4), UnknownVertexError);  // twice
+  try {
+    d.remove(0);  // would leave three points
+    ADD_FAILURE() << "removal to three points accepted";
+  } catch (const DegenerateRemovalError& e) {
+    EXPECT_EQ(e.items(), std::vector<std::uint64_t>{0});
+  }
+  EXPECT_EQ(d.finite_tetrahedron_count(), 1u);
+  DynamicDelaunay3 flat(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 5}});
+  EXPECT_THROW(flat.remove(4), DegenerateRemovalError);  // four coplanar survivors
+  EXPECT_EQ(compare_with_every_variant(flat), "");
+  EXPECT_THROW(DynamicDelaunay3(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}), DegenerateRemovalError);
+  EXPECT_THROW(DynamicDelaunay3(std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 0}}),
+               DuplicatePointError);
+  EXPECT_THROW(d.insert({std::numeric_limits<double>::quiet_NaN(), 0, 0}), InputError);
+}
+
+}  // namespace
+}  // namespace dtlab
