@@ -248,4 +248,9 @@ std::uint32_t DynamicDelaunay2::move(std::uint32_t v, const Vec2& p) {
   return insert(p);
 }
 
+Delaunay2dRemoval delaunay2d_remove(std::span<const Vec2> points, std::span<const std::uint32_t> indices,
+                                     const Delaunay2dOptions& options) {
+  return remove_points<DynamicDelaunay2, 3, DynamicDelaunay2Stats>(points, indices, options);
+}
+
 }  // namespace dtlab

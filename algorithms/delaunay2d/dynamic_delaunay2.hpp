@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "algorithms/common/dynamic_delaunay_errors.hpp"
+#include "algorithms/common/point_removal.hpp"
 #include "algorithms/delaunay2d/delaunay2d.hpp"
 #include "kernel/vec.hpp"
 #include "mesh/mesh2.hpp"
@@ -67,6 +68,8 @@ class DynamicDelaunay2 {
   std::vector<std::array<std::uint32_t, 3>> finite_triangles() const;
   const Mesh2& mesh() const noexcept { return mesh_; }
   const DynamicDelaunay2Stats& stats() const noexcept { return stats_; }
+  // finite_triangles(), under the name algorithms/common/point_removal.hpp uses in both dimensions.
+  std::vector<std::array<std::uint32_t, 3>> finite_elements() const { return finite_triangles(); }
 
  private:
   bool in_conflict(std::uint32_t t, const Vec2& p) const;
@@ -83,5 +86,11 @@ class DynamicDelaunay2 {
   std::vector<std::uint32_t> stamp_;
   std::uint32_t epoch_ = 0;
 };
+
+// The Delaunay triangles of `points` less the points `indices` (input ids, removed in that order),
+// with the times of building and removing (algorithms/common/point_removal.hpp).
+using Delaunay2dRemoval = PointRemoval<3, DynamicDelaunay2Stats>;
+Delaunay2dRemoval delaunay2d_remove(std::span<const Vec2> points, std::span<const std::uint32_t> indices,
+                                     const Delaunay2dOptions& options = {});
 
 }  // namespace dtlab

@@ -270,4 +270,9 @@ std::uint32_t DynamicDelaunay3::move(std::uint32_t v, const Vec3& p) {
   return insert(p);
 }
 
+Delaunay3dRemoval delaunay3d_remove(std::span<const Vec3> points, std::span<const std::uint32_t> indices,
+                                     const Delaunay3dOptions& options) {
+  return remove_points<DynamicDelaunay3, 4, DynamicDelaunay3Stats>(points, indices, options);
+}
+
 }  // namespace dtlab

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "algorithms/common/dynamic_delaunay_errors.hpp"
+#include "algorithms/common/point_removal.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "kernel/vec.hpp"
 #include "mesh/mesh3.hpp"
@@ -73,6 +74,8 @@ class DynamicDelaunay3 {
   std::vector<std::array<std::uint32_t, 4>> finite_tetrahedra() const;
   const Mesh3& mesh() const noexcept { return mesh_; }
   const DynamicDelaunay3Stats& stats() const noexcept { return stats_; }
+  // finite_tetrahedra(), under the name algorithms/common/point_removal.hpp uses in both dimensions.
+  std::vector<std::array<std::uint32_t, 4>> finite_elements() const { return finite_tetrahedra(); }
 
  private:
   bool in_conflict(std::uint32_t t, const Vec3& p) const;
@@ -87,5 +90,11 @@ class DynamicDelaunay3 {
   std::vector<std::uint32_t> cavity_, stack_, ball_, fresh_, outside_, stamp_;
   std::uint32_t epoch_ = 0;
 };
+
+// The Delaunay tetrahedra of `points` less the points `indices` (input ids, removed in that order),
+// with the times of building and removing (algorithms/common/point_removal.hpp).
+using Delaunay3dRemoval = PointRemoval<4, DynamicDelaunay3Stats>;
+Delaunay3dRemoval delaunay3d_remove(std::span<const Vec3> points, std::span<const std::uint32_t> indices,
+                                     const Delaunay3dOptions& options = {});
 
 }  // namespace dtlab
