@@ -10,6 +10,7 @@
 #include "kernel/coordinate_range.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/perturbation.hpp"
+#include "mesh/navigation3.hpp"
 
 namespace dtlab {
 namespace {
@@ -27,12 +28,55 @@ Triple sorted(Triple f) {
   return f;
 }
 
+// The local index of v in tetrahedron t.
+std::uint32_t nav3_index_of(const Mesh3& m, std::uint32_t t, std::uint32_t v) {
+  for (std::uint32_t i = 0; i < 4; ++i)
+    if (m.vertex(t, i) == v) return i;
+  throw InternalError("remove: vertex " + std::to_string(v) + " is not in a tetrahedron of its ball");
+}
+
 // f and g hold the same vertices in the same cyclic order.
 bool same_cycle(const Triple& f, const Triple& g) {
   return f == g || f == Triple{g[1], g[2], g[0]} || f == Triple{g[2], g[0], g[1]};
 }
 
 }  // namespace
+
+void DynamicDelaunay3::FacetIndex::reset(std::size_t entries) {
+  std::size_t size = 64;
+  while (size < 2 * entries) size *= 2;
+  if (slots_.size() < size || ++stamp_ == 0) {
+    slots_.assign(std::max(size, slots_.size()), Slot{{}, kNone, 0});
+    stamp_ = 1;
+  }
+}
+
+std::size_t DynamicDelaunay3::FacetIndex::slot_of(const Triple& key) const noexcept {
+  const std::uint64_t h = (key[0] * 0x9E3779B97F4A7C15ull) ^ (key[1] * 0xC2B2AE3D27D4EB4Full) ^
+                          (key[2] * 0x165667B19E3779F9ull);
+  return static_cast<std::size_t>(h >> 32) & (slots_.size() - 1);
+}
+
+void DynamicDelaunay3::FacetIndex::insert(const Triple& key, std::uint32_t handle) {
+  for (std::size_t k = slot_of(key), probes = 0; probes < slots_.size(); k = (k + 1) & (slots_.size() - 1), ++probes) {
+    Slot& s = slots_[k];
+    if (s.stamp != stamp_) {
+      s = {key, handle, stamp_};
+      return;
+    }
+    if (s.key == key) return;  // the facet's other side: one handle is enough
+  }
+  throw InternalError("FacetIndex: full");
+}
+
+std::uint32_t DynamicDelaunay3::FacetIndex::find(const Triple& key) const {
+  for (std::size_t k = slot_of(key), probes = 0; probes < slots_.size(); k = (k + 1) & (slots_.size() - 1), ++probes) {
+    const Slot& s = slots_[k];
+    if (s.stamp != stamp_) return kNone;
+    if (s.key == key) return s.handle;
+  }
+  return kNone;
+}
 
 DynamicDelaunay3::DynamicDelaunay3(std::span<const Vec3> points, const Delaunay3dOptions& options)
     : link_options_(options) {
@@ -85,15 +129,12 @@ std::uint32_t DynamicDelaunay3::add(std::array<std::uint32_t, 4> v) {
   return mesh_.add_tetrahedron(v[0], v[1], v[2], v[3], ghost ? Mesh3::kExterior : 0);
 }
 
-// Links the facets of the new tetrahedra `fresh` to each other and to the facet handles
-// `outside` (in live tetrahedra around the change) by their vertex triples: each triple must
-// occur exactly twice.
-void DynamicDelaunay3::glue(std::span<const std::uint32_t> fresh, std::span<const std::uint32_t> outside) {
+// Links the facet handles `handles` in pairs by their vertex triples: each triple must occur
+// exactly twice.
+void DynamicDelaunay3::glue(std::span<const std::uint32_t> handles) {
   static thread_local std::vector<std::pair<Triple, std::uint32_t>> open;
   open.clear();
-  for (const std::uint32_t t : fresh)
-    for (std::uint32_t i = 0; i < 4; ++i) open.emplace_back(sorted(mesh_.facet_vertices(4 * t + i)), 4 * t + i);
-  for (const std::uint32_t h : outside) open.emplace_back(sorted(mesh_.facet_vertices(h)), h);
+  for (const std::uint32_t h : handles) open.emplace_back(sorted(mesh_.facet_vertices(h)), h);
   std::sort(open.begin(), open.end());
   for (std::size_t k = 0; k < open.size(); k += 2) {
     if (k + 1 >= open.size() || open[k].first != open[k + 1].first || (k + 2 < open.size() && open[k + 2].first == open[k].first))
@@ -145,116 +186,139 @@ std::uint32_t DynamicDelaunay3::insert(const Vec3& p) {
     mesh_.remove_tetrahedron(t);
   }
   const std::uint32_t vp = mesh_.add_vertex(p, Metric3{}, 0);
-  fresh_.clear();
-  for (const Triple& f : faces) fresh_.push_back(add({f[0], f[1], f[2], vp}));  // p where the apex was
-  glue(fresh_, outside_);
-  hint_ = fresh_.front();
+  open_.assign(outside_.begin(), outside_.end());
+  for (const Triple& f : faces) {
+    const std::uint32_t t = add({f[0], f[1], f[2], vp});  // p where the apex was
+    for (std::uint32_t i = 0; i < 4; ++i) open_.push_back(4 * t + i);
+    hint_ = t;
+  }
+  glue(open_);
   ++stats_.inserted;
   return vp;
 }
 
 void DynamicDelaunay3::remove(std::uint32_t v) {
   if (!contains(v)) throw UnknownVertexError(v);
-  mesh_.ball(v, ball_);
-  // The link's finite vertices, sorted (D's vertex k is link[k]); the ball's boundary facets,
-  // each as seen from v, and the handles outside them.
-  std::vector<std::uint32_t> link;
-  std::vector<Triple> faces;
+  // The ball, searched with this structure's stamps (Mesh3::ball's list scan is quadratic).
+  epoch_ += 2;
+  if (stamp_.size() < mesh_.tetrahedron_capacity()) stamp_.resize(mesh_.tetrahedron_capacity(), 0);
+  nav3::ball(mesh_, v, mesh_.vertex_tetrahedron(v), ball_, nav3::marking(stamp_, epoch_));
+  DTLAB_ASSERT(ball_.size() <= mesh_.live_tetrahedron_count());
+  // The link's finite vertices (D's vertex k is link_[k]); the ball's boundary facets, each as
+  // seen from v, in D's numbering (kInfinite kept), and the handles outside them.
+  if (local_.size() < mesh_.vertex_capacity()) local_.resize(mesh_.vertex_capacity(), kNone);
+  link_.clear();
+  faces_.clear();
   outside_.clear();
   std::uint64_t finite_in_ball = 0;
+  const auto local = [&](std::uint32_t u) {
+    if (u == kInfinite) return kInfinite;
+    if (local_[u] == kNone) local_[u] = static_cast<std::uint32_t>(link_.size()), link_.push_back(u);
+    return local_[u];
+  };
   for (const std::uint32_t t : ball_) {
     finite_in_ball += mesh_.is_ghost(t) ? 0 : 1;
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      const std::uint32_t u = mesh_.vertex(t, i);
-      if (u == v) {
-        faces.push_back(mesh_.facet_vertices(4 * t + i));
-        outside_.push_back(mesh_.twin(4 * t + i));
-      } else if (u != kInfinite) {
-        link.push_back(u);
-      }
-    }
+    const std::uint32_t i = nav3_index_of(mesh_, t, v);
+    const Triple f = mesh_.facet_vertices(4 * t + i);
+    faces_.push_back({local(f[0]), local(f[1]), local(f[2])});
+    outside_.push_back(mesh_.twin(4 * t + i));
   }
-  std::sort(link.begin(), link.end());
-  link.erase(std::unique(link.begin(), link.end()), link.end());
-  stats_.link_vertices += link.size();
-  std::vector<Vec3> link_points;
-  link_points.reserve(link.size());
-  for (const std::uint32_t u : link) link_points.push_back(mesh_.point(u));
+  link_points_.clear();
+  for (const std::uint32_t u : link_) link_points_.push_back(mesh_.point(u)), local_[u] = kNone;
+  stats_.link_vertices += link_.size();
   Delaunay3dResult d;
-  bool flat = link.size() < 4;
+  bool flat = link_.size() < 4;
   if (!flat) {
-    d = delaunay3d(link_points, link_options_);
+    d = delaunay3d(link_points_, link_options_);
     flat = !d.degenerate_message.empty();
   }
   if (flat && finite_in_ball == finite_)
     throw DegenerateRemovalError("removing vertex " + std::to_string(v) + " would leave " +
-                                     std::to_string(link.size()) + " points, all coplanar: no tetrahedron",
+                                     std::to_string(link_.size()) + " points, all coplanar: no tetrahedron",
                                  {v});
-
-  // The new tetrahedra, in mesh ids.
-  std::vector<std::array<std::uint32_t, 4>> made;
+  const auto mesh_id = [&](std::uint32_t u) { return u == kInfinite ? kInfinite : link_[u]; };
   if (flat) {
     // v on the hull above a flat link: each finite boundary facet becomes a hull facet.
     ++stats_.flat_links;
-    for (const Triple& f : faces)
-      if (f[0] != kInfinite && f[1] != kInfinite && f[2] != kInfinite) made.push_back({f[0], f[1], f[2], kInfinite});
-  } else {
-    const Tetrahedralization3& D = d.tetrahedralization;
-    const auto id = [&](std::uint32_t u) {
-      return u == kInfinite ? kInfinite
-                            : static_cast<std::uint32_t>(std::lower_bound(link.begin(), link.end(), u) - link.begin());
-    };
-    std::vector<std::pair<Triple, std::uint32_t>> index;  // D's facets by sorted triple
-    index.reserve(4 * D.tetrahedron_count());
-    for (std::uint32_t h = 0; h < 4 * D.tetrahedron_count(); ++h) index.emplace_back(sorted(D.facet_vertices(h)), h);
-    std::sort(index.begin(), index.end());
-    std::vector<std::uint8_t> boundary(4 * D.tetrahedron_count(), 0), taken(D.tetrahedron_count(), 0);
-    std::vector<std::uint32_t> queue;
-    for (const Triple& f : faces) {
-      // A boundary facet through kInfinite borders the new hull; its ghost is reached from inside.
+    remove_ball(v);
+    open_.clear();
+    for (const Triple& f : faces_) {
       if (f[0] == kInfinite || f[1] == kInfinite || f[2] == kInfinite) continue;
-      const Triple g{id(f[0]), id(f[1]), id(f[2])};
-      const Triple key = sorted(g);
-      auto it = std::lower_bound(index.begin(), index.end(), std::pair{key, 0u});
-      std::uint32_t found = kNone;
-      for (; it != index.end() && it->first == key; ++it)
-        if (same_cycle(D.facet_vertices(it->second), g)) found = it->second;
-      if (found == kNone)
-        throw InternalError("remove: a boundary facet of vertex " + std::to_string(v) +
-                            "'s ball is not in its link's tetrahedralization");
-      boundary[found] = 1;
-      const std::uint32_t t = Tetrahedralization3::tetrahedron_of(found);
-      if (!taken[t]) taken[t] = 1, queue.push_back(t);
+      const std::uint32_t t = add({mesh_id(f[0]), mesh_id(f[1]), mesh_id(f[2]), kInfinite});
+      for (std::uint32_t i = 0; i < 4; ++i) open_.push_back(4 * t + i);
     }
-    for (std::size_t k = 0; k < queue.size(); ++k) {
-      const std::uint32_t t = queue[k];
-      if (D.is_ghost(t)) continue;  // a facet of the new hull: its ghost comes in, nothing beyond
-      for (std::uint32_t i = 0; i < 4; ++i) {
-        if (boundary[4 * t + i]) continue;
-        const std::uint32_t u = D.adjacent(t, i);
-        if (!taken[u]) taken[u] = 1, queue.push_back(u);
-      }
-    }
-    for (const std::uint32_t t : queue) {
-      std::array<std::uint32_t, 4> q{};
-      for (std::uint32_t i = 0; i < 4; ++i) {
-        const std::uint32_t u = D.vertex(t, i);
-        q[i] = u == kInfinite ? kInfinite : link[u];
-      }
-      made.push_back(q);
-    }
+    open_.insert(open_.end(), outside_.begin(), outside_.end());
+    hint_ = Mesh3::tetrahedron_of(open_.front());
+    glue(open_);
+    ++stats_.removed;
+    return;
   }
 
+  // D's tetrahedra inside the hole: from the v side of each finite boundary facet, across facets
+  // that are not boundary facets; a ghost of D is a facet of the new hull and is not crossed.
+  const Tetrahedralization3& D = d.tetrahedralization;
+  const std::uint32_t nd = static_cast<std::uint32_t>(D.tetrahedron_count());
+  facets_.reset(4 * nd);
+  for (std::uint32_t h = 0; h < 4 * nd; ++h) facets_.insert(sorted(D.facet_vertices(h)), h);
+  boundary_.assign(4 * nd, kNone);  // a boundary facet of D: the index of its outside handle
+  made_.assign(nd, kNone);          // a tetrahedron of D kept: its new tetrahedron
+  queue_.clear();
+  for (std::uint32_t k = 0; k < faces_.size(); ++k) {
+    const Triple& f = faces_[k];
+    // A boundary facet through kInfinite borders the new hull; its ghost is reached from inside.
+    if (f[0] == kInfinite || f[1] == kInfinite || f[2] == kInfinite) continue;
+    std::uint32_t h = facets_.find(sorted(f));
+    if (h == kNone)
+      throw InternalError("remove: a boundary facet of vertex " + std::to_string(v) +
+                          "'s ball is not in its link's tetrahedralization");
+    if (!same_cycle(D.facet_vertices(h), f)) h = D.twin(h);
+    boundary_[h] = k;
+    const std::uint32_t t = Tetrahedralization3::tetrahedron_of(h);
+    if (made_[t] == kNone) made_[t] = 0, queue_.push_back(t);
+  }
+  for (std::size_t k = 0; k < queue_.size(); ++k) {
+    const std::uint32_t t = queue_[k];
+    if (D.is_ghost(t)) continue;
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      if (boundary_[4 * t + i] != kNone) continue;
+      const std::uint32_t u = D.adjacent(t, i);
+      if (made_[u] == kNone) made_[u] = 0, queue_.push_back(u);
+    }
+  }
+  remove_ball(v);
+  for (const std::uint32_t t : queue_)
+    made_[t] = add({mesh_id(D.vertex(t, 0)), mesh_id(D.vertex(t, 1)), mesh_id(D.vertex(t, 2)), mesh_id(D.vertex(t, 3))});
+  // Links: D's own between kept tetrahedra (their vertex order is D's), the boundary facets to
+  // the handles outside, and by vertex triples the rim of the new hull to the ghosts around it.
+  open_.clear();
+  for (const std::uint32_t t : queue_) {
+    for (std::uint32_t i = 0; i < 4; ++i) {
+      const std::uint32_t h = 4 * t + i, mine = 4 * made_[t] + i;
+      if (boundary_[h] != kNone) {
+        mesh_.link(mine, outside_[boundary_[h]]);
+        continue;
+      }
+      const std::uint32_t g = D.twin(h);
+      const std::uint32_t u = Tetrahedralization3::tetrahedron_of(g);
+      if (made_[u] != kNone) mesh_.link(mine, 4 * made_[u] + (g & 3u));
+      else open_.push_back(mine);
+    }
+  }
+  for (std::uint32_t k = 0; k < faces_.size(); ++k) {
+    const Triple& f = faces_[k];
+    if (f[0] == kInfinite || f[1] == kInfinite || f[2] == kInfinite) open_.push_back(outside_[k]);
+  }
+  glue(open_);
+  hint_ = made_[queue_.front()];
+  ++stats_.removed;
+}
+
+void DynamicDelaunay3::remove_ball(std::uint32_t v) {
   for (const std::uint32_t t : ball_) {
     if (!mesh_.is_ghost(t)) --finite_;
     mesh_.remove_tetrahedron(t);
   }
   mesh_.remove_vertex(v);
-  fresh_.clear();
-  for (const auto& q : made) fresh_.push_back(add(q));
-  glue(fresh_, outside_);
-  hint_ = fresh_.front();
-  ++stats_.removed;
 }
 
 std::uint32_t DynamicDelaunay3::move(std::uint32_t v, const Vec3& p) {

@@ -80,14 +80,40 @@ class DynamicDelaunay3 {
  private:
   bool in_conflict(std::uint32_t t, const Vec3& p) const;
   std::uint32_t add(std::array<std::uint32_t, 4> tet);
-  void glue(std::span<const std::uint32_t> fresh, std::span<const std::uint32_t> outside);
+  void glue(std::span<const std::uint32_t> handles);
+  void remove_ball(std::uint32_t v);
+
+  // The facets of the link's tetrahedralization by their sorted vertex triples: open addressing,
+  // a stamp per slot so that reset() costs nothing but a possible growth.
+  class FacetIndex {
+   public:
+    void reset(std::size_t entries);
+    void insert(const std::array<std::uint32_t, 3>& key, std::uint32_t handle);
+    std::uint32_t find(const std::array<std::uint32_t, 3>& key) const;  // one handle, or kNone
+
+   private:
+    struct Slot {
+      std::array<std::uint32_t, 3> key;
+      std::uint32_t handle;
+      std::uint32_t stamp;
+    };
+    std::size_t slot_of(const std::array<std::uint32_t, 3>& key) const noexcept;
+    std::vector<Slot> slots_;
+    std::uint32_t stamp_ = 0;
+  };
 
   Mesh3 mesh_;
   std::uint64_t finite_ = 0;
   std::uint32_t hint_ = 0;
   Delaunay3dOptions link_options_;
   DynamicDelaunay3Stats stats_;
-  std::vector<std::uint32_t> cavity_, stack_, ball_, fresh_, outside_, stamp_;
+  std::vector<std::uint32_t> cavity_, stack_, ball_, open_, outside_, stamp_;
+  // Scratch of remove(): vertex -> link index, the link, its points, the boundary facets in link
+  // numbering, D's facet index, boundary marks, kept tetrahedra and their search queue.
+  std::vector<std::uint32_t> local_, link_, boundary_, made_, queue_;
+  std::vector<Vec3> link_points_;
+  std::vector<std::array<std::uint32_t, 3>> faces_;
+  FacetIndex facets_;
   std::uint32_t epoch_ = 0;
 };
 
