@@ -35,4 +35,16 @@ class DegenerateRemovalError : public InputError {
   DegenerateRemovalError(const std::string& what, std::vector<std::uint64_t> items) : InputError(what, std::move(items)) {}
 };
 
+// The construction's refusals, from the Delaunay call's report (delaunay_call.hpp): a repeated
+// point (naming both indices) or no element at all (`element`: "triangle", "tetrahedron").
+template <class Report>
+void refuse_unusable_start(const Report& r, const char* element) {
+  if (!r.duplicates.empty())
+    throw DuplicatePointError("point " + std::to_string(r.duplicates[0]) + " repeats point " +
+                                  std::to_string(r.duplicate_of[0]),
+                              {r.duplicate_of[0], r.duplicates[0]});
+  if (!r.degenerate_message.empty())
+    throw DegenerateRemovalError(std::string("no ") + element + ": " + r.degenerate_message, {});
+}
+
 }  // namespace dtlab

@@ -37,11 +37,7 @@ bool ghost_conflict(const Vec2& a, const Vec2& b, const Vec2& w) noexcept {
 
 DynamicDelaunay2::DynamicDelaunay2(std::span<const Vec2> points, const Delaunay2dOptions& options) {
   Delaunay2dResult r = delaunay2d(points, options);
-  if (!r.duplicates.empty())
-    throw DuplicatePointError("point " + std::to_string(r.duplicates[0]) + " repeats point " +
-                                  std::to_string(r.duplicate_of[0]),
-                              {r.duplicate_of[0], r.duplicates[0]});
-  if (!r.degenerate_message.empty()) throw DegenerateRemovalError("no triangle: " + r.degenerate_message, {});
+  refuse_unusable_start(r, "triangle");
   std::vector<int> refs(r.triangulation.triangle_count(), 0);
   mesh_ = Mesh2(r.triangulation, refs, {});
   finite_triangles_ = r.triangulation.finite_triangle_count();

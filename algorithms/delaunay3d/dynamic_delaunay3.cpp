@@ -82,11 +82,7 @@ DynamicDelaunay3::DynamicDelaunay3(std::span<const Vec3> points, const Delaunay3
     : link_options_(options) {
   link_options_.threads = 1;
   Delaunay3dResult r = delaunay3d(points, options);
-  if (!r.duplicates.empty())
-    throw DuplicatePointError("point " + std::to_string(r.duplicates[0]) + " repeats point " +
-                                  std::to_string(r.duplicate_of[0]),
-                              {r.duplicate_of[0], r.duplicates[0]});
-  if (!r.degenerate_message.empty()) throw DegenerateRemovalError("no tetrahedron: " + r.degenerate_message, {});
+  refuse_unusable_start(r, "tetrahedron");
   std::vector<int> refs(r.tetrahedralization.tetrahedron_count(), 0);
   mesh_ = Mesh3(r.tetrahedralization, refs, {});
   finite_ = r.tetrahedralization.finite_tetrahedron_count();

@@ -21,20 +21,18 @@
 #include "algorithms/delaunay2d/delaunay2d.hpp"
 #include "algorithms/delaunay2d/dynamic_delaunay2.hpp"
 #include "algorithms/delaunay2d/registry.hpp"
+#include "verify/tests/dynamic_delaunay_sequence.hpp"
 #include "verify/generators/points2d.hpp"
 
 namespace dtlab {
 namespace {
 
+using dynamic_test::distinct;
+using dynamic_test::int_in;
+using dynamic_test::long_runs;
+using dynamic_test::run_sequence;
+
 using Tri = std::array<Vec2, 3>;
-
-bool long_runs() {
-  const char* v = std::getenv("DTLAB_LONG");
-  return v != nullptr && std::string(v) == "1";
-}
-
-// Uniform whatever rapidcheck's current size (inRange scales its range with the size).
-int int_in(int lo, int hi) { return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi + 1)); }
 
 bool lex_less(const Vec2& a, const Vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
@@ -101,78 +99,18 @@ const std::vector<std::string>& distributions() {
   return names;
 }
 
-// A pool of distinct points of `distribution` (duplicates dropped), in generator order.
-std::vector<Vec2> pool(const std::string& distribution, std::size_t n, std::uint64_t seed) {
-  std::vector<Vec2> raw = generate_points2d(distribution, n, seed), out;
-  std::vector<Vec2> seen;
-  for (const Vec2& p : raw) {
-    if (std::find(seen.begin(), seen.end(), p) != seen.end()) continue;
-    seen.push_back(p);
-    out.push_back(p);
+struct Traits {
+  using Point = Vec2;
+  using Dynamic = DynamicDelaunay2;
+  static constexpr std::size_t kMinPoints = 3;
+  static std::vector<Tri> canonical_set(const Dynamic& d) { return dtlab::canonical_set(d); }
+  static bool degenerate(const std::vector<Vec2>& points) {
+    bool flat = false;
+    (void)from_scratch(points, "incremental", &flat);
+    return flat;
   }
-  return out;
-}
-
-// One random sequence: start from the first `initial` points of the pool, then `steps` random
-// insertions (of pool points, alive or not), removals and moves, each checked against every
-// variant. Errors are accepted only where they are due, and must leave the triangulation as it was.
-void run_sequence(const std::string& distribution, std::size_t n, std::size_t initial, std::size_t steps,
-                  std::uint64_t seed) {
-  const std::vector<Vec2> points = pool(distribution, n, seed);
-  RC_PRE(points.size() >= 3);
-  initial = std::clamp<std::size_t>(initial, 3, points.size());
-  const std::vector<Vec2> start(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(initial));
-  bool degenerate = false;
-  (void)from_scratch(start, "incremental", &degenerate);
-  if (degenerate) {
-    RC_ASSERT_THROWS_AS(DynamicDelaunay2{start}, DegenerateRemovalError);
-    return;
-  }
-  DynamicDelaunay2 d(start);
-  RC_ASSERT(compare_with_every_variant(d) == "");
-  std::mt19937_64 rng(seed);
-  for (std::size_t step = 0; step < steps; ++step) {
-    const int op = static_cast<int>(rng() % 3);
-    const Vec2 p = points[rng() % points.size()];
-    std::vector<std::uint32_t> live;
-    for (std::uint32_t v = 0; v < d.mesh().vertex_capacity(); ++v)
-      if (d.contains(v)) live.push_back(v);
-    const std::uint32_t v = live[rng() % live.size()];
-    const bool p_alive = std::any_of(live.begin(), live.end(), [&](std::uint32_t u) { return d.mesh().point(u) == p; });
-    const std::vector<Tri> before = canonical_set(d);
-    if (op == 0) {
-      if (p_alive) {
-        RC_ASSERT_THROWS_AS(d.insert(p), DuplicatePointError);
-        RC_ASSERT(canonical_set(d) == before);
-      } else {
-        const std::uint32_t id = d.insert(p);
-        RC_ASSERT(d.contains(id) && d.mesh().point(id) == p);
-      }
-    } else {
-      std::vector<Vec2> rest;
-      for (const std::uint32_t u : live)
-        if (u != v) rest.push_back(d.mesh().point(u));
-      bool rest_degenerate = rest.size() < 3;
-      if (!rest_degenerate) (void)from_scratch(rest, "incremental", &rest_degenerate);
-      const bool duplicate = op == 2 && p_alive && d.mesh().point(v) != p;
-      if (duplicate) {
-        RC_ASSERT_THROWS_AS(d.move(v, p), DuplicatePointError);
-      } else if (rest_degenerate && !(op == 2 && d.mesh().point(v) == p)) {
-        if (op == 1) RC_ASSERT_THROWS_AS(d.remove(v), DegenerateRemovalError);
-        else RC_ASSERT_THROWS_AS(d.move(v, p), DegenerateRemovalError);
-      } else if (op == 1) {
-        d.remove(v);
-        RC_ASSERT(!d.contains(v) || d.mesh().point(v) != d.mesh().point(v));
-      } else {
-        const std::uint32_t id = d.move(v, p);
-        RC_ASSERT(d.contains(id) && d.mesh().point(id) == p);
-      }
-      if (duplicate || (rest_degenerate && !(op == 2 && d.mesh().point(v) == p))) RC_ASSERT(canonical_set(d) == before);
-    }
-    const std::string difference = compare_with_every_variant(d);
-    RC_ASSERT(difference == "");
-  }
-}
+  static std::string compare_with_every_variant(const Dynamic& d) { return dtlab::compare_with_every_variant(d); }
+};
 
 RC_GTEST_PROP(DynamicDelaunay2, AnySequenceEqualsFromScratch, ()) {
   const std::string distribution = *rc::gen::elementOf(distributions());
@@ -182,7 +120,7 @@ RC_GTEST_PROP(DynamicDelaunay2, AnySequenceEqualsFromScratch, ()) {
   const auto steps = static_cast<std::size_t>(int_in(1, long_runs() ? 200 : 40));
   const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
   RC_TAG(distribution);
-  run_sequence(distribution, n, initial, steps, seed);
+  run_sequence<Traits>(distinct(generate_points2d(distribution, n, seed)), initial, steps, seed);
 }
 
 // Every interior and hull vertex of a cocircular grid removed in turn, checked after each
@@ -193,19 +131,8 @@ TEST(DynamicDelaunay2, GridRemovedToTheEnd) {
   for (std::size_t i = 0; i < side; ++i)
     for (std::size_t j = 0; j < side; ++j) grid.push_back({static_cast<double>(i), static_cast<double>(j)});
   DynamicDelaunay2 d(grid);
-  std::vector<std::uint32_t> order(grid.size());
-  for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::shuffle(order.begin(), order.end(), std::mt19937_64(7));
   std::size_t removed = 0, refused = 0;
-  for (const std::uint32_t v : order) {
-    try {
-      d.remove(v);
-      ++removed;
-    } catch (const DegenerateRemovalError&) {
-      ++refused;
-    }
-    ASSERT_EQ(compare_with_every_variant(d), "") << "after removing vertex " << v;
-  }
+  EXPECT_EQ(dynamic_test::remove_all_in_turn<Traits>(d, removed, refused), "");
   EXPECT_EQ(d.vertex_count(), grid.size() - removed);
   EXPECT_GE(refused, 1u);  // the last three points are never all removed
 }

@@ -20,19 +20,18 @@
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "algorithms/delaunay3d/dynamic_delaunay3.hpp"
 #include "algorithms/delaunay3d/registry.hpp"
+#include "verify/tests/dynamic_delaunay_sequence.hpp"
 #include "verify/generators/points3d.hpp"
 
 namespace dtlab {
 namespace {
 
+using dynamic_test::distinct;
+using dynamic_test::int_in;
+using dynamic_test::long_runs;
+using dynamic_test::run_sequence;
+
 using Tet = std::array<Vec3, 4>;
-
-bool long_runs() {
-  const char* v = std::getenv("DTLAB_LONG");
-  return v != nullptr && std::string(v) == "1";
-}
-
-int int_in(int lo, int hi) { return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi + 1)); }
 
 bool lex_less(const Vec3& a, const Vec3& b) {
   return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
@@ -106,73 +105,18 @@ const std::vector<std::string>& distributions() {
   return names;
 }
 
-std::vector<Vec3> pool(const std::string& distribution, std::size_t n, std::uint64_t seed) {
-  std::vector<Vec3> out;
-  for (const Vec3& p : generate_points3d(distribution, n, seed))
-    if (std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
-  return out;
-}
-
-// As in dynamic_delaunay2_test.cpp: a random sequence from the pool, each step checked against
-// every variant; errors only where due, leaving the structure as it was.
-void run_sequence(const std::string& distribution, std::size_t n, std::size_t initial, std::size_t steps,
-                  std::uint64_t seed) {
-  const std::vector<Vec3> points = pool(distribution, n, seed);
-  RC_PRE(points.size() >= 4);
-  initial = std::clamp<std::size_t>(initial, 4, points.size());
-  const std::vector<Vec3> start(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(initial));
-  bool degenerate = false;
-  (void)from_scratch(start, "incremental", &degenerate);
-  if (degenerate) {
-    RC_ASSERT_THROWS_AS(DynamicDelaunay3{start}, DegenerateRemovalError);
-    return;
+struct Traits {
+  using Point = Vec3;
+  using Dynamic = DynamicDelaunay3;
+  static constexpr std::size_t kMinPoints = 4;
+  static std::vector<Tet> canonical_set(const Dynamic& d) { return dtlab::canonical_set(d); }
+  static bool degenerate(const std::vector<Vec3>& points) {
+    bool flat = false;
+    (void)from_scratch(points, "incremental", &flat);
+    return flat;
   }
-  DynamicDelaunay3 d(start);
-  RC_ASSERT(compare_with_every_variant(d) == "");
-  std::mt19937_64 rng(seed);
-  for (std::size_t step = 0; step < steps; ++step) {
-    const int op = static_cast<int>(rng() % 3);
-    const Vec3 p = points[rng() % points.size()];
-    std::vector<std::uint32_t> live;
-    for (std::uint32_t v = 0; v < d.mesh().vertex_capacity(); ++v)
-      if (d.contains(v)) live.push_back(v);
-    const std::uint32_t v = live[rng() % live.size()];
-    const bool p_alive = std::any_of(live.begin(), live.end(), [&](std::uint32_t u) { return d.mesh().point(u) == p; });
-    const std::vector<Tet> before = canonical_set(d);
-    if (op == 0) {
-      if (p_alive) {
-        RC_ASSERT_THROWS_AS(d.insert(p), DuplicatePointError);
-        RC_ASSERT(canonical_set(d) == before);
-      } else {
-        const std::uint32_t id = d.insert(p);
-        RC_ASSERT(d.contains(id) && d.mesh().point(id) == p);
-      }
-    } else {
-      std::vector<Vec3> rest;
-      for (const std::uint32_t u : live)
-        if (u != v) rest.push_back(d.mesh().point(u));
-      bool rest_degenerate = rest.size() < 4;
-      if (!rest_degenerate) (void)from_scratch(rest, "incremental", &rest_degenerate);
-      const bool same = op == 2 && d.mesh().point(v) == p;
-      const bool duplicate = op == 2 && p_alive && !same;
-      if (duplicate) {
-        RC_ASSERT_THROWS_AS(d.move(v, p), DuplicatePointError);
-        RC_ASSERT(canonical_set(d) == before);
-      } else if (rest_degenerate && !same) {
-        if (op == 1) RC_ASSERT_THROWS_AS(d.remove(v), DegenerateRemovalError);
-        else RC_ASSERT_THROWS_AS(d.move(v, p), DegenerateRemovalError);
-        RC_ASSERT(canonical_set(d) == before);
-      } else if (op == 1) {
-        d.remove(v);
-      } else {
-        const std::uint32_t id = d.move(v, p);
-        RC_ASSERT(d.contains(id) && d.mesh().point(id) == p);
-      }
-    }
-    const std::string difference = compare_with_every_variant(d);
-    RC_ASSERT(difference == "");
-  }
-}
+  static std::string compare_with_every_variant(const Dynamic& d) { return dtlab::compare_with_every_variant(d); }
+};
 
 RC_GTEST_PROP(DynamicDelaunay3, AnySequenceEqualsFromScratch, ()) {
   const std::string distribution = *rc::gen::elementOf(distributions());
@@ -182,7 +126,7 @@ RC_GTEST_PROP(DynamicDelaunay3, AnySequenceEqualsFromScratch, ()) {
   const auto steps = static_cast<std::size_t>(int_in(1, long_runs() ? 120 : 25));
   const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
   RC_TAG(distribution);
-  run_sequence(distribution, n, initial, steps, seed);
+  run_sequence<Traits>(distinct(generate_points3d(distribution, n, seed)), initial, steps, seed);
 }
 
 // Every vertex of a cospherical grid removed in turn, checked after each removal.
@@ -194,19 +138,8 @@ TEST(DynamicDelaunay3, GridRemovedToTheEnd) {
       for (std::size_t k = 0; k < side; ++k)
         grid.push_back({static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)});
   DynamicDelaunay3 d(grid);
-  std::vector<std::uint32_t> order(grid.size());
-  for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::shuffle(order.begin(), order.end(), std::mt19937_64(7));
   std::size_t removed = 0, refused = 0;
-  for (const std::uint32_t v : order) {
-    try {
-      d.remove(v);
-      ++removed;
-    } catch (const DegenerateRemovalError&) {
-      ++refused;
-    }
-    ASSERT_EQ(compare_with_every_variant(d), "") << "after removing vertex " << v;
-  }
+  EXPECT_EQ(dynamic_test::remove_all_in_turn<Traits>(d, removed, refused), "");
   EXPECT_EQ(d.vertex_count(), grid.size() - removed);
   EXPECT_GE(refused, 1u);
 }
