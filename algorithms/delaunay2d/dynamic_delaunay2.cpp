@@ -8,6 +8,7 @@
 #include <tuple>
 #include <utility>
 
+#include "algorithms/common/dynamic_delaunay_move.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/perturbation.hpp"
@@ -232,16 +233,7 @@ void DynamicDelaunay2::remove(std::uint32_t v) {
 }
 
 std::uint32_t DynamicDelaunay2::move(std::uint32_t v, const Vec2& p) {
-  if (!contains(v)) throw UnknownVertexError(v);
-  if (mesh_.point(v) == p) return v;
-  check_coordinates(std::span<const Vec2>(&p, 1), "moved point");
-  const Mesh2::Location loc = mesh_.locate(p, hint_);
-  if (loc.where == Mesh2::Where::Vertex)
-    throw DuplicatePointError("vertex " + std::to_string(v) + " cannot move to " + show(p) + ": vertex " +
-                                  std::to_string(loc.handle) + " is there",
-                              {loc.handle});
-  remove(v);
-  return insert(p);
+  return move_vertex(*this, mesh_, hint_, v, p);
 }
 
 Delaunay2dRemoval delaunay2d_remove(std::span<const Vec2> points, std::span<const std::uint32_t> indices,

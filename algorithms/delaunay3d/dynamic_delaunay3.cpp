@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "algorithms/common/dynamic_delaunay_move.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/perturbation.hpp"
@@ -318,16 +319,7 @@ void DynamicDelaunay3::remove_ball(std::uint32_t v) {
 }
 
 std::uint32_t DynamicDelaunay3::move(std::uint32_t v, const Vec3& p) {
-  if (!contains(v)) throw UnknownVertexError(v);
-  if (mesh_.point(v) == p) return v;
-  check_coordinates(std::span<const Vec3>(&p, 1), "moved point");
-  const Mesh3::Location loc = mesh_.locate(p, hint_);
-  if (loc.where == Mesh3::Where::Vertex)
-    throw DuplicatePointError("vertex " + std::to_string(v) + " cannot move to " + show(p) + ": vertex " +
-                                  std::to_string(loc.handle) + " is there",
-                              {loc.handle});
-  remove(v);
-  return insert(p);
+  return move_vertex(*this, mesh_, hint_, v, p);
 }
 
 Delaunay3dRemoval delaunay3d_remove(std::span<const Vec3> points, std::span<const std::uint32_t> indices,

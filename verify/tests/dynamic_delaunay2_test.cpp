@@ -69,30 +69,6 @@ std::vector<Tri> from_scratch(const std::vector<Vec2>& points, const std::string
   return out;
 }
 
-// The survivors, from the triangulation's own live vertices.
-std::vector<Vec2> survivors(const DynamicDelaunay2& d) {
-  std::vector<Vec2> out;
-  for (std::uint32_t v = 0; v < d.mesh().vertex_capacity(); ++v)
-    if (d.contains(v)) out.push_back(d.mesh().point(v));
-  return out;
-}
-
-// "" or what differs from the from-scratch triangulation of every registered variant.
-std::string compare_with_every_variant(const DynamicDelaunay2& d) {
-  d.mesh().check();
-  const std::vector<Tri> mine = canonical_set(d);
-  const std::vector<Vec2> points = survivors(d);
-  for (const Delaunay2dVariant& variant : delaunay2d_variants()) {
-    bool degenerate = false;
-    const std::vector<Tri> ref = from_scratch(points, std::string(variant.name), &degenerate);
-    if (degenerate) return "survivors degenerate for " + std::string(variant.name);
-    if (mine != ref)
-      return std::to_string(mine.size()) + " triangles against " + std::to_string(ref.size()) + " from scratch by " +
-             std::string(variant.name) + " on " + std::to_string(points.size()) + " points";
-  }
-  return "";
-}
-
 // The degenerate and random generators the sequences draw their points from.
 const std::vector<std::string>& distributions() {
   static const std::vector<std::string> names{"uniform", "grid", "exact_circle", "collinear", "clustered", "duplicates"};
@@ -104,13 +80,13 @@ struct Traits {
   using Dynamic = DynamicDelaunay2;
   static constexpr std::size_t kMinPoints = 3;
   static std::vector<Tri> canonical_set(const Dynamic& d) { return dtlab::canonical_set(d); }
-  static bool degenerate(const std::vector<Vec2>& points) {
-    bool flat = false;
-    (void)from_scratch(points, "incremental", &flat);
-    return flat;
+  static std::vector<Tri> from_scratch(const std::vector<Vec2>& points, const std::string& variant, bool* flat) {
+    return dtlab::from_scratch(points, variant, flat);
   }
-  static std::string compare_with_every_variant(const Dynamic& d) { return dtlab::compare_with_every_variant(d); }
+  static const auto& variants() { return delaunay2d_variants(); }
 };
+
+std::string compare_with_every_variant(const DynamicDelaunay2& d) { return dynamic_test::compare_with_every_variant<Traits>(d); }
 
 RC_GTEST_PROP(DynamicDelaunay2, AnySequenceEqualsFromScratch, ()) {
   const std::string distribution = *rc::gen::elementOf(distributions());

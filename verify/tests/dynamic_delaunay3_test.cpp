@@ -77,29 +77,6 @@ std::vector<Tet> from_scratch(const std::vector<Vec3>& points, const std::string
   return out;
 }
 
-std::vector<Vec3> survivors(const DynamicDelaunay3& d) {
-  std::vector<Vec3> out;
-  for (std::uint32_t v = 0; v < d.mesh().vertex_capacity(); ++v)
-    if (d.contains(v)) out.push_back(d.mesh().point(v));
-  return out;
-}
-
-// "" or what differs from the from-scratch tetrahedralization of every registered variant.
-std::string compare_with_every_variant(const DynamicDelaunay3& d) {
-  d.mesh().check();
-  const std::vector<Tet> mine = canonical_set(d);
-  const std::vector<Vec3> points = survivors(d);
-  for (const Delaunay3dVariant& variant : delaunay3d_variants()) {
-    bool degenerate = false;
-    const std::vector<Tet> ref = from_scratch(points, std::string(variant.name), &degenerate);
-    if (degenerate) return "survivors degenerate for " + std::string(variant.name);
-    if (mine != ref)
-      return std::to_string(mine.size()) + " tetrahedra against " + std::to_string(ref.size()) + " from scratch by " +
-             std::string(variant.name) + " on " + std::to_string(points.size()) + " points";
-  }
-  return "";
-}
-
 const std::vector<std::string>& distributions() {
   static const std::vector<std::string> names{"uniform", "grid", "exact_sphere", "coplanar", "collinear", "duplicates"};
   return names;
@@ -110,13 +87,13 @@ struct Traits {
   using Dynamic = DynamicDelaunay3;
   static constexpr std::size_t kMinPoints = 4;
   static std::vector<Tet> canonical_set(const Dynamic& d) { return dtlab::canonical_set(d); }
-  static bool degenerate(const std::vector<Vec3>& points) {
-    bool flat = false;
-    (void)from_scratch(points, "incremental", &flat);
-    return flat;
+  static std::vector<Tet> from_scratch(const std::vector<Vec3>& points, const std::string& variant, bool* flat) {
+    return dtlab::from_scratch(points, variant, flat);
   }
-  static std::string compare_with_every_variant(const Dynamic& d) { return dtlab::compare_with_every_variant(d); }
+  static const auto& variants() { return delaunay3d_variants(); }
 };
+
+std::string compare_with_every_variant(const DynamicDelaunay3& d) { return dynamic_test::compare_with_every_variant<Traits>(d); }
 
 RC_GTEST_PROP(DynamicDelaunay3, AnySequenceEqualsFromScratch, ()) {
   const std::string distribution = *rc::gen::elementOf(distributions());

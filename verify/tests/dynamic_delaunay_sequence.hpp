@@ -2,9 +2,8 @@
 // run alike, over a traits type T of the dimension:
 //   T::Point, T::Dynamic (DynamicDelaunay2/3), T::kMinPoints (3 or 4),
 //   T::canonical_set(d)               the finite elements as a canonical set of point tuples,
-//   T::degenerate(points)             whether delaunay*d() makes no element of them,
-//   T::compare_with_every_variant(d)  "" or how d differs from every registered variant's
-//                                     construction from scratch on d's survivors.
+//   T::from_scratch(points, variant, &degenerate)  the same from delaunay*d() with `variant`,
+//   T::variants()                     the registered variants (delaunay*d_variants()).
 #pragma once
 
 #include <rapidcheck.h>
@@ -45,6 +44,33 @@ std::vector<std::uint32_t> live_vertices(const Dynamic& d) {
   return live;
 }
 
+// Whether delaunay*d() makes no element of `points`.
+template <class T>
+bool degenerate(const std::vector<typename T::Point>& points) {
+  bool flat = false;
+  (void)T::from_scratch(points, "incremental", &flat);
+  return flat;
+}
+
+// "" or how d differs from the construction from scratch on its survivors by every registered
+// variant (the registry is looped, so a new variant is checked without editing the tests).
+template <class T>
+std::string compare_with_every_variant(const typename T::Dynamic& d) {
+  d.mesh().check();
+  const auto mine = T::canonical_set(d);
+  std::vector<typename T::Point> points;
+  for (const std::uint32_t v : live_vertices(d)) points.push_back(d.mesh().point(v));
+  for (const auto& variant : T::variants()) {
+    bool flat = false;
+    const auto ref = T::from_scratch(points, std::string(variant.name), &flat);
+    if (flat) return "survivors degenerate for " + std::string(variant.name);
+    if (mine != ref)
+      return std::to_string(mine.size()) + " elements against " + std::to_string(ref.size()) + " from scratch by " +
+             std::string(variant.name) + " on " + std::to_string(points.size()) + " points";
+  }
+  return "";
+}
+
 // One random sequence: start from the first `initial` points, then `steps` random insertions
 // (of the points, alive or not), removals and moves, each checked against every variant. Errors
 // are accepted only where they are due, and must leave the structure as it was.
@@ -55,12 +81,12 @@ void run_sequence(const std::vector<typename T::Point>& points, std::size_t init
   RC_PRE(points.size() >= T::kMinPoints);
   initial = std::clamp<std::size_t>(initial, T::kMinPoints, points.size());
   const std::vector<Point> start(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(initial));
-  if (T::degenerate(start)) {
+  if (degenerate<T>(start)) {
     RC_ASSERT_THROWS_AS(typename T::Dynamic{start}, DegenerateRemovalError);
     return;
   }
   typename T::Dynamic d(start);
-  RC_ASSERT(T::compare_with_every_variant(d) == "");
+  RC_ASSERT(compare_with_every_variant<T>(d) == "");
   std::mt19937_64 rng(seed);
   for (std::size_t step = 0; step < steps; ++step) {
     const int op = static_cast<int>(rng() % 3);  // insert, remove, move
@@ -81,7 +107,7 @@ void run_sequence(const std::vector<typename T::Point>& points, std::size_t init
       std::vector<Point> rest;
       for (const std::uint32_t u : live)
         if (u != v) rest.push_back(d.mesh().point(u));
-      const bool rest_degenerate = rest.size() < T::kMinPoints || T::degenerate(rest);
+      const bool rest_degenerate = rest.size() < T::kMinPoints || degenerate<T>(rest);
       const bool same = op == 2 && d.mesh().point(v) == p;
       const bool duplicate = op == 2 && p_alive && !same;
       if (duplicate) {
@@ -99,7 +125,7 @@ void run_sequence(const std::vector<typename T::Point>& points, std::size_t init
         RC_ASSERT(d.contains(id) && d.mesh().point(id) == p);
       }
     }
-    const std::string difference = T::compare_with_every_variant(d);
+    const std::string difference = compare_with_every_variant<T>(d);
     RC_ASSERT(difference == "");
   }
 }
@@ -118,7 +144,7 @@ std::string remove_all_in_turn(typename T::Dynamic& d, std::size_t& removed, std
     } catch (const DegenerateRemovalError&) {
       ++refused;
     }
-    const std::string difference = T::compare_with_every_variant(d);
+    const std::string difference = compare_with_every_variant<T>(d);
     if (!difference.empty()) return "after removing vertex " + std::to_string(v) + ": " + difference;
   }
   return "";
