@@ -27,47 +27,7 @@
 namespace dtlab {
 namespace {
 
-using dynamic_test::distinct;
-using dynamic_test::int_in;
 using dynamic_test::long_runs;
-using dynamic_test::run_sequence;
-
-using Tri = std::array<Vec2, 3>;
-
-bool lex_less(const Vec2& a, const Vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
-
-// A triangle as its points, rotated (orientation kept) so that the lexicographically smallest
-// comes first: a key independent of vertex numbering.
-Tri canonical(const Vec2& a, const Vec2& b, const Vec2& c) {
-  if (lex_less(b, a) && lex_less(b, c)) return {b, c, a};
-  if (lex_less(c, a) && lex_less(c, b)) return {c, a, b};
-  return {a, b, c};
-}
-bool tri_less(const Tri& s, const Tri& t) {
-  for (int k = 0; k < 3; ++k) {
-    if (lex_less(s[k], t[k])) return true;
-    if (lex_less(t[k], s[k])) return false;
-  }
-  return false;
-}
-
-std::vector<Tri> canonical_set(const DynamicDelaunay2& d) {
-  std::vector<Tri> out;
-  for (const auto& [a, b, c] : d.finite_triangles())
-    out.push_back(canonical(d.mesh().point(a), d.mesh().point(b), d.mesh().point(c)));
-  std::sort(out.begin(), out.end(), tri_less);
-  return out;
-}
-
-std::vector<Tri> from_scratch(const std::vector<Vec2>& points, const std::string& variant, bool* degenerate) {
-  const Delaunay2dResult r = delaunay2d(points, {.algorithm = variant});
-  *degenerate = !r.degenerate_message.empty();
-  std::vector<Tri> out;
-  for (const auto& [a, b, c] : r.triangulation.finite_triangles())
-    out.push_back(canonical(points[a], points[b], points[c]));
-  std::sort(out.begin(), out.end(), tri_less);
-  return out;
-}
 
 // The degenerate and random generators the sequences draw their points from.
 const std::vector<std::string>& distributions() {
@@ -79,24 +39,20 @@ struct Traits {
   using Point = Vec2;
   using Dynamic = DynamicDelaunay2;
   static constexpr std::size_t kMinPoints = 3;
-  static std::vector<Tri> canonical_set(const Dynamic& d) { return dtlab::canonical_set(d); }
-  static std::vector<Tri> from_scratch(const std::vector<Vec2>& points, const std::string& variant, bool* flat) {
-    return dtlab::from_scratch(points, variant, flat);
+  static std::vector<std::array<std::uint32_t, 3>> scratch(const std::vector<Vec2>& points,
+                                                           const std::string& variant, bool* flat) {
+    const Delaunay2dResult r = delaunay2d(points, {.algorithm = variant});
+    *flat = !r.degenerate_message.empty();
+    return r.triangulation.finite_triangles();
   }
   static const auto& variants() { return delaunay2d_variants(); }
 };
 
 std::string compare_with_every_variant(const DynamicDelaunay2& d) { return dynamic_test::compare_with_every_variant<Traits>(d); }
+auto canonical_set(const DynamicDelaunay2& d) { return dynamic_test::canonical_set<Traits>(d); }
 
 RC_GTEST_PROP(DynamicDelaunay2, AnySequenceEqualsFromScratch, ()) {
-  const std::string distribution = *rc::gen::elementOf(distributions());
-  const int big = long_runs() ? 400 : 120;
-  const auto n = static_cast<std::size_t>(int_in(3, big));
-  const auto initial = static_cast<std::size_t>(int_in(3, big));
-  const auto steps = static_cast<std::size_t>(int_in(1, long_runs() ? 200 : 40));
-  const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
-  RC_TAG(distribution);
-  run_sequence<Traits>(distinct(generate_points2d(distribution, n, seed)), initial, steps, seed);
+  dynamic_test::random_sequence_property<Traits>(distributions(), generate_points2d, long_runs() ? 400 : 120, long_runs() ? 200 : 40);
 }
 
 // Every interior and hull vertex of a cocircular grid removed in turn, checked after each
@@ -117,14 +73,14 @@ TEST(DynamicDelaunay2, GridRemovedToTheEnd) {
 TEST(DynamicDelaunay2, InsertThenRemoveOnACircle) {
   const std::vector<Vec2> circle = generate_points2d("exact_circle", 64, 3);
   DynamicDelaunay2 d(circle);
-  const std::vector<Tri> without = canonical_set(d);
+  const auto without = canonical_set(d);
   const std::uint32_t centre = d.insert({0.0, 0.0});
   EXPECT_EQ(compare_with_every_variant(d), "");
   d.remove(centre);
   EXPECT_EQ(canonical_set(d), without);
   for (std::uint32_t v = 0; v < 40; ++v) {
     const Vec2 p = d.mesh().point(v);
-    const std::vector<Tri> before = canonical_set(d);
+    const auto before = canonical_set(d);
     d.remove(v);
     EXPECT_EQ(compare_with_every_variant(d), "");
     const std::uint32_t back = d.insert(p);

@@ -26,56 +26,7 @@
 namespace dtlab {
 namespace {
 
-using dynamic_test::distinct;
-using dynamic_test::int_in;
 using dynamic_test::long_runs;
-using dynamic_test::run_sequence;
-
-using Tet = std::array<Vec3, 4>;
-
-bool lex_less(const Vec3& a, const Vec3& b) {
-  return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
-}
-
-// A tetrahedron as its points, permuted evenly (orientation kept) so that the lexicographically
-// smallest comes first and the other three start with their smallest: a key independent of
-// vertex numbering.
-Tet canonical(Tet t) {
-  std::size_t m = 0;
-  for (std::size_t k = 1; k < 4; ++k)
-    if (lex_less(t[k], t[m])) m = k;
-  if (m == 1) t = {t[1], t[0], t[3], t[2]};
-  if (m == 2) t = {t[2], t[3], t[0], t[1]};
-  if (m == 3) t = {t[3], t[2], t[1], t[0]};
-  // Rotate the last three cyclically (an even permutation).
-  while (lex_less(t[2], t[1]) || lex_less(t[3], t[1])) t = {t[0], t[2], t[3], t[1]};
-  return t;
-}
-bool tet_less(const Tet& s, const Tet& t) {
-  for (int k = 0; k < 4; ++k) {
-    if (lex_less(s[k], t[k])) return true;
-    if (lex_less(t[k], s[k])) return false;
-  }
-  return false;
-}
-
-std::vector<Tet> canonical_set(const DynamicDelaunay3& d) {
-  std::vector<Tet> out;
-  for (const auto& q : d.finite_tetrahedra())
-    out.push_back(canonical({d.mesh().point(q[0]), d.mesh().point(q[1]), d.mesh().point(q[2]), d.mesh().point(q[3])}));
-  std::sort(out.begin(), out.end(), tet_less);
-  return out;
-}
-
-std::vector<Tet> from_scratch(const std::vector<Vec3>& points, const std::string& variant, bool* degenerate) {
-  const Delaunay3dResult r = delaunay3d(points, {.algorithm = variant});
-  *degenerate = !r.degenerate_message.empty();
-  std::vector<Tet> out;
-  for (const auto& q : r.tetrahedralization.finite_tetrahedra())
-    out.push_back(canonical({points[q[0]], points[q[1]], points[q[2]], points[q[3]]}));
-  std::sort(out.begin(), out.end(), tet_less);
-  return out;
-}
 
 const std::vector<std::string>& distributions() {
   static const std::vector<std::string> names{"uniform", "grid", "exact_sphere", "coplanar", "collinear", "duplicates"};
@@ -86,24 +37,20 @@ struct Traits {
   using Point = Vec3;
   using Dynamic = DynamicDelaunay3;
   static constexpr std::size_t kMinPoints = 4;
-  static std::vector<Tet> canonical_set(const Dynamic& d) { return dtlab::canonical_set(d); }
-  static std::vector<Tet> from_scratch(const std::vector<Vec3>& points, const std::string& variant, bool* flat) {
-    return dtlab::from_scratch(points, variant, flat);
+  static std::vector<std::array<std::uint32_t, 4>> scratch(const std::vector<Vec3>& points,
+                                                           const std::string& variant, bool* flat) {
+    const Delaunay3dResult r = delaunay3d(points, {.algorithm = variant});
+    *flat = !r.degenerate_message.empty();
+    return r.tetrahedralization.finite_tetrahedra();
   }
   static const auto& variants() { return delaunay3d_variants(); }
 };
 
 std::string compare_with_every_variant(const DynamicDelaunay3& d) { return dynamic_test::compare_with_every_variant<Traits>(d); }
+auto canonical_set(const DynamicDelaunay3& d) { return dynamic_test::canonical_set<Traits>(d); }
 
 RC_GTEST_PROP(DynamicDelaunay3, AnySequenceEqualsFromScratch, ()) {
-  const std::string distribution = *rc::gen::elementOf(distributions());
-  const int big = long_runs() ? 300 : 60;
-  const auto n = static_cast<std::size_t>(int_in(4, big));
-  const auto initial = static_cast<std::size_t>(int_in(4, big));
-  const auto steps = static_cast<std::size_t>(int_in(1, long_runs() ? 120 : 25));
-  const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
-  RC_TAG(distribution);
-  run_sequence<Traits>(distinct(generate_points3d(distribution, n, seed)), initial, steps, seed);
+  dynamic_test::random_sequence_property<Traits>(distributions(), generate_points3d, long_runs() ? 300 : 60, long_runs() ? 120 : 25);
 }
 
 // Every vertex of a cospherical grid removed in turn, checked after each removal.
@@ -125,14 +72,14 @@ TEST(DynamicDelaunay3, GridRemovedToTheEnd) {
 TEST(DynamicDelaunay3, InsertThenRemoveOnASphere) {
   const std::vector<Vec3> sphere = generate_points3d("exact_sphere", 60, 3);
   DynamicDelaunay3 d(sphere);
-  const std::vector<Tet> without = canonical_set(d);
+  const auto without = canonical_set(d);
   const std::uint32_t centre = d.insert({0.0, 0.0, 0.0});
   EXPECT_EQ(compare_with_every_variant(d), "");
   d.remove(centre);
   EXPECT_EQ(canonical_set(d), without);
   for (std::uint32_t v = 0; v < 30; ++v) {
     const Vec3 p = d.mesh().point(v);
-    const std::vector<Tet> before = canonical_set(d);
+    const auto before = canonical_set(d);
     d.remove(v);
     EXPECT_EQ(compare_with_every_variant(d), "");
     d.insert(p);

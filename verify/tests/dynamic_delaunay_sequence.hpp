@@ -1,14 +1,17 @@
 // What the two dynamic Delaunay tests (dynamic_delaunay2_test.cpp, dynamic_delaunay3_test.cpp)
 // run alike, over a traits type T of the dimension:
 //   T::Point, T::Dynamic (DynamicDelaunay2/3), T::kMinPoints (3 or 4),
-//   T::canonical_set(d)               the finite elements as a canonical set of point tuples,
-//   T::from_scratch(points, variant, &degenerate)  the same from delaunay*d() with `variant`,
+//   T::scratch(points, variant, &degenerate)  delaunay*d()'s finite elements (vertex ids) with
+//                                     `variant`, and whether it made none,
 //   T::variants()                     the registered variants (delaunay*d_variants()).
+// Elements are compared as canonical sets of oriented point tuples, independent of numbering.
 #pragma once
 
 #include <rapidcheck.h>
 
 #include <algorithm>
+#include <array>
+#include <span>
 #include <cstdint>
 #include <cstdlib>
 #include <random>
@@ -16,6 +19,7 @@
 #include <vector>
 
 #include "algorithms/common/dynamic_delaunay_errors.hpp"
+#include "kernel/vec.hpp"
 
 namespace dtlab::dynamic_test {
 
@@ -26,6 +30,58 @@ inline bool long_runs() {
 
 // Uniform whatever rapidcheck's current size (inRange scales its range with the size).
 inline int int_in(int lo, int hi) { return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi + 1)); }
+
+inline bool lex_less(const Vec2& a, const Vec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+inline bool lex_less(const Vec3& a, const Vec3& b) {
+  return a.x < b.x || (a.x == b.x && (a.y < b.y || (a.y == b.y && a.z < b.z)));
+}
+
+// An oriented simplex as its points sorted lexicographically and the parity of the permutation
+// that sorted them: equal for two simplices iff they have the same points and orientation.
+template <class Point, std::size_t K>
+struct Simplex {
+  std::array<Point, K> points;
+  bool odd = false;
+  bool operator==(const Simplex&) const = default;
+  bool operator<(const Simplex& o) const {
+    for (std::size_t k = 0; k < K; ++k) {
+      if (lex_less(points[k], o.points[k])) return true;
+      if (lex_less(o.points[k], points[k])) return false;
+    }
+    return odd < o.odd;
+  }
+};
+
+template <class Point, std::size_t K>
+std::vector<Simplex<Point, K>> canonical(std::span<const std::array<std::uint32_t, K>> elements,
+                                         const auto& point_of) {
+  std::vector<Simplex<Point, K>> out;
+  out.reserve(elements.size());
+  for (const auto& e : elements) {
+    Simplex<Point, K> s;
+    for (std::size_t k = 0; k < K; ++k) s.points[k] = point_of(e[k]);
+    for (std::size_t i = 1; i < K; ++i)  // insertion sort, counting swaps
+      for (std::size_t j = i; j > 0 && lex_less(s.points[j], s.points[j - 1]); --j) {
+        std::swap(s.points[j], s.points[j - 1]);
+        s.odd = !s.odd;
+      }
+    out.push_back(s);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+template <class T>
+auto canonical_set(const typename T::Dynamic& d) {
+  const auto elements = d.finite_elements();
+  return canonical<typename T::Point>(std::span(elements), [&](std::uint32_t v) { return d.mesh().point(v); });
+}
+
+template <class T>
+auto from_scratch(const std::vector<typename T::Point>& points, const std::string& variant, bool* flat) {
+  const auto elements = T::scratch(points, variant, flat);
+  return canonical<typename T::Point>(std::span(elements), [&](std::uint32_t v) { return points[v]; });
+}
 
 // The distinct points of `raw`, in order.
 template <class Point>
@@ -48,7 +104,7 @@ std::vector<std::uint32_t> live_vertices(const Dynamic& d) {
 template <class T>
 bool degenerate(const std::vector<typename T::Point>& points) {
   bool flat = false;
-  (void)T::from_scratch(points, "incremental", &flat);
+  (void)from_scratch<T>(points, "incremental", &flat);
   return flat;
 }
 
@@ -57,12 +113,12 @@ bool degenerate(const std::vector<typename T::Point>& points) {
 template <class T>
 std::string compare_with_every_variant(const typename T::Dynamic& d) {
   d.mesh().check();
-  const auto mine = T::canonical_set(d);
+  const auto mine = canonical_set<T>(d);
   std::vector<typename T::Point> points;
   for (const std::uint32_t v : live_vertices(d)) points.push_back(d.mesh().point(v));
   for (const auto& variant : T::variants()) {
     bool flat = false;
-    const auto ref = T::from_scratch(points, std::string(variant.name), &flat);
+    const auto ref = from_scratch<T>(points, std::string(variant.name), &flat);
     if (flat) return "survivors degenerate for " + std::string(variant.name);
     if (mine != ref)
       return std::to_string(mine.size()) + " elements against " + std::to_string(ref.size()) + " from scratch by " +
@@ -94,11 +150,11 @@ void run_sequence(const std::vector<typename T::Point>& points, std::size_t init
     const std::vector<std::uint32_t> live = live_vertices(d);
     const std::uint32_t v = live[rng() % live.size()];
     const bool p_alive = std::any_of(live.begin(), live.end(), [&](std::uint32_t u) { return d.mesh().point(u) == p; });
-    const auto before = T::canonical_set(d);
+    const auto before = canonical_set<T>(d);
     if (op == 0) {
       if (p_alive) {
         RC_ASSERT_THROWS_AS(d.insert(p), DuplicatePointError);
-        RC_ASSERT(T::canonical_set(d) == before);
+        RC_ASSERT(canonical_set<T>(d) == before);
       } else {
         const std::uint32_t id = d.insert(p);
         RC_ASSERT(d.contains(id) && d.mesh().point(id) == p);
@@ -112,11 +168,11 @@ void run_sequence(const std::vector<typename T::Point>& points, std::size_t init
       const bool duplicate = op == 2 && p_alive && !same;
       if (duplicate) {
         RC_ASSERT_THROWS_AS(d.move(v, p), DuplicatePointError);
-        RC_ASSERT(T::canonical_set(d) == before);
+        RC_ASSERT(canonical_set<T>(d) == before);
       } else if (rest_degenerate && !same) {
         if (op == 1) RC_ASSERT_THROWS_AS(d.remove(v), DegenerateRemovalError);
         else RC_ASSERT_THROWS_AS(d.move(v, p), DegenerateRemovalError);
-        RC_ASSERT(T::canonical_set(d) == before);
+        RC_ASSERT(canonical_set<T>(d) == before);
       } else if (op == 1) {
         d.remove(v);
         RC_ASSERT(!d.contains(v));
@@ -128,6 +184,20 @@ void run_sequence(const std::vector<typename T::Point>& points, std::size_t init
     const std::string difference = compare_with_every_variant<T>(d);
     RC_ASSERT(difference == "");
   }
+}
+
+// The property: a random sequence on points of one of `distributions` made by generate(name, n,
+// seed), sizes up to `big` points and `steps` changes.
+template <class T, class Generate>
+void random_sequence_property(const std::vector<std::string>& distributions, Generate&& generate, int big, int steps) {
+  const std::string distribution = *rc::gen::elementOf(distributions);
+  const int least = static_cast<int>(T::kMinPoints);
+  const auto n = static_cast<std::size_t>(int_in(least, big));
+  const auto initial = static_cast<std::size_t>(int_in(least, big));
+  const auto changes = static_cast<std::size_t>(int_in(1, steps));
+  const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
+  RC_TAG(distribution);
+  run_sequence<T>(distinct(generate(distribution, n, seed)), initial, changes, seed);
 }
 
 // Every vertex removed in a shuffled order, checked after each removal; the removals refused as
