@@ -8,6 +8,7 @@
 #include <tuple>
 #include <utility>
 
+#include "algorithms/common/conflict_cavity.hpp"
 #include "algorithms/common/dynamic_delaunay_move.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/predicates.hpp"
@@ -89,28 +90,10 @@ std::uint32_t DynamicDelaunay2::insert(const Vec2& p) {
     std::uint32_t origin, destination, outside;
   };
   static thread_local std::vector<Boundary> boundary;
+  conflict_cavity<3>(mesh_, start, [&](std::uint32_t t) { return in_conflict(t, p); }, stamp_, epoch_,
+                     mesh_.live_triangle_count(), cavity_, stack_, handles_);
   boundary.clear();
-  cavity_.clear();
-  stack_.assign(1, start);
-  stamp_[start] = epoch_;
-  while (!stack_.empty()) {
-    const std::uint32_t t = stack_.back();
-    stack_.pop_back();
-    cavity_.push_back(t);
-    DTLAB_ASSERT(cavity_.size() <= mesh_.live_triangle_count());
-    for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h) {
-      const std::uint32_t g = mesh_.twin(h);
-      const std::uint32_t u = Mesh2::triangle_of(g);
-      if (stamp_[u] == epoch_) continue;
-      if (stamp_[u] != epoch_ + 1 && in_conflict(u, p)) {
-        stamp_[u] = epoch_;
-        stack_.push_back(u);
-      } else {
-        stamp_[u] = epoch_ + 1;
-        boundary.push_back({mesh_.origin(h), mesh_.destination(h), g});
-      }
-    }
-  }
+  for (const std::uint32_t h : handles_) boundary.push_back({mesh_.origin(h), mesh_.destination(h), mesh_.twin(h)});
   stats_.cavity_triangles += cavity_.size();
   for (const std::uint32_t t : cavity_) {
     if (!mesh_.is_ghost(t)) --finite_triangles_;

@@ -82,7 +82,7 @@ class DynamicDelaunay2 {
   std::uint32_t hint_ = 0;  // a live triangle near the last change, where locate starts
   DynamicDelaunay2Stats stats_;
   // Scratch, kept between calls.
-  std::vector<std::uint32_t> cavity_, stack_, ball_, polygon_, outside_;
+  std::vector<std::uint32_t> cavity_, stack_, handles_, ball_, polygon_, outside_;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t epoch_ = 0;
 };

@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "algorithms/common/conflict_cavity.hpp"
 #include "algorithms/common/dynamic_delaunay_move.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/predicates.hpp"
@@ -152,31 +153,12 @@ std::uint32_t DynamicDelaunay3::insert(const Vec3& p) {
   DTLAB_ASSERT(in_conflict(start, p));
   epoch_ += 2;
   if (stamp_.size() < mesh_.tetrahedron_capacity()) stamp_.resize(mesh_.tetrahedron_capacity(), 0);
+  conflict_cavity<4>(mesh_, start, [&](std::uint32_t t) { return in_conflict(t, p); }, stamp_, epoch_,
+                     mesh_.live_tetrahedron_count(), cavity_, stack_, queue_);
   static thread_local std::vector<Triple> faces;
   faces.clear();
   outside_.clear();
-  cavity_.clear();
-  stack_.assign(1, start);
-  stamp_[start] = epoch_;
-  while (!stack_.empty()) {
-    const std::uint32_t t = stack_.back();
-    stack_.pop_back();
-    cavity_.push_back(t);
-    DTLAB_ASSERT(cavity_.size() <= mesh_.live_tetrahedron_count());
-    for (std::uint32_t h = 4 * t; h < 4 * t + 4; ++h) {
-      const std::uint32_t g = mesh_.twin(h);
-      const std::uint32_t u = Mesh3::tetrahedron_of(g);
-      if (stamp_[u] == epoch_) continue;
-      if (stamp_[u] != epoch_ + 1 && in_conflict(u, p)) {
-        stamp_[u] = epoch_;
-        stack_.push_back(u);
-      } else {
-        stamp_[u] = epoch_ + 1;
-        faces.push_back(mesh_.facet_vertices(h));
-        outside_.push_back(g);
-      }
-    }
-  }
+  for (const std::uint32_t h : queue_) faces.push_back(mesh_.facet_vertices(h)), outside_.push_back(mesh_.twin(h));
   stats_.cavity_tetrahedra += cavity_.size();
   for (const std::uint32_t t : cavity_) {
     if (!mesh_.is_ghost(t)) --finite_;
