@@ -9,6 +9,7 @@
 #include "algorithms/delaunay2d/registry.hpp"
 #include "apps/cli_util.hpp"
 #include "apps/delaunay3d.hpp"
+#include "apps/delaunay_remove.hpp"
 #include "mesh/io/any_format.hpp"
 #include "mesh/io/staged_outputs.hpp"
 #include "apps/subcommands.hpp"
@@ -39,6 +40,8 @@ struct DelaunayArgs {
   std::string distribution = "uniform";
   std::uint64_t seed = 1;
   unsigned threads = 1;
+  std::string remove_file;        // --remove: apps/delaunay_remove.hpp
+  double remove_fraction = -1.0;  // --remove-random
 };
 
 std::string list_items(const std::vector<std::uint32_t>& items, const std::vector<std::uint32_t>& of,
@@ -59,6 +62,10 @@ int run_delaunay(const DelaunayArgs& args) {
   }
   if (args.input.empty() == (args.random == 0)) {
     throw InputError("give either an INPUT file or --random N");
+  }
+  if (!args.remove_file.empty() || args.remove_fraction >= 0.0) {
+    return run_delaunay_remove({args.input, args.output, args.algorithm, args.stats, args.verify, args.random,
+                                args.distribution, args.seed, args.dim, args.remove_file, args.remove_fraction});
   }
   if (args.dim == 3 || (!args.input.empty() && input_dimension(args.input) == 3)) {
     return run_delaunay3d({args.input, args.output, args.algorithm, args.stats, args.verify, args.random,
@@ -164,6 +171,11 @@ void add_delaunay(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Seed of the generated points")
       ->capture_default_str()
       ->check(integer_in(0, UINT64_MAX));
+  cmd->add_option("--remove", args->remove_file,
+                  "Then remove the points numbered (from 1) in this file, in its order, and write the survivors' "
+                  "mesh (dynamic Delaunay removal)");
+  cmd->add_option("--remove-random", args->remove_fraction,
+                  "Then remove this fraction F (0 < F <= 1) of the points, drawn with --seed");
   cmd->callback([args] {
     exit_code() = run_delaunay(*args);
   });
