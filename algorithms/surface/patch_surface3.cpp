@@ -1,6 +1,7 @@
 // PatchSurface3: the charts and seams of each kind of surface (patch_surface3.hpp).
 #include "algorithms/surface/patch_surface3.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -178,6 +179,22 @@ PatchSurface3 PatchSurface3::bspline(Patch3 patch, const Vec2& lo, const Vec2& h
   s.charts_.push_back(rectangle(std::move(patch), lo, hi));
   s.check_regular();
   return s;
+}
+
+double PatchSurface3::extent() const {
+  constexpr int kSamples = 17;
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const PatchChart3& chart : charts_) {
+    for (int i = 0; i < kSamples; ++i) {
+      for (int j = 0; j < kSamples; ++j) {
+        const Vec3 p = chart.patch.point({chart.lo.x + (chart.hi.x - chart.lo.x) * i / (kSamples - 1),
+                                          chart.lo.y + (chart.hi.y - chart.lo.y) * j / (kSamples - 1)});
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+      }
+    }
+  }
+  return norm(hi - lo);
 }
 
 void PatchSurface3::check_regular() const {

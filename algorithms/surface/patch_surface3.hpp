@@ -59,6 +59,8 @@ class PatchSurface3 {
   // |sigma_u x sigma_v| <= 1e-12 |sigma_u| |sigma_v| at a point of a 17 x 17 sample of a chart
   // (a measure, never a combinatorial decision); every constructor calls it.
   void check_regular() const;
+  // The diagonal of the box of a 17 x 17 sample of every chart: a length scale for defaults.
+  double extent() const;
 
  private:
   std::string name_;

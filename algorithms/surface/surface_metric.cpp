@@ -14,7 +14,8 @@ void SurfaceMetricSpec::check() const {
     throw InputError("surface metric: give a size, a user metric or a geometric metric");
   if (size != 0.0) check_size(size, "size");
   if (geometric != GeometricMetric::None) {
-    if (!(relative_gap > 0.0 && relative_gap < 1.0))
+    if (hausdorff != 0.0) check_size(hausdorff, "hausdorff");
+    if (hausdorff == 0.0 && !(relative_gap > 0.0 && relative_gap < 1.0))
       throw InputError("surface metric: relative gap " + std::to_string(relative_gap) + " outside (0, 1)");
     if (h_min != 0.0) check_size(h_min, "h_min");
     if (h_max != 0.0) check_size(h_max, "h_max");
@@ -70,7 +71,10 @@ Metric2 geometric_metric(const PatchDerivatives& d, const SurfaceMetricSpec& spe
   const double lo = spec.h_min > 0.0 ? spec.h_min : kMinMetricSize;
   const double hi = spec.h_max > 0.0 ? spec.h_max : kMaxMetricSize;
   auto size_of = [&](double k) {
-    const double h = k != 0.0 ? alpha / std::abs(k) : hi;  // alpha rho, rho = 1 / |k|
+    if (k == 0.0) return hi;
+    const double rho = 1.0 / std::abs(k);
+    const double e = spec.hausdorff;
+    const double h = e > 0.0 ? (e >= rho ? 2.0 * rho : 2.0 * std::sqrt(e * (2.0 * rho - e))) : alpha * rho;
     return std::clamp(h, lo, hi);
   };
   const PrincipalCurvatures c = principal_curvatures(d);

@@ -30,6 +30,9 @@ struct SurfaceMetricSpec {
   std::function<Metric3(const Vec3&)> user_metric;
   GeometricMetric geometric = GeometricMetric::None;
   double relative_gap = 0.01;  // eps of alpha = 2 sqrt(eps (2 - eps))
+  // An absolute gap E instead (when > 0): the chord whose sagitta on a circle of radius rho is E,
+  // 2 sqrt(E (2 rho - E)) (2 rho when E >= rho).
+  double hausdorff = 0.0;
   double h_min = 0.0, h_max = 0.0;  // the geometric sizes' clip; h_max = 0: no upper bound but kMaxMetricSize
 
   // InputError naming the field: no metric at all, a size, gap or bound out of range.
