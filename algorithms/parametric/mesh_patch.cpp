@@ -69,6 +69,29 @@ std::vector<double> cut_side(const PatchChart3& chart, std::uint32_t chart_index
   return s_values;
 }
 
+// The control space of a chart (§6.3.1): a grid of its parameter box, two triangles a cell, with
+// the exact metric at its vertices.
+ControlSpace2 chart_control_space(const PatchChart3& chart, const SurfaceMeshOptions& options) {
+  const std::uint32_t cells = std::max<std::uint32_t>(options.background_cells, 2);
+  MeshData2 grid;
+  std::vector<Metric2> metrics;
+  for (std::uint32_t j = 0; j <= cells; ++j) {
+    for (std::uint32_t i = 0; i <= cells; ++i) {
+      const Vec2 uv{chart.lo.x + (chart.hi.x - chart.lo.x) * i / cells, chart.lo.y + (chart.hi.y - chart.lo.y) * j / cells};
+      grid.vertices.push_back(uv);
+      metrics.push_back(parameter_metric(chart.patch.evaluate(uv), options.metric));
+    }
+  }
+  for (std::uint32_t j = 0; j < cells; ++j) {
+    for (std::uint32_t i = 0; i < cells; ++i) {
+      const std::uint32_t a = j * (cells + 1) + i, b = a + 1, d = a + cells + 1, e = d + 1;
+      grid.triangles.push_back({a, b, e});
+      grid.triangles.push_back({a, e, d});
+    }
+  }
+  return ControlSpace2(grid, std::move(metrics), options.interpolation);
+}
+
 struct UnionFind {
   std::vector<std::uint32_t> parent;
   std::uint32_t find(std::uint32_t x) {
@@ -183,25 +206,7 @@ SurfaceMeshResult mesh_patch_surface(const PatchSurface3& surface, const Surface
     for (std::uint32_t i = 0; i < n; ++i) segments.push_back({i, (i + 1) % n});
     const Mesh2dInput input{.points = points, .segments = segments, .segment_markers = markers, .holes = {}, .regions = {}};
 
-    // The control space: a grid of the parameter box with the exact metric at its vertices.
-    const std::uint32_t cells = std::max<std::uint32_t>(options.background_cells, 2);
-    MeshData2 grid;
-    std::vector<Metric2> grid_metrics;
-    for (std::uint32_t j = 0; j <= cells; ++j) {
-      for (std::uint32_t i = 0; i <= cells; ++i) {
-        const Vec2 uv{chart.lo.x + (chart.hi.x - chart.lo.x) * i / cells, chart.lo.y + (chart.hi.y - chart.lo.y) * j / cells};
-        grid.vertices.push_back(uv);
-        grid_metrics.push_back(parameter_metric(chart.patch.evaluate(uv), options.metric));
-      }
-    }
-    for (std::uint32_t j = 0; j < cells; ++j) {
-      for (std::uint32_t i = 0; i < cells; ++i) {
-        const std::uint32_t a = j * (cells + 1) + i, b = a + 1, d = a + cells + 1, e = d + 1;
-        grid.triangles.push_back({a, b, e});
-        grid.triangles.push_back({a, e, d});
-      }
-    }
-    const ControlSpace2 control(grid, std::move(grid_metrics), options.interpolation);
+    const ControlSpace2 control = chart_control_space(chart, options);
     Mesh2dOptions mesh_options;
     mesh_options.control = &control;
     mesh_options.keep_boundary = true;

@@ -104,12 +104,7 @@ void check_knots(const std::vector<double>& knots, std::size_t count, std::uint3
 }  // namespace
 
 Patch3 Patch3::plane(const Vec3& origin, const Vec3& e1, const Vec3& e2) {
-  Patch3 p;
-  p.kind_ = Kind::Plane;
-  p.centre_ = origin;
-  p.e1_ = e1;
-  p.e2_ = e2;
-  return p;
+  return framed(Kind::Plane, origin, e1, e2, 0.0, 0.0, 0.0);
 }
 
 Patch3 Patch3::sphere_face(const Vec3& centre, double radius, std::uint32_t face) {
@@ -127,38 +122,29 @@ Patch3 Patch3::sphere_face(const Vec3& centre, double radius, std::uint32_t face
   return p;
 }
 
-Patch3 Patch3::cone(const Vec3& centre, const Vec3& e1, const Vec3& e2, double r0, double r1, double height) {
+Patch3 Patch3::framed(Kind kind, const Vec3& centre, const Vec3& e1, const Vec3& e2, double a, double b, double c) {
   Patch3 p;
-  p.kind_ = Kind::Cone;
+  p.kind_ = kind;
   p.centre_ = centre;
   p.e1_ = e1;
   p.e2_ = e2;
   p.e3_ = cross(e1, e2);
-  p.a_ = r0;
-  p.b_ = r1;
-  p.c_ = height;
+  p.a_ = a;
+  p.b_ = b;
+  p.c_ = c;
   return p;
+}
+
+Patch3 Patch3::cone(const Vec3& centre, const Vec3& e1, const Vec3& e2, double r0, double r1, double height) {
+  return framed(Kind::Cone, centre, e1, e2, r0, r1, height);
 }
 
 Patch3 Patch3::torus(const Vec3& centre, const Vec3& e1, const Vec3& e2, double major, double minor) {
-  Patch3 p;
-  p.kind_ = Kind::Torus;
-  p.centre_ = centre;
-  p.e1_ = e1;
-  p.e2_ = e2;
-  p.e3_ = cross(e1, e2);
-  p.a_ = major;
-  p.b_ = minor;
-  return p;
+  return framed(Kind::Torus, centre, e1, e2, major, minor, 0.0);
 }
 
 Patch3 Patch3::sine_graph(double amplitude, double frequency_u, double frequency_v) {
-  Patch3 p;
-  p.kind_ = Kind::SineGraph;
-  p.a_ = amplitude;
-  p.b_ = frequency_u;
-  p.c_ = frequency_v;
-  return p;
+  return framed(Kind::SineGraph, {}, {1, 0, 0}, {0, 1, 0}, amplitude, frequency_u, frequency_v);
 }
 
 Patch3 Patch3::bspline(std::vector<Vec3> controls, std::uint32_t count_u, std::uint32_t count_v,

@@ -47,6 +47,8 @@ class Patch3 {
  private:
   enum class Kind : std::uint8_t { Plane, SphereFace, Cone, Torus, SineGraph, BSpline };
   PatchDerivatives bspline_derivatives(const Vec2& uv) const;
+  // centre, the frame e1, e2, e3 = e1 x e2 and the three shape numbers.
+  static Patch3 framed(Kind kind, const Vec3& centre, const Vec3& e1, const Vec3& e2, double a, double b, double c);
 
   Kind kind_ = Kind::Plane;
   Vec3 centre_{}, e1_{}, e2_{}, e3_{};
