@@ -169,29 +169,34 @@ Patch3 Patch3::bspline(std::vector<Vec3> controls, std::uint32_t count_u, std::u
   p.count_v_ = count_v;
   p.degree_u_ = degree_u;
   p.degree_v_ = degree_v;
+  p.build_derivative_nets();
   return p;
+}
+
+void Patch3::build_derivative_nets() {
+  const std::size_t nu = count_u_, nv = count_v_;
+  const std::uint32_t p = degree_u_, q = degree_v_;
+  // Along u on the rows; along v on the transpose, turned back.
+  du_net_ = derivative_net_u(controls_, nu, nv, knots_u_, p);
+  duu_net_ = derivative_net_u(du_net_, nu - 1, nv, inner(knots_u_), p - (p > 0));
+  const std::vector<Vec3> dv_t = derivative_net_u(transpose(controls_, nu, nv), nv, nu, knots_v_, q);
+  dv_net_ = dv_t.empty() ? dv_t : transpose(dv_t, nv - 1, nu);
+  const std::vector<Vec3> dvv_t = derivative_net_u(dv_t, nv - 1, nu, inner(knots_v_), q - (q > 0));
+  dvv_net_ = dvv_t.empty() ? dvv_t : transpose(dvv_t, nv - 2, nu);
+  duv_net_ = dv_net_.empty() ? dv_net_ : derivative_net_u(dv_net_, nu, nv - 1, knots_u_, p);
 }
 
 PatchDerivatives Patch3::bspline_derivatives(const Vec2& uv) const {
   const std::size_t nu = count_u_, nv = count_v_;
   const std::uint32_t p = degree_u_, q = degree_v_;
   const std::vector<double> ku1 = inner(knots_u_), kv1 = inner(knots_v_);
-  const std::vector<double> ku2 = inner(ku1), kv2 = inner(kv1);
-  // Derivative nets along u (rows) and along v (through the transpose).
-  const std::vector<Vec3> pu = derivative_net_u(controls_, nu, nv, knots_u_, p);
-  const std::vector<Vec3> puu = derivative_net_u(pu, nu - 1, nv, ku1, p - (p > 0));
-  const std::vector<Vec3> pv_t = derivative_net_u(transpose(controls_, nu, nv), nv, nu, knots_v_, q);
-  const std::vector<Vec3> pv = pv_t.empty() ? pv_t : transpose(pv_t, nv - 1, nu);
-  const std::vector<Vec3> pvv_t = derivative_net_u(pv_t, nv - 1, nu, kv1, q - (q > 0));
-  const std::vector<Vec3> pvv = pvv_t.empty() ? pvv_t : transpose(pvv_t, nv - 2, nu);
-  const std::vector<Vec3> puv = pv.empty() ? pv : derivative_net_u(pv, nu, nv - 1, knots_u_, p);
   PatchDerivatives d;
   d.point = tensor_sum(controls_, nu, nv, knots_u_, knots_v_, p, q, uv);
-  if (p >= 1) d.du = tensor_sum(pu, nu - 1, nv, ku1, knots_v_, p - 1, q, uv);
-  if (p >= 2) d.duu = tensor_sum(puu, nu - 2, nv, ku2, knots_v_, p - 2, q, uv);
-  if (q >= 1) d.dv = tensor_sum(pv, nu, nv - 1, knots_u_, kv1, p, q - 1, uv);
-  if (q >= 2) d.dvv = tensor_sum(pvv, nu, nv - 2, knots_u_, kv2, p, q - 2, uv);
-  if (p >= 1 && q >= 1) d.duv = tensor_sum(puv, nu - 1, nv - 1, ku1, kv1, p - 1, q - 1, uv);
+  if (p >= 1) d.du = tensor_sum(du_net_, nu - 1, nv, ku1, knots_v_, p - 1, q, uv);
+  if (p >= 2) d.duu = tensor_sum(duu_net_, nu - 2, nv, inner(ku1), knots_v_, p - 2, q, uv);
+  if (q >= 1) d.dv = tensor_sum(dv_net_, nu, nv - 1, knots_u_, kv1, p, q - 1, uv);
+  if (q >= 2) d.dvv = tensor_sum(dvv_net_, nu, nv - 2, knots_u_, inner(kv1), p, q - 2, uv);
+  if (p >= 1 && q >= 1) d.duv = tensor_sum(duv_net_, nu - 1, nv - 1, ku1, kv1, p - 1, q - 1, uv);
   return d;
 }
 

@@ -47,6 +47,7 @@ class Patch3 {
  private:
   enum class Kind : std::uint8_t { Plane, SphereFace, Cone, Torus, SineGraph, BSpline };
   PatchDerivatives bspline_derivatives(const Vec2& uv) const;
+  void build_derivative_nets();
   // centre, the frame e1, e2, e3 = e1 x e2 and the three shape numbers.
   static Patch3 framed(Kind kind, const Vec3& centre, const Vec3& e1, const Vec3& e2, double a, double b, double c);
 
@@ -54,6 +55,7 @@ class Patch3 {
   Vec3 centre_{}, e1_{}, e2_{}, e3_{};
   double a_ = 0, b_ = 0, c_ = 0;  // radius / (r0, r1, height) / (R, r) / (amplitude, fu, fv)
   std::vector<Vec3> controls_;
+  std::vector<Vec3> du_net_, duu_net_, dv_net_, dvv_net_, duv_net_;  // the derivative control nets
   std::vector<double> knots_u_, knots_v_;
   std::uint32_t count_u_ = 0, count_v_ = 0, degree_u_ = 0, degree_v_ = 0;
 };

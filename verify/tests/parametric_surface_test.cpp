@@ -102,6 +102,24 @@ TEST(SurfaceMetric, InducedMetricMeasuresThreeDLengthOverH) {
   EXPECT_NEAR(g.length(w1), std::abs(c.k1) / alpha, 1e-9 * std::abs(c.k1) / alpha);
 }
 
+// §6.3.3's physico-geometric case: the user's 3D map and the geometric one intersected; every
+// tangent vector is at least as long in the result as in each (the largest ellipse inside both).
+RC_GTEST_PROP(SurfaceMetric, IntersectionIsInsideBoth, ()) {
+  const double x = *rc::gen::inRange(-290, 290) / 100.0, y = *rc::gen::inRange(-290, 290) / 100.0;
+  const double angle = *rc::gen::inRange(0, 628) / 100.0;
+  const PatchDerivatives d = Patch3::sine_graph(3.0, 2.0, 2.0).evaluate({x, y});
+  const auto user = [](const Vec3& p) { return Metric3::from_sizes({1, 0, 0}, {0, 1, 0}, 0.2, 0.2, 0.01 + 0.1 * std::abs(p.z)); };
+  SurfaceMetricSpec spec{.size = 0.0, .user_metric = user, .geometric = GeometricMetric::Anisotropic, .relative_gap = 0.02,
+                         .hausdorff = 0.0, .h_min = 0.01, .h_max = 1.0};
+  const Metric2 both = parameter_metric(d, spec);
+  const Metric2 geometric = geometric_metric(d, spec), pulled = pull_back(d, user(d.point));
+  const Vec2 w{std::cos(angle), std::sin(angle)};
+  RC_ASSERT(both.length(w) >= (1.0 - 1e-9) * geometric.length(w));
+  RC_ASSERT(both.length(w) >= (1.0 - 1e-9) * pulled.length(w));
+  // and no longer than the two together could ask for (sum of the quadratic forms).
+  RC_ASSERT(both.length(w) <= (1.0 + 1e-9) * std::hypot(geometric.length(w), pulled.length(w)));
+}
+
 // Mesh checks shared by the surfaces.
 struct EdgeUse {
   int forward = 0, backward = 0;
