@@ -188,6 +188,29 @@ TEST(MeshPatch, TorusIsClosedAndOnTheSurface) {
   EXPECT_EQ(static_cast<long>(r.surface.vertices.size()) - static_cast<long>(edges) + static_cast<long>(r.surface.triangles.size()), 0);
 }
 
+// Any sphere or torus (random centre, axis, radii, size): closed, of the right Euler
+// characteristic, every vertex on the surface.
+RC_GTEST_PROP(MeshPatch, RandomSpheresAndToriAreClosed, ()) {
+  const Vec3 centre{*rc::gen::inRange(-100, 100) / 10.0, *rc::gen::inRange(-100, 100) / 10.0, *rc::gen::inRange(-100, 100) / 10.0};
+  const double radius = *rc::gen::inRange(5, 50) / 10.0;
+  const double size = radius * *rc::gen::inRange(15, 200) / 100.0;
+  const bool torus = *rc::gen::arbitrary<bool>();
+  const Vec3 axis{*rc::gen::inRange(-10, 10) / 10.0, *rc::gen::inRange(-10, 10) / 10.0, 0.5 + *rc::gen::inRange(0, 10) / 10.0};
+  const double minor = radius * *rc::gen::inRange(10, 80) / 100.0;
+  const PatchSurface3 s = torus ? PatchSurface3::torus(centre, axis, radius, minor) : PatchSurface3::sphere(centre, radius);
+  const SurfaceMeshResult r = mesh_patch_surface(s, sized(torus ? std::min(size, minor) : size));
+  std::size_t bad = 0;
+  const auto uses = edge_uses(r.surface);
+  for (const auto& [edge, use] : uses) bad += !(use.forward == 1 && use.backward == 1);
+  RC_ASSERT(bad == 0u);
+  const long euler = static_cast<long>(r.surface.vertices.size()) - static_cast<long>(uses.size()) +
+                     static_cast<long>(r.surface.triangles.size());
+  RC_ASSERT(euler == (torus ? 0 : 2));
+  if (!torus) {
+    for (const Vec3& p : r.surface.vertices) RC_ASSERT(std::abs(norm(p - centre) - radius) <= 1e-14 * (radius + norm(centre)));
+  }
+}
+
 TEST(MeshPatch, CylinderConeAndGraphOnTheirSurfaces) {
   const SurfaceMeshResult cyl = mesh_patch_surface(PatchSurface3::cylinder({0, 0, 0}, {0, 0, 1}, 1.0, 2.0), sized(0.2));
   for (const Vec3& p : cyl.surface.vertices) EXPECT_NEAR(std::hypot(p.x, p.y), 1.0, 4e-15);
