@@ -113,6 +113,21 @@ struct SidePoints {
 
 std::pair<std::uint64_t, std::uint64_t> key(const Vec2& p) { return {std::bit_cast<std::uint64_t>(p.x), std::bit_cast<std::uint64_t>(p.y)}; }
 
+// Every edge of the surface in one triangle each way at most (two on a seam, one on a free side):
+// two edges joining the same vertices, or a seam taken the same way twice, would be a broken
+// surface; the charts' layout (patch_surface3.hpp) rules it out, and this says so if it did not.
+void check_edges(const MeshData3& out) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> directed;
+  for (std::size_t t = 0; t < out.triangles.size(); ++t) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = out.triangles[t][i], b = out.triangles[t][(i + 1) % 3];
+      if (++directed[{a, b}] > 1)
+        throw InternalError("surface mesh: the edge of vertices " + std::to_string(a + 1) + " and " + std::to_string(b + 1) +
+                            " is in two triangles the same way (triangle " + std::to_string(t + 1) + ")");
+    }
+  }
+}
+
 }  // namespace
 
 SurfaceMeshResult mesh_patch_surface(const PatchSurface3& surface, const SurfaceMeshOptions& options) {
@@ -244,6 +259,7 @@ SurfaceMeshResult mesh_patch_surface(const PatchSurface3& surface, const Surface
     result.charts.push_back(std::move(chart_mesh));
   }
   out.vertex_refs.assign(out.vertices.size(), 0);
+  check_edges(out);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

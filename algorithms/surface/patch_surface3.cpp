@@ -43,16 +43,18 @@ PatchChart3 rectangle(Patch3 patch, const Vec2& lo, const Vec2& hi) {
   return PatchChart3{std::move(patch), false, lo, hi};
 }
 
-// Two charts u in [0, pi], [pi, 2 pi] of a surface periodic in u, v in [v0, v1]: side 1 (u = pi)
-// of chart 0 against side 3 of chart 1, and side 1 (u = 2 pi) of chart 1 against side 3 (u = 0)
-// of chart 0.
+// Three charts a period (never two): two charts then share one seam at most, so no two of their
+// edges can join the same pair of vertices (with two charts, a coarse size joins the same two
+// corners in both). A surface periodic in u: charts u in [2 pi i / 3, 2 pi (i + 1) / 3], v in
+// [v0, v1], side 1 of chart i against side 3 of chart i + 1 (mod 3).
+constexpr std::uint32_t kChartsPerPeriod = 3;
+double period_cut(std::uint32_t i) { return i == kChartsPerPeriod ? 2.0 * kPi : 2.0 * kPi * i / kChartsPerPeriod; }
+
 void split_in_u(const Patch3& patch, double v0, double v1, std::vector<PatchChart3>& charts,
                 std::vector<PatchSeam3>& seams) {
   const auto first = static_cast<std::uint32_t>(charts.size());
-  charts.push_back(rectangle(patch, {0.0, v0}, {kPi, v1}));
-  charts.push_back(rectangle(patch, {kPi, v0}, {2.0 * kPi, v1}));
-  seams.push_back({first, 1, first + 1, 3});
-  seams.push_back({first + 1, 1, first, 3});
+  for (std::uint32_t i = 0; i < kChartsPerPeriod; ++i) charts.push_back(rectangle(patch, {period_cut(i), v0}, {period_cut(i + 1), v1}));
+  for (std::uint32_t i = 0; i < kChartsPerPeriod; ++i) seams.push_back({first + i, 1, first + (i + 1) % kChartsPerPeriod, 3});
 }
 
 }  // namespace
@@ -145,17 +147,15 @@ PatchSurface3 PatchSurface3::torus(const Vec3& centre, const Vec3& axis, double 
     throw InputError("degenerate patch: torus minor radius " + std::to_string(minor) + " not below its major radius " +
                      std::to_string(major) + " (the surface meets itself)");
   const Patch3 p = Patch3::torus(centre, f.e1, f.e2, major, minor);
-  // Charts 0: [0, pi] x [0, pi], 1: [pi, 2pi] x [0, pi], 2: [0, pi] x [pi, 2pi], 3: [pi, 2pi] x [pi, 2pi].
-  for (std::uint32_t j = 0; j < 2; ++j)
-    for (std::uint32_t i = 0; i < 2; ++i)
-      s.charts_.push_back(rectangle(p, {i * kPi, j * kPi}, {(i + 1) * kPi, (j + 1) * kPi}));
-  for (std::uint32_t j = 0; j < 2; ++j) {  // across u: side 1 of (i) against side 3 of (i + 1 mod 2)
-    s.seams_.push_back({2 * j, 1, 2 * j + 1, 3});
-    s.seams_.push_back({2 * j + 1, 1, 2 * j, 3});
-  }
-  for (std::uint32_t i = 0; i < 2; ++i) {  // across v: side 2 of (j) against side 0 of (j + 1 mod 2)
-    s.seams_.push_back({i, 2, 2 + i, 0});
-    s.seams_.push_back({2 + i, 2, i, 0});
+  // Chart (i, j) = 3 j + i: u in the i-th third of the period, v in the j-th.
+  constexpr std::uint32_t n = kChartsPerPeriod;
+  for (std::uint32_t j = 0; j < n; ++j)
+    for (std::uint32_t i = 0; i < n; ++i) s.charts_.push_back(rectangle(p, {period_cut(i), period_cut(j)}, {period_cut(i + 1), period_cut(j + 1)}));
+  for (std::uint32_t j = 0; j < n; ++j) {
+    for (std::uint32_t i = 0; i < n; ++i) {
+      s.seams_.push_back({n * j + i, 1, n * j + (i + 1) % n, 3});  // across u
+      s.seams_.push_back({n * j + i, 2, n * ((j + 1) % n) + i, 0});  // across v
+    }
   }
   s.check_regular();
   return s;

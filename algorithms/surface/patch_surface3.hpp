@@ -7,8 +7,10 @@
 // two to the same 3D curve, and the mesher puts one set of points on it.
 //
 // How the periodic surfaces are cut (no parameter domain with identified edges, no pole):
-//   - cylinder and cone: two charts, u in [0, pi] and [pi, 2 pi], glued along u = pi and u = 0;
-//   - torus: four charts, u and v each in [0, pi] and [pi, 2 pi], glued across both;
+//   - cylinder and cone: three charts, u in thirds of [0, 2 pi], each glued to the next;
+//   - torus: nine charts, u and v each in thirds, glued across both;
+// three a period, not two: two charts then share one seam at most, so no two edges of the surface
+// join the same two vertices (two halves of a coarse torus join the same corners in both);
 //   - sphere: the six faces of the gnomonic cubed sphere, glued along the cube's twelve edges.
 #pragma once
 

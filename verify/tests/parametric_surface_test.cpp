@@ -198,7 +198,7 @@ RC_GTEST_PROP(MeshPatch, RandomSpheresAndToriAreClosed, ()) {
   const Vec3 axis{*rc::gen::inRange(-10, 10) / 10.0, *rc::gen::inRange(-10, 10) / 10.0, 0.5 + *rc::gen::inRange(0, 10) / 10.0};
   const double minor = radius * *rc::gen::inRange(10, 80) / 100.0;
   const PatchSurface3 s = torus ? PatchSurface3::torus(centre, axis, radius, minor) : PatchSurface3::sphere(centre, radius);
-  const SurfaceMeshResult r = mesh_patch_surface(s, sized(torus ? std::min(size, minor) : size));
+  const SurfaceMeshResult r = mesh_patch_surface(s, sized(size));
   std::size_t bad = 0;
   const auto uses = edge_uses(r.surface);
   for (const auto& [edge, use] : uses) bad += !(use.forward == 1 && use.backward == 1);
