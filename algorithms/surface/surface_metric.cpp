@@ -73,7 +73,7 @@ Metric2 geometric_metric(const PatchDerivatives& d, const SurfaceMetricSpec& spe
   auto size_of = [&](double k) {
     if (k == 0.0) return hi;
     const double rho = 1.0 / std::abs(k);
-    const double e = spec.hausdorff;
+    const double e = 0.375 * spec.hausdorff;  // 3 E / 8 (surface_metric.hpp)
     const double h = e > 0.0 ? (e >= rho ? 2.0 * rho : 2.0 * std::sqrt(e * (2.0 * rho - e))) : alpha * rho;
     return std::clamp(h, lo, hi);
   };

@@ -30,8 +30,10 @@ struct SurfaceMetricSpec {
   std::function<Metric3(const Vec3&)> user_metric;
   GeometricMetric geometric = GeometricMetric::None;
   double relative_gap = 0.01;  // eps of alpha = 2 sqrt(eps (2 - eps))
-  // An absolute gap E instead (when > 0): the chord whose sagitta on a circle of radius rho is E,
-  // 2 sqrt(E (2 rho - E)) (2 rho when E >= rho).
+  // An absolute bound E on the gap between the triangles and the surface instead (when > 0). The
+  // chord whose sagitta on a circle of radius rho is s has length 2 sqrt(s (2 rho - s)); a unit
+  // mesh has edges up to sqrt 2 (sagitta x 2) and a triangle's centre lies 4/3 as far from the
+  // surface as its edges' midpoints (equilateral), so the sizes take s = 3 E / 8 (2 rho when s >= rho).
   double hausdorff = 0.0;
   double h_min = 0.0, h_max = 0.0;  // the geometric sizes' clip; h_max = 0: no upper bound but kMaxMetricSize
 

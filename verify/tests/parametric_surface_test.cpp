@@ -249,6 +249,24 @@ TEST(MeshPatch, GeometricMetricsOnTheBookSurface) {
   EXPECT_LT(3 * ra.surface.vertices.size(), 2 * ri.surface.vertices.size());
 }
 
+// --hausdorff E: the triangles stay within E of the surface (sampled at their centres and edge
+// midpoints), and not far inside it (the sizes are not needlessly small).
+TEST(MeshPatch, HausdorffBoundHolds) {
+  for (const double e : {0.01, 0.001}) {
+    SurfaceMeshOptions o;
+    o.metric = {.size = 0.0, .user_metric = {}, .geometric = GeometricMetric::Isotropic, .relative_gap = 0.01, .hausdorff = e,
+                .h_min = 0.0, .h_max = 1.0};
+    const SurfaceMeshResult r = mesh_patch_surface(PatchSurface3::sphere({0, 0, 0}, 1.0), o);
+    double worst = 0.0;
+    for (const auto& t : r.surface.triangles) {
+      const Vec3 &a = r.surface.vertices[t[0]], &b = r.surface.vertices[t[1]], &c = r.surface.vertices[t[2]];
+      for (const Vec3& p : {(1.0 / 3.0) * (a + b + c), 0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a)}) worst = std::max(worst, 1.0 - norm(p));
+    }
+    EXPECT_LE(worst, e) << e;
+    EXPECT_GE(worst, 0.4 * e) << e;
+  }
+}
+
 TEST(MeshPatch, BsplinePatchOnItsSurface) {
   const Patch3 p = sample_bspline();
   const SurfaceMeshResult r = mesh_patch_surface(PatchSurface3::bspline(p, {0, 0}, {1, 1}), sized(0.25));
