@@ -207,9 +207,8 @@ void PatchSurface3::check_regular() const {
                 chart.lo.y + (chart.hi.y - chart.lo.y) * j / (kSamples - 1)};
         if (chart.disc) {  // inside the disc: the square's sample pulled in radially
           const Vec2 c0 = 0.5 * (chart.lo + chart.hi), d = uv - c0;
-          const double r = 0.5 * (chart.hi.x - chart.lo.x), n = std::max(std::abs(d.x), std::abs(d.y));
+          const double n = std::max(std::abs(d.x), std::abs(d.y));
           if (n > 0.0) uv = c0 + (n / norm(d)) * d;
-          (void)r;
         }
         const PatchDerivatives d = chart.patch.evaluate(uv);
         const double area = norm(cross(d.du, d.dv)), scale = norm(d.du) * norm(d.dv);

@@ -35,11 +35,10 @@ PrincipalCurvatures principal_curvatures(const PatchDerivatives& d) {
   const double l = dot(n, d.duu), m = dot(n, d.duv), nn = dot(n, d.dvv);
   // A^-1 = [1/a11, -a12/(a11 a22); 0, 1/a22]; W = A^-T II A^-1.
   const double i11 = 1.0 / a11, i12 = -a12 / (a11 * a22), i22 = 1.0 / a22;
-  // B = II A^-1
-  const double b11 = l * i11, b12 = l * i12 + m * i22, b21 = m * i11, b22 = m * i12 + nn * i22;
+  // B = II A^-1 (its (2, 1) entry is not needed: W is symmetric)
+  const double b11 = l * i11, b12 = l * i12 + m * i22, b22 = m * i12 + nn * i22;
   // W = A^-T B, A^-T = [i11, 0; i12, i22]
   const double w11 = i11 * b11, w12 = i11 * b12, w22 = i12 * b12 + i22 * b22;
-  (void)b21;
   const MetricEigen2 e = eigen(Metric2{{w11, w12, w22}});
   const int big = std::abs(e.values[0]) >= std::abs(e.values[1]) ? 0 : 1;
   PrincipalCurvatures c;
