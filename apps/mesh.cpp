@@ -59,6 +59,7 @@ void throw_resample_boundary_refused() {
 namespace {
 
 int run_mesh(const MeshCliArgs& args) {
+  if (is_patch_description(args.input) || args.surface_only) return run_mesh_patch(args);  // apps/mesh_patch.cpp
   if (is_surface_input(args.input)) {  // a closed surface: the 3D mesher (apps/mesh3.cpp)
     return run_mesh3(args);
   }
@@ -218,6 +219,23 @@ void add_mesh(CLI::App& app) {
   cmd->add_flag("--stats", args->stats, "Print the quality table and one JSON object (counts, phases, quality) last");
   cmd->add_flag("--verify", args->verify,
                 "Check the output exactly (validity, segments as chains, regions, area); exit 3 if it fails");
+  cmd->add_flag("--surface-only", args->surface_only,
+                "Patches (PATCH.json: plane, sphere, cylinder, cone, torus, sine_graph, bspline): mesh the surface only "
+                "(book chapter 6), written as Medit Triangles (ref: chart) and Edges (free sides)");
+  cmd->add_option("--hausdorff", args->hausdorff,
+                  "Patches: the largest gap E between a triangle and the surface: sizes from the principal radii rho, "
+                  "2 sqrt(E (2 rho - E)) (with --size: the smaller)");
+  cmd->add_option("--relative-gap", args->relative_gap,
+                  "Patches: the book's relative gap eps (sizes alpha rho, alpha = 2 sqrt(eps (2 - eps))) instead of --hausdorff");
+  cmd->add_option("--geometric", args->geometric,
+                  "Patches: the geometric metric with --hausdorff / --relative-gap: isotropic (the smallest radius, "
+                  "default) or anisotropic (both principal radii and directions)")
+      ->check(CLI::IsMember({"isotropic", "anisotropic"}));
+  cmd->add_option("--hmin", args->hmin, "Patches: the geometric sizes' lower bound (default: none)");
+  cmd->add_option("--hmax", args->hmax, "Patches: the geometric sizes' upper bound (default: --size, else a tenth of the patch's extent)");
+  cmd->add_option("--background-cells", args->background_cells,
+                  "Patches: the control space's grid per chart and direction (default 64)")
+      ->check(CLI::Range(2u, 4096u));
   cmd->callback([args, size, optimize] {
     args->size_given = size->count() > 0;
     args->optimize_given = optimize->count() > 0;

@@ -29,6 +29,11 @@ struct MeshCliArgs {
   unsigned threads = 1;                 // surfaces: Mesh3dOptions::threads
   std::uint32_t insertion_regions = 1;  // surfaces: Mesh3dOptions::insertion_regions
   bool optimize_given = false;          // --optimize was given (surfaces only)
+  // Parametric patches (a .json description, apps/mesh_patch.cpp).
+  bool surface_only = false;
+  double hausdorff = 0.0, relative_gap = 0.0, hmin = 0.0, hmax = 0.0;
+  std::string geometric;                // "", "isotropic" or "anisotropic"
+  std::uint32_t background_cells = 64;  // SurfaceMeshOptions::background_cells
 
   // How many of --size, --size-map, --metric were given.
   int sizes_given() const { return size_given + !size_map.empty() + !metric.empty(); }
@@ -41,6 +46,10 @@ std::vector<Metric> read_size_file(const MeshCliArgs& args, std::size_t vertex_c
 
 // --resample-boundary, given: the InputError that says it is the default now.
 [[noreturn]] void throw_resample_boundary_refused();
+
+// A parametric patch (PATCH.json, --surface-only): returns 0; InputError for bad input.
+int run_mesh_patch(const MeshCliArgs& args);
+bool is_patch_description(const std::string& path);  // ends in .json
 
 // The 3D path: returns the exit status (0 success, 3 --verify failed); InputError for bad input.
 int run_mesh3(const MeshCliArgs& args);
