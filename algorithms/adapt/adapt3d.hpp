@@ -8,9 +8,9 @@
 // Scope of this version: the interior, and the split of boundary edges (algorithms/optimize3d/
 // boundary_split.hpp, references kept) at the point of the input surface's geometric support
 // (algorithms/surface/boundary_support3.hpp: a curved wall stays curved) over the metric
-// midpoint, and the relocation of the boundary vertices off ridges and corners on that support
-// (algorithms/optimize3d/relocate_boundary.hpp). Boundary collapse and swaps are not written yet
-// (issue 44): boundary vertices are never removed.
+// midpoint; on request (Adapt3dOptions::boundary_relocation) the relocation of the boundary
+// vertices off ridges and corners on that support (algorithms/optimize3d/relocate_boundary.hpp).
+// Boundary collapse and swaps are not written yet (issue 44): boundary vertices are never removed.
 #pragma once
 
 #include <cstdint>
@@ -41,7 +41,9 @@ struct Adapt3dOptions {
   double ridge_angle_degrees = 45.0;
   // With the support: boundary vertices off ridges and corners moved on it after each round's
   // volume operators (algorithms/optimize3d/relocate_boundary.hpp), relocation_sweeps sweeps.
-  bool boundary_relocation = true;
+  // Off by default: on the UGAWG cases (4 cycles, 2026-12-08) it gains 1.5 points in band on
+  // polar-1 but loses 1 on polar-2 and 10 on cube linear (docs/adaptation.md).
+  bool boundary_relocation = false;
 };
 
 struct Adapt3dStats {

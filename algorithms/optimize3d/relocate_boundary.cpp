@@ -34,6 +34,7 @@ struct FanFacet {
 struct BoundaryStar {
   std::vector<std::uint32_t> ball, domain, ghosts;  // ghosts: v is a hull vertex
   std::vector<std::uint32_t> neighbours;            // v's neighbours in the domain, sorted
+  std::vector<std::array<std::uint32_t, 3>> opposite;  // per finite ball tetrahedron: its facet opposite v
   std::vector<FanFacet> fan;
   Vec3 normal{0.0, 0.0, 0.0};  // unit
   double shortest = 0.0;       // the fan's shortest edge from v
@@ -214,7 +215,8 @@ bool relocate_on_support(Mesh3& mesh, std::uint32_t v, const MetricField3& field
   std::sort(s.neighbours.begin(), s.neighbours.end());
   s.neighbours.erase(std::unique(s.neighbours.begin(), s.neighbours.end()), s.neighbours.end());
   const std::size_t unit_before = unit_edges_at(mesh, s.neighbours, p, mesh.metric(v));
-  std::vector<std::array<std::uint32_t, 3>> opposite;
+  std::vector<std::array<std::uint32_t, 3>>& opposite = s.opposite;
+  opposite.clear();
   for (const std::uint32_t t : s.ball)
     if (!mesh.is_ghost(t)) opposite.push_back(facet_opposite(mesh, t, v));
   for (const Vec3& target : targets) {
