@@ -24,22 +24,25 @@ struct BoundaryRelocate3Options {
   bool keep_unit_edges = true;
 };
 
-// Moves boundary vertex v along the surface when that improves its ball: v must be smooth (its
-// constrained facets one reference, forming one closed fan around it, adjacent ones turning by
-// less than the ridge angle), and the candidate
-// is P' = (1 - w) P + w T projected on `support` (SurfaceSupport3::project: on the smooth surface
-// through the input's facets), T first the optimal point of the ball (book (8.17)) in v's
-// tangent plane, then the centroid of its boundary neighbours. Kept when every tetrahedron of its
-// ball (in the domain or exterior) stays positive (exact orient3d), a hull vertex leaves the hull
-// convex (no vertex strictly beyond a hull facet at it, exactly; a planar fan stays exactly in
-// its plane), the candidate stays within a
-// quarter of the fan's shortest edge of the tangent plane (a projection onto another sheet of the
-// surface is refused), its support triangle has no ridge or corner vertex (the support is
-// one-sided there, off a curved wall by up to half a facet's turn), the worst Q_K of its domain tetrahedra improves and (keep_unit_edges) no
-// fewer of its edges have unit length. References and
-// constrained facets and edges are unchanged (no topology changes). v's metric becomes `field` at
-// P' (kept when the field is empty). True when v moved.
-// (Each call reads the support's features: O(support); the sweep reads them once.)
+// Moves boundary vertex v along the surface when that improves its ball. v must be smooth: its
+// constrained facets of one reference, one closed fan around it, adjacent ones turning by less
+// than the ridge angle. The candidate is P' = (1 - w) P + w T (w = 1, 1/2, ...) projected on
+// `support` (SurfaceSupport3::project: the smooth surface through the input's facets), T first
+// the optimal point of the ball (book (8.17)) in v's tangent plane, then the centroid of its
+// boundary neighbours. Kept when
+//   - every finite tetrahedron of its ball (domain or exterior) stays positive (exact orient3d),
+//     and at a hull vertex no vertex of the hull facets at it or beside them lies strictly
+//     beyond one of them (the hull stays convex);
+//   - a planar fan stays exactly planar (orient3d = 0 with each facet);
+//   - it lies within a quarter of the fan's shortest edge of the tangent plane (a projection onto
+//     another sheet of the surface is refused);
+//   - its support triangle has no ridge or corner vertex (the support is one-sided there, off a
+//     curved wall by up to half a facet's turn);
+//   - the worst Q_K of its domain tetrahedra improves by the margin, and (keep_unit_edges) no
+//     fewer of its edges have unit length.
+// No topology changes: references, constrained facets and edges stay. v's metric becomes `field`
+// at P' (kept when the field is empty). True when v moved. Each call reads the support's
+// features (O(support)); the sweep reads them once.
 bool try_relocate_boundary3(Mesh3& mesh, std::uint32_t v, const MetricField3& field, const SurfaceSupport3& support,
                             const BoundaryRelocate3Options& options = {});
 
