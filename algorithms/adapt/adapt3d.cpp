@@ -10,6 +10,7 @@
 
 #include "algorithms/common/element_estimate.hpp"
 #include "algorithms/optimize3d/boundary_split.hpp"
+#include "algorithms/optimize3d/relocate_boundary.hpp"
 #include "algorithms/surface/boundary_support3.hpp"
 #include "kernel/error.hpp"
 
@@ -54,6 +55,12 @@ Adapt3dStats adapt3d(Mesh3& mesh, const ControlSpace3& metric, const Adapt3dOpti
     stats.face_swaps += s.face_swaps;
     stats.shell_transformations += s.shell_transformations;
     stats.relocations += s.relocations;
+    // The boundary's vertices moved on the support after the volume's (their balls' worst Q_K).
+    if (support && options.boundary_relocation) {
+      const BoundaryRelocate3Options relocate{.ridge_angle_degrees = options.ridge_angle_degrees};
+      for (std::uint32_t k = 0; k < options.relocation_sweeps; ++k)
+        stats.boundary_relocations += boundary_relocate_sweep3(mesh, field, support->support, relocate);
+    }
     if (s.stopped_by == "vertex_limit" || s.stopped_by == "swap_limit") {
       stats.stopped_by = s.stopped_by;
       break;

@@ -8,8 +8,9 @@
 // Scope of this version: the interior, and the split of boundary edges (algorithms/optimize3d/
 // boundary_split.hpp, references kept) at the point of the input surface's geometric support
 // (algorithms/surface/boundary_support3.hpp: a curved wall stays curved) over the metric
-// midpoint. Boundary collapse, swaps and relocation on the support are not written yet (issue
-// 44): boundary vertices are never removed nor moved.
+// midpoint; on request (Adapt3dOptions::boundary_relocation) the relocation of the boundary
+// vertices off ridges and corners on that support (algorithms/optimize3d/relocate_boundary.hpp).
+// Boundary collapse and swaps are not written yet (issue 44): boundary vertices are never removed.
 #pragma once
 
 #include <cstdint>
@@ -38,11 +39,16 @@ struct Adapt3dOptions {
   // facets), with ridges and corners where the facets turn by more than ridge_angle_degrees.
   bool surface_support = true;
   double ridge_angle_degrees = 45.0;
+  // With the support: boundary vertices off ridges and corners moved on it after each round's
+  // volume operators (algorithms/optimize3d/relocate_boundary.hpp), relocation_sweeps sweeps.
+  // Off by default: on the UGAWG cases (4 cycles, 2026-12-08) it gains 1.5 points in band on
+  // polar-1 but loses 1 on polar-2 and 10 on cube linear (docs/adaptation.md).
+  bool boundary_relocation = false;
 };
 
 struct Adapt3dStats {
   QualityReport before, after;  // measure_quality in the vertex metrics (UGAWG figures, book's Q)
-  std::uint64_t collapses = 0, splits = 0, boundary_splits = 0, face_swaps = 0, shell_transformations = 0, relocations = 0;
+  std::uint64_t collapses = 0, splits = 0, boundary_splits = 0, boundary_relocations = 0, face_swaps = 0, shell_transformations = 0, relocations = 0;
   std::uint32_t rounds = 0;
   // "converged" (lengths stopped changing), "max_rounds", or optimize3d's "vertex_limit" /
   // "swap_limit".

@@ -319,3 +319,53 @@ TEST(RunAdapt3, BadInputNamed) {
 
 }  // namespace
 }  // namespace dtlab
+
+namespace dtlab {
+namespace {
+
+TEST(Adapt3d, BoundaryRelocationImprovesTheWorstAndKeepsTheFaces) {
+  // The anisotropic cube of ConstantAnisotropicMetricConvergesInTheInterior with and without the
+  // boundary vertices moved on the support (measured: worst Q_K 2.17 -> 2.05, unit edges 0.855 ->
+  // 0.851, 592 moves): the worst is lower, the share of unit edges within a hundredth, every
+  // boundary facet still exactly in its face, the volume kept. And the cylinder of
+  // CylinderWallStaysRoundOnTheSurfaceSupport, adapted with it to an axial metric: the wall
+  // within 2.5e-4 of r = 0.5.
+  const Metric3 aniso = Metric3::from_sizes({1, 0, 0}, {0, 1, 0}, 0.5, 0.25, 0.25);
+  Adapt3dStats with, without;
+  for (const bool relocate : {false, true}) {
+    Mesh3 mesh = mesh3_from_data(cube_mesh(4));
+    Adapt3dOptions o;
+    o.boundary_relocation = relocate;
+    const Adapt3dStats s = adapt3d(mesh, uniform_space(aniso), o);
+    mesh.check();
+    (relocate ? with : without) = s;
+    const MeshData3 out = mesh.domain();
+    for (std::size_t i = 0; i < out.triangles.size(); ++i) {
+      const int r = out.triangle_refs[i], axis = (r - 1) / 2, side = (r - 1) % 2;
+      for (const auto v : out.triangles[i]) ASSERT_EQ(comp(out.vertices[v], axis), double(side)) << "facet " << i + 1;
+    }
+    EXPECT_NEAR(static_cast<double>(volume(mesh)), 1.0, 1e-12);
+  }
+  EXPECT_EQ(without.boundary_relocations, 0u);
+  EXPECT_GT(with.boundary_relocations, 0u);
+  EXPECT_LT(with.after.quality_worst, without.after.quality_worst);
+  EXPECT_GT(with.after.unit_edge_share, without.after.unit_edge_share - 0.01);
+
+  const gen::Surface3 surface = gen::capped_cylinder(0.5, 32, 10);
+  Mesh3dInput input;
+  input.points = surface.points;
+  input.triangles = surface.triangles;
+  Mesh3 cylinder = mesh3d(input).mesh;
+  Adapt3dOptions o;
+  o.boundary_relocation = true;
+  // Sizes 0.15 across the axis and 0.05 along it: the wall's vertices have somewhere to go.
+  const Adapt3dStats s = adapt3d(cylinder, uniform_space(Metric3::from_sizes({1, 0, 0}, {0, 1, 0}, 0.15, 0.15, 0.05)), o);
+  cylinder.check();
+  EXPECT_GT(s.boundary_relocations, 0u);
+  EXPECT_LT(wall_error(cylinder), 2.5e-4);
+  std::cout << "cylinder, axial metric: " << s.boundary_relocations << " boundary relocations, wall "
+            << wall_error(cylinder) << " off r = 0.5\n";
+}
+
+}  // namespace
+}  // namespace dtlab
