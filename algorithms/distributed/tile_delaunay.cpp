@@ -86,8 +86,9 @@ Ball2 safe_ball(const std::array<Vec2, 3>& e) {
   const double d = 2.0 * (b.x * c.y - b.y * c.x);
   const double bb = b.x * b.x + b.y * b.y, cc = c.x * c.x + c.y * c.y;
   const Vec2 o = e[0] + Vec2{(c.y * bb - b.y * cc) / d, (b.x * cc - c.x * bb) / d};
-  double r = 0.0;
-  for (const Vec2& v : e) r = std::max(r, norm(v - o));
+  double r2 = 0.0;
+  for (const Vec2& v : e) r2 = std::max(r2, dot(v - o, v - o));
+  const double r = std::sqrt(r2);
   const double scale = std::max(bb, cc);
   if (!(std::abs(d) * std::sqrt(scale) > 1e-10 * scale * std::sqrt(scale)) || !std::isfinite(r))
     return {o, std::numeric_limits<double>::infinity()};
@@ -103,8 +104,9 @@ Ball3 safe_ball(const std::array<Vec3, 4>& e) {
   const double det = 2.0 * dot(b, cd);
   const double bb = dot(b, b), cc = dot(c, c), dd = dot(d, d);
   const Vec3 o = e[0] + (1.0 / det) * (bb * cd + cc * db + dd * bc);
-  double r = 0.0;
-  for (const Vec3& v : e) r = std::max(r, norm(v - o));
+  double r2 = 0.0;
+  for (const Vec3& v : e) r2 = std::max(r2, dot(v - o, v - o));
+  const double r = std::sqrt(r2);
   const double scale = std::max({bb, cc, dd});
   if (!(std::abs(det) > 1e-10 * scale * std::sqrt(scale)) || !std::isfinite(r))
     return {o, std::numeric_limits<double>::infinity()};
@@ -369,15 +371,29 @@ auto TileDelaunay<kDim>::triangulate_and_ask() -> std::vector<std::vector<Questi
     for (std::uint32_t s = 0; s < boxes_.size(); ++s)
       if (s != tile_ && !boxes_[s].empty) ask[s].push_back(Question{Question::Everything, {}});
   }
+  // An element asked about in an earlier round and still there had every answer
+  // empty (a point sent in conflict with it would have removed it), and the answers stay empty:
+  // only new ones are asked.
+  const auto first_time = [&](const auto& local_ids) {
+    Element key;
+    for (int i = 0; i <= kDim; ++i) key[i] = local_ids_[local_ids[i]];
+    std::sort(key.begin(), key.end());
+    return asked_.insert(key).second;
+  };
+  std::vector<std::uint32_t> targets;
   for (const auto& e : local_elements_) {
     if (!has_own(e, kDim + 1)) continue;
     Question q{Question::Ball, {}};
     for (int i = 0; i <= kDim; ++i) q.points[i] = points[e[i]];
     const auto ball = safe_ball(q.points);
+    targets.clear();
     for (std::uint32_t s = 0; s < boxes_.size(); ++s)
-      if (s != tile_ && ball_meets(ball, boxes_[s])) ask[s].push_back(q);
+      if (s != tile_ && ball_meets(ball, boxes_[s])) targets.push_back(s);
+    if (targets.empty() || !first_time(e)) continue;
+    for (const std::uint32_t s : targets) ask[s].push_back(q);
   }
   for (const auto& h : local.hull) {
+    // Asked again every round: a point sent on the facet's plane may leave the facet on the hull.
     if (!has_own(h, kDim)) continue;
     Question q{Question::Beyond, {}};
     for (int i = 0; i <= kDim; ++i) q.points[i] = points[h[i]];

@@ -110,6 +110,15 @@ class TileDelaunay {
   std::vector<Element> local_elements_;
   std::string degenerate_;
   Counts counts_;
+  struct ElementHash {
+    std::size_t operator()(const Element& e) const noexcept {
+      std::size_t h = 0;
+      for (const std::uint32_t v : e) h = h * 0x9E3779B97F4A7C15ull + v;
+      return h;
+    }
+  };
+  // Elements already asked about, by sorted global ids.
+  std::unordered_set<Element, ElementHash> asked_;
 };
 
 // An element turned so that its lowest id comes first, with the same orientation
