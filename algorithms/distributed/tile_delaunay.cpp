@@ -157,32 +157,6 @@ bool box_beyond(const TileBox<Vec3>& box, const std::array<Vec3, 4>& f) {
   return false;
 }
 
-// The half-space beyond a hull facet (outward normal n, offset n . f0), with a margin, for the
-// cell test of the Beyond answers: a box is kept when its farthest corner along n is on or beyond
-// the plane, less the margin; O(1) a box.
-template <class Vec>
-struct Beyond {
-  Vec n;
-  double offset, margin;
-  bool meets(const Vec& lo, const Vec& hi) const {
-    const Vec centre = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
-    double reach = dot(n, centre) + std::abs(n.x) * half.x + std::abs(n.y) * half.y;
-    if constexpr (sizeof(Vec) == 3 * sizeof(double)) reach += std::abs(n.z) * half.z;
-    return reach >= offset - margin;
-  }
-};
-Beyond<Vec2> beyond_half_space(const std::array<Vec2, 3>& f, double extent) {
-  const Vec2 t = f[1] - f[0];
-  Vec2 n{t.y, -t.x};
-  if (dot(n, f[2] - f[0]) > 0) n = -1.0 * n;
-  return {n, dot(n, f[0]), 1e-9 * norm(n) * (norm(t) + extent) + 1e-300};
-}
-Beyond<Vec3> beyond_half_space(const std::array<Vec3, 4>& f, double extent) {
-  Vec3 n = cross(f[1] - f[0], f[2] - f[0]);
-  if (dot(n, f[3] - f[0]) > 0) n = -1.0 * n;
-  return {n, dot(n, f[0]), 1e-9 * norm(n) * (norm(f[1] - f[0]) + extent) + 1e-300};
-}
-
 constexpr std::uint32_t kNoPoint = 0xFFFFFFFFu;
 constexpr std::size_t kPerBall = 2;
 
@@ -225,7 +199,7 @@ class PointGrid {
   }
   // Visits the cells that meet the box [lo, hi] ring by ring (Chebyshev distance in cells) around
   // the cell of `centre`: point(i) for every point of a cell that cell_ok(cell_lo, cell_hi)
-  // accepts; after each ring, stops when done() says so. Bounded by the cells in the box.
+  // accepts; after ring r, stops when done(r) says so. Bounded by the cells in the box.
   template <class CellOk, class PointFn, class Done>
   void visit_rings(const Vec& centre, const Vec& lo, const Vec& hi, CellOk cell_ok, PointFn point, Done done) const {
     if (ids_.empty()) return;
@@ -254,7 +228,7 @@ class PointGrid {
           }
         }
       }
-      if (done()) return;
+      if (done(r)) return;
     }
   }
 
@@ -291,31 +265,6 @@ class PointGrid {
   std::array<std::uint32_t, 3> n_{1, 1, 1};
   std::vector<std::uint32_t> start_, ids_;
 };
-
-// Among points beyond a hull facet, the one a Delaunay element on the facet's outer side would
-// take (gift wrapping, Edelsbrunner's "Delaunay neighbour"): the spheres through the facet have
-// their centres on the line c0 + t n (n outward); the first point met as t grows has the lowest
-// t = (|p - c0|^2 - R0^2) / (2 (p - c0) . n). In doubles: a choice, not a decision (any point
-// beyond keeps the rounds correct; this one keeps them few). Points on the facet's plane rank last.
-double wrap_parameter(const std::array<Vec2, 3>& f, const Vec2& p) {
-  const Vec2 c0 = 0.5 * (f[0] + f[1]);
-  const Vec2 t = f[1] - f[0];
-  Vec2 n{t.y, -t.x};
-  if (dot(n, f[2] - f[0]) > 0) n = -1.0 * n;
-  const double h = 2.0 * dot(p - c0, n);
-  if (!(h > 0)) return std::numeric_limits<double>::infinity();
-  return (dot(p - c0, p - c0) - dot(f[0] - c0, f[0] - c0)) / h;
-}
-double wrap_parameter(const std::array<Vec3, 4>& f, const Vec3& p) {
-  const Vec3 b = f[1] - f[0], c = f[2] - f[0];
-  Vec3 n = cross(b, c);
-  const double nn = dot(n, n);
-  const Vec3 c0 = f[0] + (1.0 / (2.0 * nn)) * (dot(b, b) * cross(c, n) + dot(c, c) * cross(n, b));
-  if (dot(n, f[3] - f[0]) > 0) n = -1.0 * n;
-  const double h = 2.0 * dot(p - c0, n);
-  if (!(h > 0)) return std::numeric_limits<double>::infinity();
-  return (dot(p - c0, p - c0) - dot(f[0] - c0, f[0] - c0)) / h;
-}
 
 }  // namespace
 
@@ -358,6 +307,16 @@ auto TileDelaunay<kDim>::triangulate_and_ask() -> std::vector<std::vector<Questi
   Local<kDim> local = triangulate(std::span<const Vec>(points));
   degenerate_ = local.degenerate;
   local_elements_ = std::move(local.elements);
+  if (counts_.rounds == 1) {
+    // The first triangulation is of the own points alone: its hull vertices (all points on the
+    // hull's boundary, collinear and coplanar ones included) are what the hull questions of
+    // other tiles are answered from. Every own point, when they are too few or flat to have a hull.
+    std::vector<std::uint8_t> on_hull(own_ids_.size(), local_elements_.empty() ? 1 : 0);
+    for (const auto& h : local.hull)
+      for (int i = 0; i < kDim; ++i) on_hull[order[h[i]].second] = 1;
+    for (std::uint32_t i = 0; i < own_ids_.size(); ++i)
+      if (on_hull[i]) own_hull_.push_back(i);
+  }
   counts_.seconds_triangulating += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::vector<std::vector<Question>> ask(boxes_.size());
@@ -451,32 +410,18 @@ auto TileDelaunay<kDim>::answer(const std::vector<std::vector<Question>>& questi
                 if (!sent[i] && in_conflict(q.points, own_points_[i]))
                   nearest.push_back({norm(own_points_[i] - centroid), i});
               },
-              [&] { return nearest.size() >= kPerBall; });
-          const std::size_t keep = std::min<std::size_t>(nearest.size(), kPerBall);
-          std::partial_sort(nearest.begin(), nearest.begin() + static_cast<std::ptrdiff_t>(keep), nearest.end());
-          for (std::size_t k = 0; k < keep; ++k) send(nearest[k].second);
+              [&](std::int64_t) { return nearest.size() >= kPerBall; });
+          std::sort(nearest.begin(), nearest.end());
+          for (std::size_t k = 0; k < nearest.size() && k < kPerBall; ++k) send(nearest[k].second);
           break;
         }
         case Question::Beyond: {
-          // One point a question, found ring by ring from the facet: the facet's likely Delaunay
-          // neighbour among the first points beyond; the next round's balls bring the rest.
-          std::uint32_t best = kNoPoint;
-          double best_t = 0.0;
-          Vec centre = q.points[0];
-          for (int k = 1; k < kDim; ++k) centre = centre + q.points[k];
-          centre = (1.0 / kDim) * centre;
-          int rings_after = -1;
-          const auto half_space = beyond_half_space(q.points, norm(own_box.hi - own_box.lo) + norm(centre - own_box.lo));
-          grid.visit_rings(
-              centre, own_box.lo, own_box.hi,
-              [&](const Vec& l, const Vec& h) { return half_space.meets(l, h); },
-              [&](std::uint32_t i) {
-                if (sent[i] || !beyond(q.points, own_points_[i])) return;
-                const double t = wrap_parameter(q.points, own_points_[i]);
-                if (best == kNoPoint || t < best_t) best = i, best_t = t;
-              },
-              [&] { return best != kNoPoint && ++rings_after >= 1; });
-          if (best != kNoPoint) send(best);
+          // Every own hull vertex on or beyond the facet's line / plane: if an own point is beyond,
+          // a hull vertex is (convexity), and the points on a supporting line / plane are hull
+          // vertices; all of them at once, so that a straight stretch of the hull is not walked
+          // one point a round.
+          for (const std::uint32_t i : own_hull_)
+            if (!sent[i] && beyond(q.points, own_points_[i])) send(i);
           break;
         }
         case Question::Everything:

@@ -10,8 +10,8 @@
 //      other tile whose box meets the element's circumball (for an element on the hull of what
 //      is known, the half-space beyond its hull facet);
 //   2. answer(questions): each tile's own points in conflict with a question's element (exact,
-//      perturbed in-circle / in-sphere; beyond or on the hull facet, exact orientation), each
-//      point sent to a tile once;
+//      perturbed in-circle / in-sphere: the nearest two; its own hull vertices beyond or on the
+//      hull facet, exact orientation), each point sent to a tile once;
 //   3. receive(answers): the new ghosts; the caller ends the rounds when no tile got any.
 // Then every element with an own vertex has no point of any tile in conflict: it is an element of
 // the Delaunay triangulation of all the points, and so is the star of every own vertex. Because
@@ -100,6 +100,7 @@ class TileDelaunay {
   std::vector<std::uint32_t> own_ids_;
   std::vector<Vec> own_points_;
   std::vector<Ghost> ghosts_;                    // received, any order
+  std::vector<std::uint32_t> own_hull_;          // own points on the hull of the own points
   std::vector<std::vector<std::uint8_t>> sent_;  // [tile][own index]: sent to that tile
   // [tile]: the questions (their bytes) that tile asked and got nothing for. The answer stays
   // nothing (own points are fixed, what was sent only grows): a question asked again in a later

@@ -1,5 +1,5 @@
 # The layering, enforced: every #include of the tree's own headers goes down the layer map of
-# docs/architecture.md (kernel -> mesh -> algorithms, verify -> apps, python, bench, fuzz, papers;
+# docs/architecture.md (kernel -> mesh -> algorithms, verify -> apps, mpi, python, bench, fuzz, papers;
 # verify/ beside algorithms/, not on it), and inside algorithms/ only to a capability declared in
 # algorithms/CMakeLists.txt.
 # A violation fails with the file, the line and the rule it breaks.

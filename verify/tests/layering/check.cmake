@@ -16,7 +16,7 @@ function(allowed_prefixes path out)
     set(allowed kernel mesh algorithms verify apps)  # a test may drive a subcommand's code
   elseif(path MATCHES "^verify/")
     set(allowed kernel mesh verify)  # checks what algorithms make, without them (mesh/problems)
-  elseif(path MATCHES "^(apps|python|bench|fuzz|papers)/")
+  elseif(path MATCHES "^(apps|mpi|python|bench|fuzz|papers)/")
     set(allowed kernel mesh algorithms verify ${CMAKE_MATCH_1})
     if(path MATCHES "^fuzz/")
       list(APPEND allowed apps/run.hpp)  # the CLI fuzz target runs the command's entry in-process
@@ -39,9 +39,9 @@ function(allowed_prefixes path out)
 endfunction()
 
 file(GLOB_RECURSE files RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/kernel/*.[ch]pp ${SOURCE_DIR}/mesh/*.[ch]pp
-     ${SOURCE_DIR}/algorithms/*.[ch]pp ${SOURCE_DIR}/verify/*.[ch]pp ${SOURCE_DIR}/apps/*.[ch]pp
+     ${SOURCE_DIR}/algorithms/*.[ch]pp ${SOURCE_DIR}/verify/*.[ch]pp ${SOURCE_DIR}/apps/*.[ch]pp ${SOURCE_DIR}/mpi/*.[ch]pp
      ${SOURCE_DIR}/python/*.[ch]pp ${SOURCE_DIR}/bench/*.[ch]pp ${SOURCE_DIR}/fuzz/*.[ch]pp ${SOURCE_DIR}/papers/*.[ch]pp)
-set(layers kernel mesh algorithms verify apps python bench fuzz papers)
+set(layers kernel mesh algorithms verify apps mpi python bench fuzz papers)
 set(violations 0)
 set(checked 0)
 foreach(f ${files})
