@@ -21,14 +21,8 @@ DistributedElements<kDim + 1> run(const Comm& comm, std::span<const Vec> points)
   const auto ranks = static_cast<std::uint32_t>(comm.size());
   const auto me = static_cast<std::uint32_t>(comm.rank());
   const std::vector<std::uint32_t> tile_of = kd_tiles(points, ranks);
-  std::vector<std::uint32_t> ids;
-  std::vector<Vec> own;
-  for (std::uint32_t i = 0; i < points.size(); ++i) {
-    if (tile_of[i] != me) continue;
-    ids.push_back(i);
-    own.push_back(points[i]);
-  }
-  TileDelaunay<kDim> tile(me, tile_boxes(points, tile_of, ranks), std::move(ids), std::move(own));
+  TilePoints<Vec> own = tile_points(points, tile_of, me);
+  TileDelaunay<kDim> tile(me, tile_boxes(points, tile_of, ranks), std::move(own.ids), std::move(own.points));
   DistributedElements<kDim + 1> result;
   std::uint64_t bytes = 0;
   const std::uint64_t max_rounds = points.size() + 2;

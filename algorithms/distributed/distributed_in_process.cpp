@@ -23,14 +23,8 @@ DistributedDelaunayResult<kDim> run(std::span<const Vec> points, std::uint32_t t
   std::vector<TileDelaunay<kDim>> tile;
   tile.reserve(tiles);
   for (std::uint32_t t = 0; t < tiles; ++t) {
-    std::vector<std::uint32_t> ids;
-    std::vector<Vec> own;
-    for (std::uint32_t i = 0; i < points.size(); ++i) {
-      if (tile_of[i] != t) continue;
-      ids.push_back(i);
-      own.push_back(points[i]);
-    }
-    tile.emplace_back(t, boxes, std::move(ids), std::move(own));
+    TilePoints<Vec> own = tile_points(points, tile_of, t);
+    tile.emplace_back(t, boxes, std::move(own.ids), std::move(own.points));
   }
   DistributedDelaunayResult<kDim> result;
   result.points = points.size();

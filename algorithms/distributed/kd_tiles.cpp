@@ -3,19 +3,15 @@
 #include <algorithm>
 #include <array>
 
+#include "algorithms/distributed/coordinates.hpp"
 #include "kernel/error.hpp"
 
 namespace dtlab {
 namespace {
 
+using distributed::coordinate;
 template <class Vec>
-constexpr int kDim = sizeof(Vec) / sizeof(double);
-
-template <class Vec>
-double coordinate(const Vec& p, int axis) {
-  if constexpr (kDim<Vec> == 3) return axis == 0 ? p.x : axis == 1 ? p.y : p.z;
-  else return axis == 0 ? p.x : p.y;
-}
+constexpr int kDim = distributed::kDimOf<Vec>;
 
 template <class Vec>
 bool same_point(const Vec& a, const Vec& b) {
@@ -86,6 +82,17 @@ std::vector<TileBox<Vec>> boxes_of(std::span<const Vec> points, std::span<const 
   return boxes;
 }
 
+template <class Vec>
+TilePoints<Vec> points_of_tile(std::span<const Vec> points, std::span<const std::uint32_t> tile_of, std::uint32_t tile) {
+  TilePoints<Vec> out;
+  for (std::uint32_t i = 0; i < points.size(); ++i) {
+    if (tile_of[i] != tile) continue;
+    out.ids.push_back(i);
+    out.points.push_back(points[i]);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> kd_tiles(std::span<const Vec2> points, std::uint32_t tiles) { return tiles_of(points, tiles); }
@@ -97,6 +104,13 @@ std::vector<TileBox<Vec2>> tile_boxes(std::span<const Vec2> points, std::span<co
 std::vector<TileBox<Vec3>> tile_boxes(std::span<const Vec3> points, std::span<const std::uint32_t> tile_of,
                                       std::uint32_t tiles) {
   return boxes_of(points, tile_of, tiles);
+}
+
+TilePoints<Vec2> tile_points(std::span<const Vec2> points, std::span<const std::uint32_t> tile_of, std::uint32_t tile) {
+  return points_of_tile(points, tile_of, tile);
+}
+TilePoints<Vec3> tile_points(std::span<const Vec3> points, std::span<const std::uint32_t> tile_of, std::uint32_t tile) {
+  return points_of_tile(points, tile_of, tile);
 }
 
 }  // namespace dtlab

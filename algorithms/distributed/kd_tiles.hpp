@@ -32,4 +32,13 @@ std::vector<TileBox<Vec2>> tile_boxes(std::span<const Vec2> points, std::span<co
 std::vector<TileBox<Vec3>> tile_boxes(std::span<const Vec3> points, std::span<const std::uint32_t> tile_of,
                                       std::uint32_t tiles);
 
+// The points of one tile: their ids (ascending) and coordinates.
+template <class Vec>
+struct TilePoints {
+  std::vector<std::uint32_t> ids;
+  std::vector<Vec> points;
+};
+TilePoints<Vec2> tile_points(std::span<const Vec2> points, std::span<const std::uint32_t> tile_of, std::uint32_t tile);
+TilePoints<Vec3> tile_points(std::span<const Vec3> points, std::span<const std::uint32_t> tile_of, std::uint32_t tile);
+
 }  // namespace dtlab

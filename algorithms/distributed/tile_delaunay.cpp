@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "algorithms/delaunay2d/delaunay2d.hpp"
+#include "algorithms/distributed/coordinates.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
 #include "kernel/error.hpp"
 #include "kernel/predicates.hpp"
@@ -24,37 +25,37 @@ struct Local {
   std::string degenerate;
 };
 
-Local<2> triangulate(std::span<const Vec2> points) {
-  Local<2> out;
-  const Delaunay2dResult r = delaunay2d(points);
-  out.degenerate = r.degenerate_message;
-  const Triangulation2& t = r.triangulation;
-  for (std::uint32_t k = 0; k < t.triangle_count(); ++k) {
+// The elements and hull facets of a triangulation (Triangulation2 or Tetrahedralization3: the
+// same navigation, kDim + 1 vertices an element, element k's side i opposite its vertex i).
+template <int kDim, class Structure>
+Local<kDim> elements_and_hull(const Structure& t, std::size_t count, std::string degenerate) {
+  Local<kDim> out;
+  out.degenerate = std::move(degenerate);
+  for (std::uint32_t k = 0; k < count; ++k) {
     if (t.is_ghost(k)) continue;
-    out.elements.push_back({t.vertex(k, 0), t.vertex(k, 1), t.vertex(k, 2)});
-    for (std::uint32_t i = 0; i < 3; ++i) {
+    std::array<std::uint32_t, kDim + 1> e;
+    for (std::uint32_t i = 0; i <= kDim; ++i) e[i] = t.vertex(k, i);
+    out.elements.push_back(e);
+    for (std::uint32_t i = 0; i <= kDim; ++i) {
       if (!t.is_ghost(t.adjacent(k, i))) continue;
-      out.hull.push_back({t.vertex(k, (i + 1) % 3), t.vertex(k, (i + 2) % 3), t.vertex(k, i)});
+      if constexpr (kDim == 2) {
+        out.hull.push_back({e[(i + 1) % 3], e[(i + 2) % 3], e[i]});
+      } else {
+        const auto f = t.facet_vertices(Tetrahedralization3::facet(k, i));
+        out.hull.push_back({f[0], f[1], f[2], e[i]});
+      }
     }
   }
   return out;
 }
 
+Local<2> triangulate(std::span<const Vec2> points) {
+  const Delaunay2dResult r = delaunay2d(points);
+  return elements_and_hull<2>(r.triangulation, r.triangulation.triangle_count(), r.degenerate_message);
+}
 Local<3> triangulate(std::span<const Vec3> points) {
-  Local<3> out;
   const Delaunay3dResult r = delaunay3d(points);
-  out.degenerate = r.degenerate_message;
-  const Tetrahedralization3& t = r.tetrahedralization;
-  for (std::uint32_t k = 0; k < t.tetrahedron_count(); ++k) {
-    if (t.is_ghost(k)) continue;
-    out.elements.push_back({t.vertex(k, 0), t.vertex(k, 1), t.vertex(k, 2), t.vertex(k, 3)});
-    for (std::uint32_t i = 0; i < 4; ++i) {
-      if (!t.is_ghost(t.adjacent(k, i))) continue;
-      const auto f = t.facet_vertices(Tetrahedralization3::facet(k, i));
-      out.hull.push_back({f[0], f[1], f[2], t.vertex(k, i)});
-    }
-  }
-  return out;
+  return elements_and_hull<3>(r.tetrahedralization, r.tetrahedralization.tetrahedron_count(), r.degenerate_message);
 }
 
 // Exact: p in conflict with the element (strictly inside its perturbed circumball).
@@ -160,13 +161,9 @@ bool box_beyond(const TileBox<Vec3>& box, const std::array<Vec3, 4>& f) {
 constexpr std::uint32_t kNoPoint = 0xFFFFFFFFu;
 constexpr std::size_t kPerBall = 2;
 
-template <class Vec>
-constexpr int kDimOf = sizeof(Vec) / sizeof(double);
-template <class Vec>
-double coordinate(const Vec& p, int a) {
-  if constexpr (kDimOf<Vec> == 3) return a == 0 ? p.x : a == 1 ? p.y : p.z;
-  else return a == 0 ? p.x : p.y;
-}
+using distributed::coordinate;
+using distributed::kDimOf;
+using distributed::set_coordinate;
 
 // A uniform grid over a tile's own points, about two points a cell, for the ball questions.
 template <class Vec>
@@ -246,11 +243,6 @@ class PointGrid {
     const std::size_t cell = (static_cast<std::size_t>(k[2]) * n_[1] + static_cast<std::size_t>(k[1])) * n_[0] +
                              static_cast<std::size_t>(k[0]);
     for (std::uint32_t j = start_[cell]; j < start_[cell + 1]; ++j) point(ids_[j]);
-  }
-  static void set_coordinate(Vec& p, int a, double v) {
-    if (a == 0) p.x = v;
-    else if (a == 1) p.y = v;
-    else if constexpr (kD == 3) p.z = v;
   }
   std::uint32_t index(double v, int a) const {
     const double t = std::floor((v - lo_[a]) * scale_[a]);
