@@ -65,6 +65,22 @@ struct RelocateOptions {
 bool try_relocate(Mesh2& mesh, std::uint32_t v, const MetricField2& field, const RelocateOptions& options = {});
 // One sweep: every free vertex once, worst ball first. Returns the number of vertices moved.
 std::uint64_t relocate_sweep(Mesh2& mesh, const MetricField2& field, const RelocateOptions& options = {});
+// Consecutive sweeps with nothing but relocation between them (a round's relocation_sweeps): the
+// same moves as relocate_sweep each time, without repeating what cannot change. A sweep measures
+// every free vertex's ball once, for the order and for the attempt while no vertex of the ball
+// has moved; a vertex refused whose ball has not moved since is refused again, and is not tried.
+// The mesh may change between two sweeps only by relocations made here.
+class RelocationSweeps {
+ public:
+  RelocationSweeps(Mesh2& mesh, const MetricField2& field, const RelocateOptions& options);
+  std::uint64_t sweep();  // relocate_sweep's: the number of vertices moved
+
+ private:
+  Mesh2& mesh_;
+  const MetricField2& field_;
+  RelocateOptions options_;
+  std::vector<std::uint8_t> settled_;  // refused, and no vertex of its ball moved since
+};
 
 // --- Collapse (book §8.3.5, edge suppression by reduction) -------------------------------------
 struct CollapseOptions {
