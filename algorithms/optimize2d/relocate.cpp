@@ -118,54 +118,62 @@ bool try_relocate(Mesh2& mesh, std::uint32_t v, const MetricField2& field, const
 RelocationSweeps::RelocationSweeps(Mesh2& mesh, const MetricField2& field, const RelocateOptions& options)
     : mesh_(mesh), field_(field), options_(options) {}
 
-std::uint64_t RelocationSweeps::sweep() {
-  // Worst ball first (ties by vertex id): the book's classification of §8.6.3. The balls'
-  // qualities measured for the order serve each vertex's attempt while its ball is unchanged.
+void RelocationSweeps::measure() {
   const std::uint32_t n = mesh_.vertex_capacity();
-  settled_.resize(n, 0);
-  std::vector<std::pair<double, std::uint32_t>> order;
-  std::vector<std::uint32_t> start(n + 1, 0);  // vertex v's qualities: q[start[v], start[v + 1])
-  std::vector<double> q;
+  settled_.assign(n, 0);
+  stale_.assign(n, 0);
+  start_.assign(n + 1, 0);
   std::vector<std::uint32_t> ring;
   for (std::uint32_t v = 0; v < n; ++v) {
-    start[v] = static_cast<std::uint32_t>(q.size());
+    start_[v] = static_cast<std::uint32_t>(q_.size());
     if (!is_free(mesh_, v, ring)) continue;
-    const std::size_t first = q.size();
-    ball_qualities(mesh_, v, ring, q);
+    free_.push_back(v);
+    ball_qualities(mesh_, v, ring, q_);
+  }
+  start_[n] = static_cast<std::uint32_t>(q_.size());
+}
+
+std::span<double> RelocationSweeps::qualities(std::uint32_t v, std::vector<std::uint32_t>& ring) {
+  mesh_.ball(v, ring);  // the ring is_free gave: the topology stays during the sweeps
+  const std::span<double> q{q_.data() + start_[v], start_[v + 1] - start_[v]};
+  if (stale_[v]) {
+    for (std::size_t i = 0; i < ring.size(); ++i) q[i] = quality(mesh_, v, mesh_.origin(ring[i]), mesh_.destination(ring[i]));
+    stale_[v] = 0;
+  }
+  return q;
+}
+
+std::uint64_t RelocationSweeps::sweep() {
+  if (start_.empty()) measure();
+  // Worst ball first (ties by vertex id): the book's classification of §8.6.3.
+  std::vector<std::pair<double, std::uint32_t>> order;
+  order.reserve(free_.size());
+  std::vector<std::uint32_t> ring;
+  for (const std::uint32_t v : free_) {
     double worst = 0.0;
-    for (std::size_t i = first; i < q.size(); ++i) worst = std::max(worst, q[i]);
+    for (const double q : qualities(v, ring)) worst = std::max(worst, q);
     order.emplace_back(worst, v);
   }
-  start[n] = static_cast<std::uint32_t>(q.size());
   std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) {
     return x.first > y.first || (x.first == y.first && x.second < y.second);
   });
-  // stale[v]: a vertex of v's closed ball moved in this sweep (its measured qualities are old).
-  std::vector<std::uint8_t> stale(n, 0);
-  std::vector<double> fresh;
   std::uint64_t moved = 0;
   for (const auto& entry : order) {
     const std::uint32_t v = entry.second;
     // Refused before and nothing it reads (its ball's points and metrics; the topology and the
     // flags stay, only relocation runs between the sweeps) changed since: refused again.
     if (settled_[v]) continue;
-    mesh_.ball(v, ring);  // the ring is_free gave: the topology stays during the sweeps
-    std::span<const double> qv{q.data() + start[v], start[v + 1] - start[v]};
-    if (stale[v]) {
-      fresh.clear();
-      ball_qualities(mesh_, v, ring, fresh);
-      qv = fresh;
-    }
-    if (!relocate_with(mesh_, v, ring, qv, field_, options_)) {
+    const std::span<const double> q = qualities(v, ring);
+    if (!relocate_with(mesh_, v, ring, q, field_, options_)) {
       settled_[v] = 1;
       continue;
     }
     ++moved;
     settled_[v] = 0;
-    stale[v] = 1;
+    stale_[v] = 1;
     for (const std::uint32_t h : ring) {
       settled_[mesh_.origin(h)] = 0;
-      stale[mesh_.origin(h)] = 1;
+      stale_[mesh_.origin(h)] = 1;
     }
   }
   return moved;
