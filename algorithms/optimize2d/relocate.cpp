@@ -120,7 +120,6 @@ RelocationSweeps::RelocationSweeps(Mesh2& mesh, const MetricField2& field, const
 
 void RelocationSweeps::measure() {
   const std::uint32_t n = mesh_.vertex_capacity();
-  settled_.assign(n, 0);
   stale_.assign(n, 0);
   start_.assign(n + 1, 0);
   std::vector<std::uint32_t> ring;
@@ -128,19 +127,21 @@ void RelocationSweeps::measure() {
     start_[v] = static_cast<std::uint32_t>(q_.size());
     if (!is_free(mesh_, v, ring)) continue;
     free_.push_back(v);
+    rings_.insert(rings_.end(), ring.begin(), ring.end());
     ball_qualities(mesh_, v, ring, q_);
   }
   start_[n] = static_cast<std::uint32_t>(q_.size());
 }
 
-std::span<double> RelocationSweeps::qualities(std::uint32_t v, std::vector<std::uint32_t>& ring) {
-  mesh_.ball(v, ring);  // the ring is_free gave: the topology stays during the sweeps
-  const std::span<double> q{q_.data() + start_[v], start_[v + 1] - start_[v]};
+RelocationSweeps::Ball RelocationSweeps::ball(std::uint32_t v) {
+  const std::size_t first = start_[v], size = start_[v + 1] - start_[v];
+  const Ball b{{rings_.data() + first, size}, {q_.data() + first, size}};
   if (stale_[v]) {
-    for (std::size_t i = 0; i < ring.size(); ++i) q[i] = quality(mesh_, v, mesh_.origin(ring[i]), mesh_.destination(ring[i]));
+    for (std::size_t i = 0; i < size; ++i)
+      b.q[i] = quality(mesh_, v, mesh_.origin(b.ring[i]), mesh_.destination(b.ring[i]));
     stale_[v] = 0;
   }
-  return q;
+  return b;
 }
 
 std::uint64_t RelocationSweeps::sweep() {
@@ -148,10 +149,9 @@ std::uint64_t RelocationSweeps::sweep() {
   // Worst ball first (ties by vertex id): the book's classification of §8.6.3.
   std::vector<std::pair<double, std::uint32_t>> order;
   order.reserve(free_.size());
-  std::vector<std::uint32_t> ring;
   for (const std::uint32_t v : free_) {
     double worst = 0.0;
-    for (const double q : qualities(v, ring)) worst = std::max(worst, q);
+    for (const double q : ball(v).q) worst = std::max(worst, q);
     order.emplace_back(worst, v);
   }
   std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) {
@@ -160,21 +160,13 @@ std::uint64_t RelocationSweeps::sweep() {
   std::uint64_t moved = 0;
   for (const auto& entry : order) {
     const std::uint32_t v = entry.second;
-    // Refused before and nothing it reads (its ball's points and metrics; the topology and the
-    // flags stay, only relocation runs between the sweeps) changed since: refused again.
-    if (settled_[v]) continue;
-    const std::span<const double> q = qualities(v, ring);
-    if (!relocate_with(mesh_, v, ring, q, field_, options_)) {
-      settled_[v] = 1;
-      continue;
-    }
+    const Ball b = ball(v);
+    // Every vertex is tried again, even one refused with its ball unmoved since: a field with a
+    // walk hint (mesh_pipeline::metric_field) may answer in other bits after other questions.
+    if (!relocate_with(mesh_, v, b.ring, b.q, field_, options_)) continue;
     ++moved;
-    settled_[v] = 0;
     stale_[v] = 1;
-    for (const std::uint32_t h : ring) {
-      settled_[mesh_.origin(h)] = 0;
-      stale_[mesh_.origin(h)] = 1;
-    }
+    for (const std::uint32_t h : b.ring) stale_[mesh_.origin(h)] = 1;
   }
   return moved;
 }
