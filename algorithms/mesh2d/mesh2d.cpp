@@ -2,9 +2,12 @@
 #include "algorithms/mesh2d/mesh2d.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "algorithms/common/element_estimate.hpp"
 #include "algorithms/common/mesh_pipeline.hpp"
@@ -16,6 +19,29 @@
 namespace dtlab {
 
 using mesh_pipeline::seconds_since;
+
+namespace {
+
+// The control space's one metric when every vertex of its live finite triangles carries the same
+// bits (a uniform size): metric_at returns a vertex's metric, or the interpolation of three equal
+// ones, which is one of them, wherever it locates p; nullopt otherwise. The optimizer asks the
+// field at every candidate point of a relocation: the constant spares the walk, same values.
+std::optional<Metric2> constant_metric(const ControlSpace2& control) {
+  const Mesh2& background = control.background();
+  const std::vector<Metric2>& metrics = control.vertex_metrics();
+  std::optional<Metric2> common;
+  for (std::uint32_t t = 0; t < background.triangle_capacity(); ++t) {
+    if (!background.is_alive(t) || background.is_ghost(t)) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const Metric2& m = metrics[background.vertex(t, i)];
+      if (!common) common = m;
+      else if (std::memcmp(common->m.data(), m.m.data(), sizeof(m.m)) != 0) return std::nullopt;
+    }
+  }
+  return common;
+}
+
+}  // namespace
 
 Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
   const auto start = mesh_pipeline::Clock::now();
@@ -110,7 +136,9 @@ Mesh2dResult mesh2d(const Mesh2dInput& input, const Mesh2dOptions& options) {
 
   // 5. Optimization.
   mesh_pipeline::optimize_step<MetricField2>(result, options, control, [&](const MetricField2& field, const auto& optimization) {
-    const Optimize2dStats o = optimize2d(result.mesh, optimization, field);
+    const std::optional<Metric2> constant = constant_metric(control);
+    const MetricField2 constant_field = constant ? MetricField2([m = *constant](const Vec2&) { return m; }) : MetricField2{};
+    const Optimize2dStats o = optimize2d(result.mesh, optimization, constant ? constant_field : field);
     result.stats.swaps = o.swaps + o.valence_swaps;
     return o;
   });

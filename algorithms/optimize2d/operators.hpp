@@ -65,6 +65,34 @@ struct RelocateOptions {
 bool try_relocate(Mesh2& mesh, std::uint32_t v, const MetricField2& field, const RelocateOptions& options = {});
 // One sweep: every free vertex once, worst ball first. Returns the number of vertices moved.
 std::uint64_t relocate_sweep(Mesh2& mesh, const MetricField2& field, const RelocateOptions& options = {});
+// Consecutive sweeps with nothing but relocation between them (a round's relocation_sweeps): the
+// same moves as relocate_sweep each time, without repeating what cannot change. Each ball's
+// qualities are measured once and again only after a vertex of the ball moved (they serve the
+// order and the attempt). The mesh may change between two sweeps only by relocations made here.
+class RelocationSweeps {
+ public:
+  RelocationSweeps(Mesh2& mesh, const MetricField2& field, const RelocateOptions& options);
+  std::uint64_t sweep();  // relocate_sweep's: the number of vertices moved
+
+ private:
+  void measure();  // the free vertices and their balls' qualities, before the first sweep
+  // v's ring (Mesh2::ball's half-edges, as is_free found them: the topology stays during the
+  // sweeps) and its triangles' qualities, measured again if a vertex of the ball moved.
+  struct Ball {
+    std::span<const std::uint32_t> ring;
+    std::span<double> q;
+  };
+  Ball ball(std::uint32_t v);
+
+  Mesh2& mesh_;
+  const MetricField2& field_;
+  RelocateOptions options_;
+  std::vector<std::uint32_t> free_;     // the free vertices (optimize2d_detail::is_free), by id
+  std::vector<std::uint32_t> start_;    // v's ball: rings_ and q_ in [start_[v], start_[v + 1])
+  std::vector<std::uint32_t> rings_;    // the free vertices' rings, one after the other
+  std::vector<double> q_;               // quality(v, origin, destination) of each ring half-edge
+  std::vector<std::uint8_t> stale_;     // a vertex of v's ball moved since q_ was measured
+};
 
 // --- Collapse (book §8.3.5, edge suppression by reduction) -------------------------------------
 struct CollapseOptions {

@@ -36,7 +36,8 @@ OperatorResult swap(Mesh2& mesh, const Optimize2dOptions& options, const MetricF
 
 OperatorResult relocate(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field,
                         Optimize2dStats& stats) {
-  return relocation_sweeps(options, stats, [&] { return relocate_sweep(mesh, field, options.relocate); });
+  RelocationSweeps sweeps(mesh, field, options.relocate);
+  return relocation_sweeps(options, stats, [&] { return sweeps.sweep(); });
 }
 
 OperatorResult valence(Mesh2& mesh, const Optimize2dOptions& options, const MetricField2& field,

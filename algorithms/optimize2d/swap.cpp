@@ -5,7 +5,9 @@
 // queued again; each swap lowers the pair's worst Q_K, so the pass ends (the bound is a net).
 #include <algorithm>
 #include <deque>
+#include <optional>
 #include <utility>
+#include <vector>
 
 #include "algorithms/optimize2d/local.hpp"
 #include "algorithms/optimize2d/operators.hpp"
@@ -18,7 +20,32 @@ using optimize2d_detail::is_locked;
 using optimize2d_detail::quality;
 using optimize2d_detail::triangle_quality;
 
-bool try_swap(Mesh2& mesh, std::uint32_t h, double margin) {
+namespace {
+
+// Q_K by triangle slot for one swap pass (triangle_quality's values), measured when first asked;
+// a flip forgets its two slots. Only flips change the mesh during the pass.
+class SlotQualities {
+ public:
+  explicit SlotQualities(const Mesh2& mesh)
+      : mesh_(mesh), q_(mesh.triangle_capacity()), known_(mesh.triangle_capacity(), 0) {}
+  double operator()(std::uint32_t t) {
+    if (!known_[t]) {
+      q_[t] = triangle_quality(mesh_, t);
+      known_[t] = 1;
+    }
+    return q_[t];
+  }
+  void forget(std::uint32_t t) noexcept { known_[t] = 0; }
+
+ private:
+  const Mesh2& mesh_;
+  std::vector<double> q_;
+  std::vector<std::uint8_t> known_;
+};
+
+// try_swap with the pair's present qualities from `slot_quality(t)`.
+template <class SlotQuality>
+bool swap_if_better(Mesh2& mesh, std::uint32_t h, double margin, SlotQuality&& slot_quality) {
   if (is_locked(mesh, h)) return false;
   const std::uint32_t g = mesh.twin(h);
   // t1 = (p, a, b) with h = a -> b; t2 = (q, b, a). New pair (p, a, q), (q, b, p).
@@ -27,11 +54,17 @@ bool try_swap(Mesh2& mesh, std::uint32_t h, double margin) {
       orient2d(mesh.point(q), mesh.point(b), mesh.point(p)) != Sign::Positive) {
     return false;
   }
-  const double before = std::max(triangle_quality(mesh, Mesh2::triangle_of(h)), triangle_quality(mesh, Mesh2::triangle_of(g)));
+  const double before = std::max(slot_quality(Mesh2::triangle_of(h)), slot_quality(Mesh2::triangle_of(g)));
   const double after = std::max(quality(mesh, p, a, q), quality(mesh, q, b, p));
   if (!(after < before * (1.0 - margin))) return false;
   mesh.flip(h);
   return true;
+}
+
+}  // namespace
+
+bool try_swap(Mesh2& mesh, std::uint32_t h, double margin) {
+  return swap_if_better(mesh, h, margin, [&](std::uint32_t t) { return triangle_quality(mesh, t); });
 }
 
 SwapPassResult swap_pass(Mesh2& mesh, double margin, std::span<const std::uint32_t> seeds) {
@@ -59,16 +92,20 @@ SwapPassResult swap_pass(Mesh2& mesh, double margin, std::span<const std::uint32
     queued[e] = 1;
     queue.push_back(e);
   };
+  // The whole-mesh pass measures each triangle once (for the order, then until it is flipped);
+  // a seeded one, a handful of edges after a split, measures as it goes.
+  std::optional<SlotQualities> cache;
   if (seeds.empty()) {
+    cache.emplace(mesh);
     // Every unlocked edge, the worst pair first (ties by half-edge: deterministic).
     std::vector<std::pair<double, std::uint32_t>> order;
     for (std::uint32_t t = 0; t < mesh.triangle_capacity(); ++t) {
       if (!mesh.in_domain(t)) continue;
-      const double qt = triangle_quality(mesh, t);
+      const double qt = (*cache)(t);
       for (std::uint32_t i = 0; i < 3; ++i) {
         const std::uint32_t h = Mesh2::half_edge(t, i);
         if (is_locked(mesh, h) || mesh.twin(h) < h) continue;
-        order.emplace_back(std::max(qt, triangle_quality(mesh, Mesh2::triangle_of(mesh.twin(h)))), h);
+        order.emplace_back(std::max(qt, (*cache)(Mesh2::triangle_of(mesh.twin(h)))), h);
       }
     }
     std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) {
@@ -87,7 +124,12 @@ SwapPassResult swap_pass(Mesh2& mesh, double margin, std::span<const std::uint32
     // flip keeps both slots (with other vertices): the quadrilateral's outer edges are edges of
     // these two triangles.
     const std::uint32_t t1 = Mesh2::triangle_of(h), t2 = Mesh2::triangle_of(mesh.twin(h));
-    if (!try_swap(mesh, h, margin)) continue;
+    const bool swapped = cache ? swap_if_better(mesh, h, margin, *cache) : try_swap(mesh, h, margin);
+    if (!swapped) continue;
+    if (cache) {
+      cache->forget(t1);
+      cache->forget(t2);
+    }
     if (++result.swaps >= bound) {
       result.limit_reached = true;
       break;

@@ -5,19 +5,24 @@
 // properties on random Delaunay meshes of the unit square with random isotropic and anisotropic
 // metric fields: after every operator and after the strategy Mesh2::check() passes (links, exact
 // orientation: no triangle inverted), the constrained edges and boundary vertices are unchanged,
-// the area is preserved, and swaps and relocations never make the worst quality worse.
+// the area is preserved, and swaps and relocations never make the worst quality worse; the
+// passes that keep their measures (RelocationSweeps, the whole-mesh swap pass) move and swap as
+// the passes that measure everything again.
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "algorithms/delaunay2d/delaunay2d.hpp"
+#include "algorithms/optimize2d/local.hpp"
 #include "algorithms/optimize2d/optimize2d.hpp"
 #include "kernel/error.hpp"
 #include "kernel/quality.hpp"
@@ -624,6 +629,76 @@ RC_GTEST_PROP(Optimize2dProperties, StrategyKeepsTheMeshValid, ()) {
   if (!sizes) RC_ASSERT(stats.worst_after <= stats.worst_before);
   const QualitySummary2 after = summarize_quality(c.mesh);
   RC_ASSERT(after.worst == stats.worst_after);
+}
+
+// --- The passes' caches give the uncached passes' results, bit for bit -------------------------
+
+// relocate_sweep as it was written before its measures were kept (every ball measured for the
+// order, every attempt measuring its ball again): the reference for RelocationSweeps.
+std::uint64_t reference_relocate_sweep(Mesh2& mesh, const MetricField2& field) {
+  std::vector<std::pair<double, std::uint32_t>> order;
+  std::vector<std::uint32_t> ring;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
+    if (!optimize2d_detail::is_free(mesh, v, ring)) continue;
+    double worst = 0.0;
+    for (const std::uint32_t h : ring)
+      worst = std::max(worst, optimize2d_detail::quality(mesh, v, mesh.origin(h), mesh.destination(h)));
+    order.emplace_back(worst, v);
+  }
+  std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) {
+    return x.first > y.first || (x.first == y.first && x.second < y.second);
+  });
+  std::uint64_t moved = 0;
+  for (const auto& entry : order) moved += try_relocate(mesh, entry.second, field) ? 1 : 0;
+  return moved;
+}
+
+std::vector<std::array<double, 5>> points_and_metrics(const Mesh2& mesh) {
+  std::vector<std::array<double, 5>> out;
+  for (std::uint32_t v = 0; v < mesh.vertex_capacity(); ++v) {
+    if (mesh.is_dead_vertex(v)) continue;
+    const Metric2& m = mesh.metric(v);
+    out.push_back({mesh.point(v).x, mesh.point(v).y, m.m[0], m.m[1], m.m[2]});
+  }
+  return out;
+}
+
+RC_GTEST_PROP(Optimize2dProperties, RelocationSweepsMoveAsFreshSweeps, ()) {
+  RandomCase c = random_case();
+  Mesh2 reference = c.mesh;
+  RelocationSweeps sweeps(c.mesh, c.field, {});
+  for (int k = 0; k < 3; ++k) {
+    const std::uint64_t expected = reference_relocate_sweep(reference, c.field);
+    RC_ASSERT(sweeps.sweep() == expected);
+    RC_ASSERT(points_and_metrics(c.mesh) == points_and_metrics(reference));
+  }
+}
+
+// The whole-mesh pass (its triangles' Q_K kept until flipped) against the seeded pass (measured
+// each time) given the same edges in the same order.
+RC_GTEST_PROP(Optimize2dProperties, SwapPassKeptQualitiesSwapAsMeasuredOnes, ()) {
+  RandomCase c = random_case();
+  std::vector<std::pair<double, std::uint32_t>> order;
+  for (std::uint32_t t = 0; t < c.mesh.triangle_capacity(); ++t) {
+    if (!c.mesh.in_domain(t)) continue;
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t h = Mesh2::half_edge(t, i);
+      if (optimize2d_detail::is_locked(c.mesh, h) || c.mesh.twin(h) < h) continue;
+      order.emplace_back(std::max(optimize2d_detail::triangle_quality(c.mesh, t),
+                                  optimize2d_detail::triangle_quality(c.mesh, Mesh2::triangle_of(c.mesh.twin(h)))),
+                         h);
+    }
+  }
+  std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) {
+    return x.first > y.first || (x.first == y.first && x.second < y.second);
+  });
+  std::vector<std::uint32_t> seeds;
+  for (const auto& e : order) seeds.push_back(e.second);
+  Mesh2 reference = c.mesh;
+  const SwapPassResult expected = swap_pass(reference, kImprovementMargin, seeds);
+  const SwapPassResult r = swap_pass(c.mesh);
+  RC_ASSERT(r.swaps == expected.swaps);
+  RC_ASSERT(c.mesh.domain().triangles == reference.domain().triangles);
 }
 
 }  // namespace
