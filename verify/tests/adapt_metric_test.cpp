@@ -267,8 +267,11 @@ TEST(SolutionMetric, FieldLinearInOneRegionAndCurvedElsewhereHasTheComplexityAsk
   SolutionMetricStats s;
   const auto m = metric_from_solutions(mesh.vertices, mesh.triangles, fields, o, &s);
   EXPECT_NEAR(s.complexity_before_clipping, 2000.0, 1e-9 * 2000.0);
-  for (std::size_t v = 0; v < m.size(); ++v)  // the linear half gets h_max, the curved one less
-    if (mesh.vertices[v].x < 0.4) EXPECT_NEAR(sizes(m[v])[1], 0.3, 1e-9) << v;
+  for (std::size_t v = 0; v < m.size(); ++v) {  // the linear half gets h_max, the curved one less
+    if (mesh.vertices[v].x < 0.4) {
+      EXPECT_NEAR(sizes(m[v])[1], 0.3, 1e-9) << v;
+    }
+  }
   EXPECT_LT(s.h_min, 0.05);
 }
 
