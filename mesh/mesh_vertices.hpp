@@ -34,6 +34,10 @@ class MeshVertices {
   std::uint8_t flags(std::uint32_t v) const noexcept { return vertex_flags_[v]; }
   bool is_dead_vertex(std::uint32_t v) const noexcept { return (vertex_flags_[v] & kDead) != 0; }
   void set_flags(std::uint32_t v, std::uint8_t f) noexcept { vertex_flags_[v] = f; }
+  // A slot in range, not dead, with an element.
+  bool is_live_vertex(std::uint32_t v) const noexcept {
+    return v < vertex_capacity() && !is_dead_vertex(v) && vertex_element_[v] != kNoElement;
+  }
   // Marks v dead and frees its slot; no live element may still use it.
   void remove_vertex(std::uint32_t v) {
     DTLAB_ASSERT(v < vertex_capacity() && !is_dead_vertex(v));

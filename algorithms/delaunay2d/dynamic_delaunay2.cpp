@@ -9,7 +9,6 @@
 #include <utility>
 
 #include "algorithms/common/conflict_cavity.hpp"
-#include "algorithms/common/dynamic_delaunay_move.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/perturbation.hpp"
@@ -20,7 +19,6 @@ namespace {
 constexpr std::uint32_t kInfinite = Mesh2::kInfinite;
 constexpr std::uint32_t kNone = Mesh2::kNone;
 
-std::string show(const Vec2& p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
 
 // w on the line ab (checked by the caller) and strictly between a and b.
 bool strictly_between(const Vec2& a, const Vec2& b, const Vec2& w) noexcept {
@@ -40,22 +38,7 @@ bool ghost_conflict(const Vec2& a, const Vec2& b, const Vec2& w) noexcept {
 DynamicDelaunay2::DynamicDelaunay2(std::span<const Vec2> points, const Delaunay2dOptions& options) {
   Delaunay2dResult r = delaunay2d(points, options);
   refuse_unusable_start(r, "triangle");
-  std::vector<int> refs(r.triangulation.triangle_count(), 0);
-  mesh_ = Mesh2(r.triangulation, refs, {});
-  finite_triangles_ = r.triangulation.finite_triangle_count();
-  hint_ = 0;
-}
-
-bool DynamicDelaunay2::contains(std::uint32_t v) const noexcept {
-  return v < mesh_.vertex_capacity() && !mesh_.is_dead_vertex(v) && mesh_.vertex_triangle(v) != kNone;
-}
-
-std::vector<std::array<std::uint32_t, 3>> DynamicDelaunay2::finite_triangles() const {
-  std::vector<std::array<std::uint32_t, 3>> out;
-  out.reserve(finite_triangles_);
-  for (std::uint32_t t = 0; t < mesh_.triangle_capacity(); ++t)
-    if (mesh_.is_alive(t) && !mesh_.is_ghost(t)) out.push_back({mesh_.vertex(t, 0), mesh_.vertex(t, 1), mesh_.vertex(t, 2)});
-  return out;
+  adopt(r.triangulation, r.triangulation.triangle_count(), r.triangulation.finite_triangle_count());
 }
 
 bool DynamicDelaunay2::in_conflict(std::uint32_t t, const Vec2& p) const {
@@ -69,17 +52,12 @@ std::uint32_t DynamicDelaunay2::add(std::uint32_t a, std::uint32_t b, std::uint3
   if (b == kInfinite) std::tie(a, b, c) = std::tuple{b, c, a};
   if (c == kInfinite) std::tie(a, b, c) = std::tuple{c, a, b};
   const bool ghost = a == kInfinite;
-  if (!ghost) ++finite_triangles_;
+  if (!ghost) ++finite_;
   return mesh_.add_triangle(a, b, c, ghost ? Mesh2::kExterior : 0);
 }
 
 std::uint32_t DynamicDelaunay2::insert(const Vec2& p) {
-  check_coordinates(std::span<const Vec2>(&p, 1), "inserted point");
-  const Mesh2::Location loc = mesh_.locate(p, hint_);
-  if (loc.where == Mesh2::Where::Vertex)
-    throw DuplicatePointError("inserted point " + show(p) + " is vertex " + std::to_string(loc.handle) + " already",
-                              {loc.handle});
-  const std::uint32_t start = loc.triangle;
+  const std::uint32_t start = insertion_start(p);
   DTLAB_ASSERT(in_conflict(start, p));
 
   // The cavity: the triangles in conflict with p, connected through their edges (a disk, star-
@@ -96,7 +74,7 @@ std::uint32_t DynamicDelaunay2::insert(const Vec2& p) {
   for (const std::uint32_t h : handles_) boundary.push_back({mesh_.origin(h), mesh_.destination(h), mesh_.twin(h)});
   stats_.cavity_triangles += cavity_.size();
   for (const std::uint32_t t : cavity_) {
-    if (!mesh_.is_ghost(t)) --finite_triangles_;
+    if (!mesh_.is_ghost(t)) --finite_;
     mesh_.remove_triangle(t);
   }
   const std::uint32_t vp = mesh_.add_vertex(p, Metric2{}, 0);
@@ -124,7 +102,7 @@ std::uint32_t DynamicDelaunay2::insert(const Vec2& p) {
 void DynamicDelaunay2::check_removable(std::uint32_t v, const std::vector<std::uint32_t>& ball) const {
   std::uint64_t finite_in_ball = 0;
   for (const std::uint32_t h : ball) finite_in_ball += mesh_.is_ghost(Mesh2::triangle_of(h)) ? 0 : 1;
-  if (finite_in_ball < finite_triangles_) return;  // a triangle without v survives
+  if (finite_in_ball < finite_) return;  // a triangle without v survives
   // Every survivor is then on v's link: are they all on one line?
   std::vector<std::uint32_t> rest;
   for (const std::uint32_t h : ball)
@@ -178,7 +156,7 @@ void DynamicDelaunay2::remove(std::uint32_t v) {
   }
   for (const std::uint32_t h : ball_) {
     const std::uint32_t t = Mesh2::triangle_of(h);
-    if (!mesh_.is_ghost(t)) --finite_triangles_;
+    if (!mesh_.is_ghost(t)) --finite_;
     mesh_.remove_triangle(t);
   }
   mesh_.remove_vertex(v);
@@ -213,10 +191,6 @@ void DynamicDelaunay2::remove(std::uint32_t v) {
   mesh_.link(nav2::opposite(mesh_, t, y), outside_[2]);
   hint_ = t;
   ++stats_.removed;
-}
-
-std::uint32_t DynamicDelaunay2::move(std::uint32_t v, const Vec2& p) {
-  return move_vertex(*this, mesh_, hint_, v, p);
 }
 
 Delaunay2dRemoval delaunay2d_remove(std::span<const Vec2> points, std::span<const std::uint32_t> indices,

@@ -29,6 +29,7 @@
 #include <span>
 #include <vector>
 
+#include "algorithms/common/dynamic_delaunay_base.hpp"
 #include "algorithms/common/dynamic_delaunay_errors.hpp"
 #include "algorithms/common/point_removal.hpp"
 #include "algorithms/delaunay2d/delaunay2d.hpp"
@@ -44,7 +45,7 @@ struct DynamicDelaunay2Stats {
   std::uint64_t ear_tests = 0;         // candidate ears tested by removals
 };
 
-class DynamicDelaunay2 {
+class DynamicDelaunay2 : public DynamicDelaunayBase<DynamicDelaunay2, Mesh2, DynamicDelaunay2Stats, 3> {
  public:
   // The Delaunay triangulation of `points` (vertex id = index), built by delaunay2d() with
   // `options` (its variant). DuplicatePointError for a repeated point (naming both indices),
@@ -57,19 +58,11 @@ class DynamicDelaunay2 {
   // Removes vertex v. UnknownVertexError if v is not live; DegenerateRemovalError, leaving the
   // triangulation unchanged, if the other vertices are fewer than three or all collinear.
   void remove(std::uint32_t v);
-  // remove(v) then insert(p); returns p's id. If p is a live vertex other than v, nothing
-  // changes and DuplicatePointError is thrown.
-  std::uint32_t move(std::uint32_t v, const Vec2& p);
 
-  bool contains(std::uint32_t v) const noexcept;
-  std::uint32_t vertex_count() const noexcept { return mesh_.live_vertex_count(); }
-  std::uint64_t finite_triangle_count() const noexcept { return finite_triangles_; }
+  // move, contains, vertex_count, mesh, stats, finite_elements: algorithms/common/dynamic_delaunay_base.hpp.
+  std::uint64_t finite_triangle_count() const noexcept { return finite_; }
   // The live finite triangles, counter-clockwise, vertex ids.
-  std::vector<std::array<std::uint32_t, 3>> finite_triangles() const;
-  const Mesh2& mesh() const noexcept { return mesh_; }
-  const DynamicDelaunay2Stats& stats() const noexcept { return stats_; }
-  // finite_triangles(), under the name algorithms/common/point_removal.hpp uses in both dimensions.
-  std::vector<std::array<std::uint32_t, 3>> finite_elements() const { return finite_triangles(); }
+  std::vector<std::array<std::uint32_t, 3>> finite_triangles() const { return finite_elements(); }
 
  private:
   bool in_conflict(std::uint32_t t, const Vec2& p) const;
@@ -77,10 +70,6 @@ class DynamicDelaunay2 {
   std::uint32_t add(std::uint32_t a, std::uint32_t b, std::uint32_t c);
   void check_removable(std::uint32_t v, const std::vector<std::uint32_t>& ball) const;
 
-  Mesh2 mesh_;
-  std::uint64_t finite_triangles_ = 0;
-  std::uint32_t hint_ = 0;  // a live triangle near the last change, where locate starts
-  DynamicDelaunay2Stats stats_;
   // Scratch, kept between calls.
   std::vector<std::uint32_t> cavity_, stack_, handles_, ball_, polygon_, outside_;
   std::vector<std::uint32_t> stamp_;

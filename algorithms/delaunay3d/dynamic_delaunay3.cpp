@@ -8,7 +8,6 @@
 #include <utility>
 
 #include "algorithms/common/conflict_cavity.hpp"
-#include "algorithms/common/dynamic_delaunay_move.hpp"
 #include "kernel/coordinate_range.hpp"
 #include "kernel/predicates.hpp"
 #include "kernel/predicates/perturbation.hpp"
@@ -21,9 +20,6 @@ constexpr std::uint32_t kInfinite = Mesh3::kInfinite;
 constexpr std::uint32_t kNone = Mesh3::kNone;
 using Triple = std::array<std::uint32_t, 3>;
 
-std::string show(const Vec3& p) {
-  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
-}
 
 Triple sorted(Triple f) {
   std::sort(f.begin(), f.end());
@@ -85,22 +81,7 @@ DynamicDelaunay3::DynamicDelaunay3(std::span<const Vec3> points, const Delaunay3
   link_options_.threads = 1;
   Delaunay3dResult r = delaunay3d(points, options);
   refuse_unusable_start(r, "tetrahedron");
-  std::vector<int> refs(r.tetrahedralization.tetrahedron_count(), 0);
-  mesh_ = Mesh3(r.tetrahedralization, refs, {});
-  finite_ = r.tetrahedralization.finite_tetrahedron_count();
-  hint_ = 0;
-}
-
-bool DynamicDelaunay3::contains(std::uint32_t v) const noexcept {
-  return v < mesh_.vertex_capacity() && !mesh_.is_dead_vertex(v) && mesh_.vertex_tetrahedron(v) != kNone;
-}
-
-std::vector<std::array<std::uint32_t, 4>> DynamicDelaunay3::finite_tetrahedra() const {
-  std::vector<std::array<std::uint32_t, 4>> out;
-  out.reserve(finite_);
-  for (std::uint32_t t = 0; t < mesh_.tetrahedron_capacity(); ++t)
-    if (mesh_.is_alive(t) && !mesh_.is_ghost(t)) out.push_back(mesh_.tetrahedron(t));
-  return out;
+  adopt(r.tetrahedralization, r.tetrahedralization.tetrahedron_count(), r.tetrahedralization.finite_tetrahedron_count());
 }
 
 // The ghost rule of algorithms/delaunay3d/cavity_kernel.hpp: beyond the hull facet, or on its
@@ -144,12 +125,7 @@ void DynamicDelaunay3::glue(std::span<const std::uint32_t> handles) {
 }
 
 std::uint32_t DynamicDelaunay3::insert(const Vec3& p) {
-  check_coordinates(std::span<const Vec3>(&p, 1), "inserted point");
-  const Mesh3::Location loc = mesh_.locate(p, hint_);
-  if (loc.where == Mesh3::Where::Vertex)
-    throw DuplicatePointError("inserted point " + show(p) + " is vertex " + std::to_string(loc.handle) + " already",
-                              {loc.handle});
-  const std::uint32_t start = loc.tetrahedron;
+  const std::uint32_t start = insertion_start(p);
   DTLAB_ASSERT(in_conflict(start, p));
   epoch_ += 2;
   if (stamp_.size() < mesh_.tetrahedron_capacity()) stamp_.resize(mesh_.tetrahedron_capacity(), 0);
@@ -298,10 +274,6 @@ void DynamicDelaunay3::remove_ball(std::uint32_t v) {
     mesh_.remove_tetrahedron(t);
   }
   mesh_.remove_vertex(v);
-}
-
-std::uint32_t DynamicDelaunay3::move(std::uint32_t v, const Vec3& p) {
-  return move_vertex(*this, mesh_, hint_, v, p);
 }
 
 Delaunay3dRemoval delaunay3d_remove(std::span<const Vec3> points, std::span<const std::uint32_t> indices,

@@ -35,6 +35,7 @@
 #include <span>
 #include <vector>
 
+#include "algorithms/common/dynamic_delaunay_base.hpp"
 #include "algorithms/common/dynamic_delaunay_errors.hpp"
 #include "algorithms/common/point_removal.hpp"
 #include "algorithms/delaunay3d/delaunay3d.hpp"
@@ -51,7 +52,7 @@ struct DynamicDelaunay3Stats {
   std::uint64_t flat_links = 0;         // removals of a hull vertex whose link is coplanar
 };
 
-class DynamicDelaunay3 {
+class DynamicDelaunay3 : public DynamicDelaunayBase<DynamicDelaunay3, Mesh3, DynamicDelaunay3Stats, 4> {
  public:
   // The Delaunay tetrahedralization of `points` (vertex id = index), built by delaunay3d() with
   // `options`. DuplicatePointError for a repeated point (naming both indices),
@@ -64,19 +65,11 @@ class DynamicDelaunay3 {
   // Removes vertex v. UnknownVertexError if v is not live; DegenerateRemovalError, leaving the
   // tetrahedralization unchanged, if the other vertices are fewer than four or all coplanar.
   void remove(std::uint32_t v);
-  // remove(v) then insert(p); returns p's id. If p is a live vertex other than v, nothing
-  // changes and DuplicatePointError is thrown.
-  std::uint32_t move(std::uint32_t v, const Vec3& p);
 
-  bool contains(std::uint32_t v) const noexcept;
-  std::uint32_t vertex_count() const noexcept { return mesh_.live_vertex_count(); }
+  // move, contains, vertex_count, mesh, stats, finite_elements: algorithms/common/dynamic_delaunay_base.hpp.
   std::uint64_t finite_tetrahedron_count() const noexcept { return finite_; }
   // The live finite tetrahedra, positively oriented, vertex ids.
-  std::vector<std::array<std::uint32_t, 4>> finite_tetrahedra() const;
-  const Mesh3& mesh() const noexcept { return mesh_; }
-  const DynamicDelaunay3Stats& stats() const noexcept { return stats_; }
-  // finite_tetrahedra(), under the name algorithms/common/point_removal.hpp uses in both dimensions.
-  std::vector<std::array<std::uint32_t, 4>> finite_elements() const { return finite_tetrahedra(); }
+  std::vector<std::array<std::uint32_t, 4>> finite_tetrahedra() const { return finite_elements(); }
 
  private:
   bool in_conflict(std::uint32_t t, const Vec3& p) const;
@@ -103,11 +96,7 @@ class DynamicDelaunay3 {
     std::uint32_t stamp_ = 0;
   };
 
-  Mesh3 mesh_;
-  std::uint64_t finite_ = 0;
-  std::uint32_t hint_ = 0;
   Delaunay3dOptions link_options_;
-  DynamicDelaunay3Stats stats_;
   std::vector<std::uint32_t> cavity_, stack_, ball_, open_, outside_, stamp_;
   // Scratch of remove(): vertex -> link index, the link, its points, the boundary facets in link
   // numbering, D's facet index, boundary marks, kept tetrahedra and their search queue.
