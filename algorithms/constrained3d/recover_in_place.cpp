@@ -143,7 +143,16 @@ std::string recover_in_place(Constrained3dContext& c) {
   recovery.allow_link_removals(true);
   recovery.record_changes(&c.changed);
   SteinerInserter inserter(c);
-  inserter.set_placement([&](const Vec3& p, std::uint32_t near) { return recovery.insert_point(p, near); });
+  // An edge split placed where its walk stopped goes in by splitting that face where it can
+  // (split_crossed_face); any other point into the tetrahedron, face or edge that holds it.
+  constexpr std::uint32_t kNone = Tetrahedralization3::kNone;
+  std::array<std::uint32_t, 3> on_face{kNone, kNone, kNone};
+  std::array<std::uint32_t, 2> on_piece{kNone, kNone};
+  inserter.set_placement([&](const Vec3& p, std::uint32_t near) {
+    if (on_face[0] != kNone)
+      if (const std::uint32_t id = recovery.split_crossed_face(on_piece[0], on_piece[1], on_face, p); id != kNone) return id;
+    return recovery.insert_point(p, near);
+  });
   constexpr int kEdgePasses = 3;  // passes over the failed pieces before any is split
 
   // Edges. Each round splits the pieces that flips could not make (tried again while flips for
@@ -168,16 +177,22 @@ std::string recover_in_place(Constrained3dContext& c) {
       const auto& chain = c.edges[split.edge].chain;
       const auto piece = static_cast<std::size_t>(at - t.begin());
       if (recovery.has_edge(chain[piece - 1], chain[piece]) || recovery.recover_edge(chain[piece - 1], chain[piece])) continue;
+      // Where its walk stops now: the splits before may have removed the face where it stopped
+      // when the round began (a point there would go beside the faces that replaced it).
+      const std::array<std::uint32_t, 3> block = recovery.blocking_face();
+      const double at_block = split_at_block(c, split.edge, piece - 1, block);
       bool placed = false;
       for (int k = 0; k < 7 && !placed; ++k) {
         const double w = k == 0 ? 0.0 : std::ldexp(k % 2 ? 1.0 : -1.0, -(k + 3) / 2);  // 0, +-1/4, +-1/8, +-1/16
-        const double tk = split.t + w * (hi - lo);
+        const double tk = at_block + w * (hi - lo);
         if (!(lo < tk && tk < hi)) continue;
+        if (k == 0) on_face = block, on_piece = {chain[piece - 1], chain[piece]};
         try {
           added += inserter.insert({{split.edge, tk}}, none);
           placed = true;
         } catch (const InputError&) {
         }
+        on_face = {kNone, kNone, kNone};
       }
       if (!placed)
         return "a Steiner point of the edge between vertices " + std::to_string(c.edges[split.edge].a + 1) + " and " +

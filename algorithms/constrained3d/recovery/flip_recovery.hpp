@@ -70,6 +70,17 @@ class FlipRecovery {
   // ball of vertex `near`. Returns its id, or kNone (nothing changed) where p is outside the hull,
   // on a ghost, equal to a vertex, or inside a protected face or edge.
   std::uint32_t insert_point(const Vec3& p, std::uint32_t near);
+  // Inserts p, placed where segment uv crosses face abc (where uv's walk stopped:
+  // blocking_face), by splitting the face's two finite tetrahedra 2 -> 6: the face is gone. Rounded,
+  // p lies a hair to one side of abc, and insert_point's 1 -> 4 split of the tetrahedron holding
+  // it would keep abc beside p as a flat tetrahedron, which uv's remaining piece crosses at p
+  // itself, past any flip: Chazelle's polyhedron (n = 8) split such a piece towards p until
+  // doubles ran out. Returns p's id, or kNone (nothing changed) where uv does not cross abc's
+  // open interior, abc is protected or on the hull, or a new tetrahedron would not be positive.
+  // (Not the same for a crossed edge: splitting it puts the points of many edges crossing one
+  // line on that line, and the triangles later needed between them are flat.)
+  std::uint32_t split_crossed_face(std::uint32_t u, std::uint32_t v, const std::array<std::uint32_t, 3>& abc,
+                                   const Vec3& p);
   // Splits edge ab at p (appended to the points), a protected one included: every tetrahedron of
   // its shell in two (method cdt splits a constraint piece of its constrained tetrahedralization
   // so). Returns p's id, or kNone (nothing changed) where ab is no edge or a tetrahedron made
