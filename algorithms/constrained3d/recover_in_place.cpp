@@ -213,6 +213,7 @@ std::string recover_in_place(Constrained3dContext& c) {
   struct Made {
     std::vector<Tri> pieces;  // recovered and protected
     std::size_t vertex_count = 0;  // of the triangulation they belong to
+    std::size_t count = 0;         // that triangulation's pieces (facet_delaunay_pieces), kept for the end
   };
   std::vector<Made> made(c.facets.size());
   constexpr std::uint32_t kPointsPerTriangle = 16;
@@ -260,7 +261,7 @@ std::string recover_in_place(Constrained3dContext& c) {
           if (vertex_count > 3) {
             for (int r = 0; r < 3; ++r) recovery.protect_edge(t[r], t[(r + 1) % 3]);
             recovery.protect_face(t[0], t[1], t[2]);
-            made[f].pieces.push_back(t), made[f].vertex_count = vertex_count;
+            made[f].pieces.push_back(t), made[f].vertex_count = vertex_count, made[f].count = tris.size();
           }
           continue;
         }
@@ -327,7 +328,7 @@ std::string recover_in_place(Constrained3dContext& c) {
     std::sort(pieces.begin(), pieces.end());
     pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
     if (vertex_count > 3 && done[f] == vertex_count && made[f].vertex_count == vertex_count &&
-        pieces.size() == facet_delaunay_pieces(c, f).size() &&
+        pieces.size() == made[f].count &&
         std::all_of(pieces.begin(), pieces.end(), [&](const Tri& t) { return index.has_face(t[0], t[1], t[2]); })) {
       c.facets[f].pieces = pieces;
       c.facets[f].pieces_vertex_count = vertex_count;
