@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,10 +52,14 @@ double split_at_block(const Constrained3dContext& c, std::uint32_t e, std::size_
 }
 
 // Where an edge of the mesh crosses sub-triangle t of facet f, in f's (s, t), computed in doubles
-// (a placement: the point made is the exact facet point at these parameters); nothing if no edge
-// crosses t or the point found is not strictly inside t.
-std::optional<std::array<double, 2>> crossing_in_triangle(const Constrained3dContext& c, FlipRecovery& recovery,
-                                                          std::uint32_t f, const FacetParameters& st, const Tri& t) {
+// (a placement: the point made is the exact facet point at these parameters), with that edge;
+// nothing if no edge crosses t or the point found is not strictly inside t.
+struct Crossing {
+  std::array<double, 2> at;
+  std::array<std::uint32_t, 2> edge;
+};
+std::optional<Crossing> crossing_in_triangle(const Constrained3dContext& c, FlipRecovery& recovery, std::uint32_t f,
+                                             const FacetParameters& st, const Tri& t) {
   const auto [p, q] = recovery.crossing_edge(t[0], t[1], t[2]);
   if (p == Tetrahedralization3::kNone) return std::nullopt;
   const auto P = c.mesh.points();
@@ -76,7 +81,7 @@ std::optional<std::array<double, 2>> crossing_in_triangle(const Constrained3dCon
     const auto &u = st.at(t[r]), &v = st.at(t[(r + 1) % 3]);
     if (((v[0] - u[0]) * (T - u[1]) - (v[1] - u[1]) * (S - u[0])).sign() != Sign::Positive) return std::nullopt;
   }
-  return at;
+  return Crossing{at, {p, q}};
 }
 
 // Where x + lambda (y - x) meets line ab (coplanar_edge_crossing: all four in one plane), kept in
@@ -148,9 +153,19 @@ std::string recover_in_place(Constrained3dContext& c) {
   constexpr std::uint32_t kNone = Tetrahedralization3::kNone;
   std::array<std::uint32_t, 3> on_face{kNone, kNone, kNone};
   std::array<std::uint32_t, 2> on_piece{kNone, kNone};
+  // A triangle's point placed where a mesh edge crosses it splits that edge, for the same reason:
+  // inserted into the tetrahedron holding it, the rounded point kept the edge beside it, crossing
+  // the triangle's new pieces there (Chazelle's polyhedron, n = 5: a triangle still missing
+  // after 16 points). Never a protected edge (a constraint's piece).
+  std::map<std::array<double, 3>, std::array<std::uint32_t, 2>> crossed_edge;  // by the rounded point
   inserter.set_placement([&](const Vec3& p, std::uint32_t near) {
     if (on_face[0] != kNone)
       if (const std::uint32_t id = recovery.split_crossed_face(on_piece[0], on_piece[1], on_face, p); id != kNone) return id;
+    if (const auto it = crossed_edge.find({p.x, p.y, p.z}); it != crossed_edge.end()) {
+      const auto [a, b] = it->second;
+      if (!recovery.is_protected_edge(a, b))
+        if (const std::uint32_t id = recovery.split_edge_at(a, b, p); id != kNone) return id;
+    }
     return recovery.insert_point(p, near);
   });
   constexpr int kEdgePasses = 3;  // passes over the failed pieces before any is split
@@ -277,7 +292,9 @@ std::string recover_in_place(Constrained3dContext& c) {
         const double tt = round_to_double((a[1] + b[1] + d[1]) / Rational(3));
         FacetPoint point{.facet = f, .s = s, .t = tt, .fallback_s = s, .fallback_t = tt, .piece = {t[0], t[1]}};
         if (const auto cross = crossing_in_triangle(c, recovery, f, st, t)) {
-          point.s = (*cross)[0], point.t = (*cross)[1];
+          point.s = cross->at[0], point.t = cross->at[1];
+          const Vec3 x = round_point(exact_facet_point(c.mesh.points(), c.facets[f].corners, point.s, point.t));
+          crossed_edge[{x.x, x.y, x.z}] = cross->edge;
         } else if (const auto along = crossing_in_plane(c, recovery, st, t)) {
           point.s = (*along)[0], point.t = (*along)[1];
         }
@@ -300,7 +317,9 @@ std::string recover_in_place(Constrained3dContext& c) {
     }
     if (edges_missing) return "an edge piece made by a triangle's point is missing";
     if (points.empty()) break;
-    if (inserter.insert({}, points) == 0) return "triangle points repeat points already there";
+    const std::size_t added = inserter.insert({}, points);
+    crossed_edge.clear();
+    if (added == 0) return "triangle points repeat points already there";
     inserted = true;
   }
   recovery.finish();

@@ -102,6 +102,7 @@ class FlipRecovery {
   // Takes back a protection that protect_edge or protect_face added (one of the constructor's
   // lists stays protected): a triangulation of a facet that is being made again.
   void unprotect_edge(std::uint32_t u, std::uint32_t v);
+  bool is_protected_edge(std::uint32_t u, std::uint32_t v) const;
   void unprotect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
 
   // Lawson's flips with constraints (flip_recovery_lawson.cpp): every face between two finite
@@ -145,7 +146,6 @@ class FlipRecovery {
   // nav3::search_ball from vertex_tet_[u] (which must be set), with this recovery's marks.
   template <class Visit>
   std::uint32_t search_ball_of(std::uint32_t u, std::vector<std::uint32_t>& list, Visit&& visit);
-  bool is_protected_edge(std::uint32_t u, std::uint32_t v) const;
   // A tetrahedron insert_point or split_edge_at makes is valid: positive, or a ghost whose hull
   // facet is a proper triangle (a point on the hull's surface leaves the hull as it was).
   bool proper(const FlipMesh::Tuple& t) const;
