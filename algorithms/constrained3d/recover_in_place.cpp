@@ -174,8 +174,14 @@ std::string recover_in_place(Constrained3dContext& c) {
   // others succeed); the Steiner limit (in the inserter) bounds the rounds.
   std::vector<EdgeSplit> splits;
   const std::vector<FacetPoint> none;
+  // Past as many Steiner points as the input has edges and triangles, the rounds of recover.cpp
+  // take over (the bound at which they call on method conforming): at Chazelle n = 8 the edge
+  // phase went on to 2,004 points, the triangles' then failed, and that attempt doubled the time.
+  const auto too_many = [&] { return c.steiner.size() > c.edges.size() + c.facets.size(); };
+  const std::string too_many_why = "more Steiner points than the input has edges and triangles";
   for (;;) {
     ++c.rounds;
+    if (too_many()) return too_many_why;
     splits.clear();
     for (const MissingPiece& m : edge_pieces_flips_cannot_make(c, recovery, kEdgePasses, &edge_found))
       splits.push_back({m.edge, split_at_block(c, m.edge, m.index, m.block)});  // where its walk stopped
@@ -235,6 +241,7 @@ std::string recover_in_place(Constrained3dContext& c) {
   bool inserted = false;  // a triangle's point went in
   for (;;) {
     ++c.rounds;
+    if (too_many()) return too_many_why;
     points.clear();
     bool edges_missing = false;
     for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
