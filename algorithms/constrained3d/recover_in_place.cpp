@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,10 +52,14 @@ double split_at_block(const Constrained3dContext& c, std::uint32_t e, std::size_
 }
 
 // Where an edge of the mesh crosses sub-triangle t of facet f, in f's (s, t), computed in doubles
-// (a placement: the point made is the exact facet point at these parameters); nothing if no edge
-// crosses t or the point found is not strictly inside t.
-std::optional<std::array<double, 2>> crossing_in_triangle(const Constrained3dContext& c, FlipRecovery& recovery,
-                                                          std::uint32_t f, const FacetParameters& st, const Tri& t) {
+// (a placement: the point made is the exact facet point at these parameters), with that edge;
+// nothing if no edge crosses t or the point found is not strictly inside t.
+struct Crossing {
+  std::array<double, 2> at;
+  std::array<std::uint32_t, 2> edge;
+};
+std::optional<Crossing> crossing_in_triangle(const Constrained3dContext& c, FlipRecovery& recovery, std::uint32_t f,
+                                             const FacetParameters& st, const Tri& t) {
   const auto [p, q] = recovery.crossing_edge(t[0], t[1], t[2]);
   if (p == Tetrahedralization3::kNone) return std::nullopt;
   const auto P = c.mesh.points();
@@ -76,7 +81,7 @@ std::optional<std::array<double, 2>> crossing_in_triangle(const Constrained3dCon
     const auto &u = st.at(t[r]), &v = st.at(t[(r + 1) % 3]);
     if (((v[0] - u[0]) * (T - u[1]) - (v[1] - u[1]) * (S - u[0])).sign() != Sign::Positive) return std::nullopt;
   }
-  return at;
+  return Crossing{at, {p, q}};
 }
 
 // Where x + lambda (y - x) meets line ab (coplanar_edge_crossing: all four in one plane), kept in
@@ -143,15 +148,40 @@ std::string recover_in_place(Constrained3dContext& c) {
   recovery.allow_link_removals(true);
   recovery.record_changes(&c.changed);
   SteinerInserter inserter(c);
-  inserter.set_placement([&](const Vec3& p, std::uint32_t near) { return recovery.insert_point(p, near); });
+  // An edge split placed where its walk stopped goes in by splitting that face where it can
+  // (split_crossed_face); any other point into the tetrahedron, face or edge that holds it.
+  constexpr std::uint32_t kNone = Tetrahedralization3::kNone;
+  std::array<std::uint32_t, 3> on_face{kNone, kNone, kNone};
+  std::array<std::uint32_t, 2> on_piece{kNone, kNone};
+  // A triangle's point placed where a mesh edge crosses it splits that edge, for the same reason:
+  // inserted into the tetrahedron holding it, the rounded point kept the edge beside it, crossing
+  // the triangle's new pieces there (Chazelle's polyhedron, n = 5: a triangle still missing
+  // after 16 points). Never a protected edge (a constraint's piece).
+  std::map<std::array<double, 3>, std::array<std::uint32_t, 2>> crossed_edge;  // by the rounded point
+  inserter.set_placement([&](const Vec3& p, std::uint32_t near) {
+    if (on_face[0] != kNone)
+      if (const std::uint32_t id = recovery.split_crossed_face(on_piece[0], on_piece[1], on_face, p); id != kNone) return id;
+    if (const auto it = crossed_edge.find({p.x, p.y, p.z}); it != crossed_edge.end()) {
+      const auto [a, b] = it->second;
+      if (!recovery.is_protected_edge(a, b))
+        if (const std::uint32_t id = recovery.split_edge_at(a, b, p); id != kNone) return id;
+    }
+    return recovery.insert_point(p, near);
+  });
   constexpr int kEdgePasses = 3;  // passes over the failed pieces before any is split
 
   // Edges. Each round splits the pieces that flips could not make (tried again while flips for
   // others succeed); the Steiner limit (in the inserter) bounds the rounds.
   std::vector<EdgeSplit> splits;
   const std::vector<FacetPoint> none;
+  // Past as many Steiner points as the input has edges and triangles, the rounds of recover.cpp
+  // take over (the bound at which they call on method conforming): at Chazelle n = 8 the edge
+  // phase went on to 2,004 points, the triangles' then failed, and that attempt doubled the time.
+  const auto too_many = [&] { return c.steiner.size() > c.edges.size() + c.facets.size(); };
+  const std::string too_many_why = "more Steiner points than the input has edges and triangles";
   for (;;) {
     ++c.rounds;
+    if (too_many()) return too_many_why;
     splits.clear();
     for (const MissingPiece& m : edge_pieces_flips_cannot_make(c, recovery, kEdgePasses, &edge_found))
       splits.push_back({m.edge, split_at_block(c, m.edge, m.index, m.block)});  // where its walk stopped
@@ -168,16 +198,22 @@ std::string recover_in_place(Constrained3dContext& c) {
       const auto& chain = c.edges[split.edge].chain;
       const auto piece = static_cast<std::size_t>(at - t.begin());
       if (recovery.has_edge(chain[piece - 1], chain[piece]) || recovery.recover_edge(chain[piece - 1], chain[piece])) continue;
+      // Where its walk stops now: the splits before may have removed the face where it stopped
+      // when the round began (a point there would go beside the faces that replaced it).
+      const std::array<std::uint32_t, 3> block = recovery.blocking_face();
+      const double at_block = split_at_block(c, split.edge, piece - 1, block);
       bool placed = false;
       for (int k = 0; k < 7 && !placed; ++k) {
         const double w = k == 0 ? 0.0 : std::ldexp(k % 2 ? 1.0 : -1.0, -(k + 3) / 2);  // 0, +-1/4, +-1/8, +-1/16
-        const double tk = split.t + w * (hi - lo);
+        const double tk = at_block + w * (hi - lo);
         if (!(lo < tk && tk < hi)) continue;
+        if (k == 0) on_face = block, on_piece = {chain[piece - 1], chain[piece]};
         try {
           added += inserter.insert({{split.edge, tk}}, none);
           placed = true;
         } catch (const InputError&) {
         }
+        on_face = {kNone, kNone, kNone};
       }
       if (!placed)
         return "a Steiner point of the edge between vertices " + std::to_string(c.edges[split.edge].a + 1) + " and " +
@@ -198,12 +234,14 @@ std::string recover_in_place(Constrained3dContext& c) {
   struct Made {
     std::vector<Tri> pieces;  // recovered and protected
     std::size_t vertex_count = 0;  // of the triangulation they belong to
+    std::size_t count = 0;         // that triangulation's pieces (facet_delaunay_pieces), kept for the end
   };
   std::vector<Made> made(c.facets.size());
   constexpr std::uint32_t kPointsPerTriangle = 16;
   bool inserted = false;  // a triangle's point went in
   for (;;) {
     ++c.rounds;
+    if (too_many()) return too_many_why;
     points.clear();
     bool edges_missing = false;
     for (std::uint32_t f = 0; f < c.facets.size(); ++f) {
@@ -245,7 +283,7 @@ std::string recover_in_place(Constrained3dContext& c) {
           if (vertex_count > 3) {
             for (int r = 0; r < 3; ++r) recovery.protect_edge(t[r], t[(r + 1) % 3]);
             recovery.protect_face(t[0], t[1], t[2]);
-            made[f].pieces.push_back(t), made[f].vertex_count = vertex_count;
+            made[f].pieces.push_back(t), made[f].vertex_count = vertex_count, made[f].count = tris.size();
           }
           continue;
         }
@@ -261,7 +299,9 @@ std::string recover_in_place(Constrained3dContext& c) {
         const double tt = round_to_double((a[1] + b[1] + d[1]) / Rational(3));
         FacetPoint point{.facet = f, .s = s, .t = tt, .fallback_s = s, .fallback_t = tt, .piece = {t[0], t[1]}};
         if (const auto cross = crossing_in_triangle(c, recovery, f, st, t)) {
-          point.s = (*cross)[0], point.t = (*cross)[1];
+          point.s = cross->at[0], point.t = cross->at[1];
+          const Vec3 x = round_point(exact_facet_point(c.mesh.points(), c.facets[f].corners, point.s, point.t));
+          crossed_edge[{x.x, x.y, x.z}] = cross->edge;
         } else if (const auto along = crossing_in_plane(c, recovery, st, t)) {
           point.s = (*along)[0], point.t = (*along)[1];
         }
@@ -284,7 +324,9 @@ std::string recover_in_place(Constrained3dContext& c) {
     }
     if (edges_missing) return "an edge piece made by a triangle's point is missing";
     if (points.empty()) break;
-    if (inserter.insert({}, points) == 0) return "triangle points repeat points already there";
+    const std::size_t added = inserter.insert({}, points);
+    crossed_edge.clear();
+    if (added == 0) return "triangle points repeat points already there";
     inserted = true;
   }
   recovery.finish();
@@ -312,7 +354,7 @@ std::string recover_in_place(Constrained3dContext& c) {
     std::sort(pieces.begin(), pieces.end());
     pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
     if (vertex_count > 3 && done[f] == vertex_count && made[f].vertex_count == vertex_count &&
-        pieces.size() == facet_delaunay_pieces(c, f).size() &&
+        pieces.size() == made[f].count &&
         std::all_of(pieces.begin(), pieces.end(), [&](const Tri& t) { return index.has_face(t[0], t[1], t[2]); })) {
       c.facets[f].pieces = pieces;
       c.facets[f].pieces_vertex_count = vertex_count;

@@ -464,6 +464,42 @@ std::uint32_t FlipRecovery::insert_point(const Vec3& p, std::uint32_t near) {
   return pid;
 }
 
+std::uint32_t FlipRecovery::split_crossed_face(std::uint32_t u, std::uint32_t v, const std::array<std::uint32_t, 3>& abc,
+                                               const Vec3& p) {
+  const auto [a, b, c] = abc;
+  for (const std::uint32_t x : abc)
+    if (x == kNone || x == kInf) return kNone;
+  // uv through the open triangle: the three sides seen along uv turn the same way.
+  const Sign s = orient3d(P(u), P(v), P(a), P(b));
+  if (s == Sign::Zero || orient3d(P(u), P(v), P(b), P(c)) != s || orient3d(P(u), P(v), P(c), P(a)) != s) return kNone;
+  if (is_protected_face(a, b, c)) return kNone;
+  const std::uint32_t t = tetrahedron_with(a, b, c);
+  if (t == kNone) return kNone;
+  const auto rec = records_[t];
+  std::uint32_t i = 0;
+  while (rec.vertex[i] == a || rec.vertex[i] == b || rec.vertex[i] == c) ++i;
+  const std::uint32_t t2 = rec.neighbour[i] >> 2;
+  if (records_[t2].vertex[0] == kInf) return kNone;
+  // Each tetrahedron's facets other than abc (those opposite a, b and c), coned to p.
+  const auto pid = static_cast<std::uint32_t>(mesh_.point_count());
+  std::vector<Tuple> fresh;
+  for (const std::uint32_t s2 : {t, t2}) {
+    const auto& x = records_[s2].vertex;
+    for (std::uint32_t j = 0; j < 4; ++j)
+      if (x[j] == a || x[j] == b || x[j] == c) fresh.push_back({x[kFacet[j][0]], x[kFacet[j][1]], x[kFacet[j][2]], pid});
+  }
+  mesh_.mutable_points().push_back(p);
+  if (!std::all_of(fresh.begin(), fresh.end(), [&](const Tuple& x) { return proper(x); })) {
+    mesh_.mutable_points().pop_back();
+    return kNone;
+  }
+  vertex_tet_.push_back(kNone);
+  const std::uint32_t old[2] = {t, t2};
+  flips_mesh_.replace(old, fresh, ids_);
+  replaced(ids_);
+  return pid;
+}
+
 bool FlipRecovery::proper(const Tuple& t) const {
   const std::uint32_t m = infinite_index(t);
   if (m == 4) return orient3d(P(t[0]), P(t[1]), P(t[2]), P(t[3])) == Sign::Positive;

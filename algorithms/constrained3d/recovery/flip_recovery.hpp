@@ -70,6 +70,17 @@ class FlipRecovery {
   // ball of vertex `near`. Returns its id, or kNone (nothing changed) where p is outside the hull,
   // on a ghost, equal to a vertex, or inside a protected face or edge.
   std::uint32_t insert_point(const Vec3& p, std::uint32_t near);
+  // Inserts p, placed where segment uv crosses face abc (where uv's walk stopped:
+  // blocking_face), by splitting the face's two finite tetrahedra 2 -> 6: the face is gone. Rounded,
+  // p lies a hair to one side of abc, and insert_point's 1 -> 4 split of the tetrahedron holding
+  // it would keep abc beside p as a flat tetrahedron, which uv's remaining piece crosses at p
+  // itself, past any flip: Chazelle's polyhedron (n = 8) split such a piece towards p until
+  // doubles ran out. Returns p's id, or kNone (nothing changed) where uv does not cross abc's
+  // open interior, abc is protected or on the hull, or a new tetrahedron would not be positive.
+  // (Not the same for a crossed edge: splitting it puts the points of many edges crossing one
+  // line on that line, and the triangles later needed between them are flat.)
+  std::uint32_t split_crossed_face(std::uint32_t u, std::uint32_t v, const std::array<std::uint32_t, 3>& abc,
+                                   const Vec3& p);
   // Splits edge ab at p (appended to the points), a protected one included: every tetrahedron of
   // its shell in two (method cdt splits a constraint piece of its constrained tetrahedralization
   // so). Returns p's id, or kNone (nothing changed) where ab is no edge or a tetrahedron made
@@ -91,6 +102,7 @@ class FlipRecovery {
   // Takes back a protection that protect_edge or protect_face added (one of the constructor's
   // lists stays protected): a triangulation of a facet that is being made again.
   void unprotect_edge(std::uint32_t u, std::uint32_t v);
+  bool is_protected_edge(std::uint32_t u, std::uint32_t v) const;
   void unprotect_face(std::uint32_t a, std::uint32_t b, std::uint32_t c);
 
   // Lawson's flips with constraints (flip_recovery_lawson.cpp): every face between two finite
@@ -134,7 +146,6 @@ class FlipRecovery {
   // nav3::search_ball from vertex_tet_[u] (which must be set), with this recovery's marks.
   template <class Visit>
   std::uint32_t search_ball_of(std::uint32_t u, std::vector<std::uint32_t>& list, Visit&& visit);
-  bool is_protected_edge(std::uint32_t u, std::uint32_t v) const;
   // A tetrahedron insert_point or split_edge_at makes is valid: positive, or a ghost whose hull
   // facet is a proper triangle (a point on the hull's surface leaves the hull as it was).
   bool proper(const FlipMesh::Tuple& t) const;
