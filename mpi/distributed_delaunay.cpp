@@ -26,6 +26,9 @@ DistributedElements<kDim + 1> run(const Comm& comm, std::span<const Vec> points)
   DistributedElements<kDim + 1> result;
   std::uint64_t bytes = 0;
   const std::uint64_t max_rounds = points.size() + 2;
+  const auto seeded = tile.seed();
+  bytes += bytes_of(seeded);
+  tile.receive(comm.exchange(seeded));
   for (bool more = true; more;) {
     if (++result.rounds > max_rounds)
       throw InternalError("dtlab-mpi delaunay: no convergence after " + std::to_string(max_rounds) + " rounds");

@@ -29,6 +29,11 @@ DistributedDelaunayResult<kDim> run(std::span<const Vec> points, std::uint32_t t
   DistributedDelaunayResult<kDim> result;
   result.points = points.size();
   const std::uint64_t max_rounds = points.size() + 2;
+  {
+    std::vector<std::vector<std::vector<typename TileDelaunay<kDim>::Ghost>>> seeded(tiles);
+    for (std::uint32_t t = 0; t < tiles; ++t) seeded[t] = tile[t].seed();
+    for (std::uint32_t t = 0; t < tiles; ++t) tile[t].receive(column(seeded, t));
+  }
   for (bool more = true; more;) {
     if (++result.rounds > max_rounds)
       throw InternalError("distributed Delaunay: no convergence after " + std::to_string(max_rounds) + " rounds");

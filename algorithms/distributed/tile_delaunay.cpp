@@ -275,6 +275,45 @@ TileDelaunay<kDim>::TileDelaunay(std::uint32_t tile, std::vector<TileBox<Vec>> b
   answered_empty_.resize(boxes_.size());
 }
 
+// The own points' hull vertices (all points on the hull's boundary, collinear and coplanar ones
+// included) are what the hull questions of other tiles are answered from: every own point when
+// they are too few or flat to have a hull.
+template <int kDim>
+void TileDelaunay<kDim>::find_own_hull() {
+  const Local<kDim> own = triangulate(std::span<const Vec>(own_points_));
+  std::vector<std::uint8_t> on_hull(own_ids_.size(), own.elements.empty() ? 1 : 0);
+  for (const auto& h : own.hull)
+    for (int i = 0; i < kDim; ++i) on_hull[h[i]] = 1;
+  for (std::uint32_t i = 0; i < own_ids_.size(); ++i)
+    if (on_hull[i]) own_hull_.push_back(i);
+  own_hull_known_ = true;
+}
+
+template <int kDim>
+auto TileDelaunay<kDim>::seed() -> std::vector<std::vector<Ghost>> {
+  std::vector<std::vector<Ghost>> out(boxes_.size());
+  const TileBox<Vec>& own = boxes_[tile_];
+  if (own.empty || own_ids_.size() < 2) return out;
+  // The mean spacing: the side of the box's share per point (the longest side over the count
+  // for a flat box).
+  const Vec side = own.hi - own.lo;
+  double volume = side.x * side.y, longest = std::max(side.x, side.y);
+  if constexpr (kDim == 3) volume *= side.z, longest = std::max(longest, side.z);
+  const double n = static_cast<double>(own_ids_.size());
+  const double spacing = volume > 0 ? std::pow(volume / n, 1.0 / kDim) : longest / n;
+  const double reach2 = (kSeedLayers * spacing) * (kSeedLayers * spacing);
+  for (std::uint32_t s = 0; s < boxes_.size(); ++s) {
+    if (s == tile_ || boxes_[s].empty) continue;
+    for (std::uint32_t i = 0; i < own_points_.size(); ++i) {
+      if (box_distance2(boxes_[s], own_points_[i]) > reach2) continue;
+      sent_[s][i] = 1;
+      out[s].push_back(Ghost{own_ids_[i], tile_, own_points_[i]});
+      ++counts_.ghosts_sent;
+    }
+  }
+  return out;
+}
+
 template <int kDim>
 auto TileDelaunay<kDim>::triangulate_and_ask() -> std::vector<std::vector<Question>> {
   const auto start = std::chrono::steady_clock::now();
@@ -299,16 +338,8 @@ auto TileDelaunay<kDim>::triangulate_and_ask() -> std::vector<std::vector<Questi
   Local<kDim> local = triangulate(std::span<const Vec>(points));
   degenerate_ = local.degenerate;
   local_elements_ = std::move(local.elements);
-  if (counts_.rounds == 1) {
-    // The first triangulation is of the own points alone: its hull vertices (all points on the
-    // hull's boundary, collinear and coplanar ones included) are what the hull questions of
-    // other tiles are answered from. Every own point, when they are too few or flat to have a hull.
-    std::vector<std::uint8_t> on_hull(own_ids_.size(), local_elements_.empty() ? 1 : 0);
-    for (const auto& h : local.hull)
-      for (int i = 0; i < kDim; ++i) on_hull[order[h[i]].second] = 1;
-    for (std::uint32_t i = 0; i < own_ids_.size(); ++i)
-      if (on_hull[i]) own_hull_.push_back(i);
-  }
+  if (!own_hull_known_) find_own_hull();
+
   counts_.seconds_triangulating += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::vector<std::vector<Question>> ask(boxes_.size());

@@ -80,6 +80,12 @@ class TileDelaunay {
   TileDelaunay(std::uint32_t tile, std::vector<TileBox<Vec>> boxes, std::vector<std::uint32_t> own_ids,
                std::vector<Vec> own_points);
 
+  // Before the first round (optional, a head start: the rounds are correct without it): to each
+  // other tile, the own points within kSeedLayers mean spacings of its box (the ghost zone of
+  // Peterka et al.), so that the first triangulation holds the layer the neighbours' elements
+  // need and the first questions ask with small balls.
+  static constexpr double kSeedLayers = 2.0;
+  std::vector<std::vector<Ghost>> seed();
   std::vector<std::vector<Question>> triangulate_and_ask();
   std::vector<std::vector<Ghost>> answer(const std::vector<std::vector<Question>>& questions);
   // Whether any of the ghosts was new.
@@ -101,6 +107,8 @@ class TileDelaunay {
   std::vector<Vec> own_points_;
   std::vector<Ghost> ghosts_;                    // received, any order
   std::vector<std::uint32_t> own_hull_;          // own points on the hull of the own points
+  bool own_hull_known_ = false;
+  void find_own_hull();
   std::vector<std::vector<std::uint8_t>> sent_;  // [tile][own index]: sent to that tile
   // [tile]: the questions (their bytes) that tile asked and got nothing for. The answer stays
   // nothing (own points are fixed, what was sent only grows): a question asked again in a later

@@ -357,7 +357,9 @@ TEST(Constrained3d, Chazelle) {
     // 154 at n = 4 since an edge's point splits the face its walk stopped at, and a triangle's
     // point the edge crossing it (FlipRecovery::split_crossed_face, split_edge_at): inserted into
     // the tetrahedron holding it, the rounded point kept that face or edge beside it.
-    if (n == 4) EXPECT_LE(recovered.result.steiner_points.total(), 10u * n * n);
+    if (n == 4) {
+      EXPECT_LE(recovered.result.steiner_points.total(), 10u * n * n);
+    }
   }
 }
 
