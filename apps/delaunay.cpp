@@ -3,6 +3,7 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "algorithms/delaunay2d/delaunay2d.hpp"
@@ -41,7 +42,7 @@ struct DelaunayArgs {
   std::uint64_t seed = 1;
   unsigned threads = 1;
   std::string remove_file;        // --remove: apps/delaunay_remove.hpp
-  double remove_fraction = -1.0;  // --remove-random
+  std::optional<double> remove_fraction;  // --remove-random
 };
 
 std::string list_items(const std::vector<std::uint32_t>& items, const std::vector<std::uint32_t>& of,
@@ -63,7 +64,7 @@ int run_delaunay(const DelaunayArgs& args) {
   if (args.input.empty() == (args.random == 0)) {
     throw InputError("give either an INPUT file or --random N");
   }
-  if (!args.remove_file.empty() || args.remove_fraction >= 0.0) {
+  if (!args.remove_file.empty() || args.remove_fraction) {
     return run_delaunay_remove({args.input, args.output, args.algorithm, args.stats, args.verify, args.random,
                                 args.distribution, args.seed, args.dim, args.remove_file, args.remove_fraction});
   }

@@ -67,12 +67,12 @@ std::vector<std::uint32_t> random_removal(std::size_t point_count, double fracti
 }
 
 std::vector<std::uint32_t> removal_of(const DelaunayRemoveCliArgs& args, std::size_t point_count) {
-  if (!args.remove_file.empty() && args.remove_fraction >= 0.0)
+  if (!args.remove_file.empty() && args.remove_fraction)
     throw InputError("give either --remove FILE or --remove-random F, not both");
   if (!args.remove_file.empty()) return read_removal_list(args.remove_file, point_count);
-  if (!(args.remove_fraction > 0.0 && args.remove_fraction <= 1.0))
+  if (!(*args.remove_fraction > 0.0 && *args.remove_fraction <= 1.0))
     throw InputError("--remove-random: give a fraction F with 0 < F <= 1");
-  return random_removal(point_count, args.remove_fraction, args.seed);
+  return random_removal(point_count, *args.remove_fraction, args.seed);
 }
 
 // The survivors renumbered in input order, and the elements in that numbering.

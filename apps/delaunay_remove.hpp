@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace dtlab::cli {
@@ -20,7 +21,7 @@ struct DelaunayRemoveCliArgs {
   std::uint64_t seed = 1;  // the generated points and the random choice of removed points
   int dim = 2;             // of generated points; a file's own dimension wins
   std::string remove_file;       // whitespace-separated point numbers, from 1
-  double remove_fraction = -1.0; // or this fraction of the points, drawn with `seed`
+  std::optional<double> remove_fraction;  // or this fraction of the points, drawn with `seed`
 };
 
 // Returns the exit status: 0 success, 3 --verify failed. Throws InputError for bad arguments or

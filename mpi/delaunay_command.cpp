@@ -7,6 +7,8 @@
 #include "algorithms/distributed/distributed_in_process.hpp"
 #include "kernel/error.hpp"
 #include "mesh/io/any_format.hpp"
+#include "mesh/tetrahedralization3.hpp"
+#include "mesh/triangulation2.hpp"
 #include "mpi/distributed_delaunay.hpp"
 #include "verify/generators/points2d.hpp"
 #include "verify/generators/points3d.hpp"
@@ -68,6 +70,11 @@ Prepared prepare(const DelaunayArgs& args) {
   if (args.input.empty() == (args.random == 0)) throw InputError("give either an INPUT file or --random N");
   Prepared p;
   p.dim = args.input.empty() ? args.dim : input_dimension(args.input);
+  // The sequential structures' limits (every rank holds the points, rank 0 the elements).
+  const std::uint64_t limit = p.dim == 3 ? Tetrahedralization3::kMaxPoints : Triangulation2::kMaxPoints;
+  if (args.random > limit)
+    throw InputError("--random: " + std::to_string(args.random) + " points exceed the " + std::to_string(p.dim) +
+                     "D limit of " + std::to_string(limit));
   p.source = args.input.empty() ? "random " + args.distribution + " n=" + std::to_string(args.random) +
                                       " seed=" + std::to_string(args.seed)
                                 : args.input;

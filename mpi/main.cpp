@@ -36,6 +36,12 @@ int main(int argc, char** argv) {
   } catch (const dtlab::Error& e) {
     if (root) std::cerr << "dtlab-mpi: " << e.what() << "\n";
     return 1;
+  } catch (const std::bad_alloc&) {
+    // Maybe on this rank only: the others may already wait on a message, so the job ends here.
+    std::cerr << "dtlab-mpi: rank " << comm.rank()
+              << ": out of memory reading or generating the points (every rank holds them all)\n";
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
   }
   try {
     return dtlab::mpi::run_delaunay(comm, delaunay, prepared);
